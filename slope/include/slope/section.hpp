@@ -1,0 +1,60 @@
+#pragma once
+// Slope cross-section for limit-equilibrium analysis (plane strain, per metre of slope width).
+// All quantities are SI: m, N/m^3, Pa, rad. Scene files use kPa and kN/m^3; coupling converts once.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace slope {
+
+struct Point {
+  double x = 0.0;  // m
+  double y = 0.0;  // m
+};
+
+struct Material {
+  std::string name;
+  double unit_weight = 0.0;     // N/m^3 (total unit weight)
+  double cohesion = 0.0;        // Pa (effective cohesion c')
+  double friction_angle = 0.0;  // rad (effective friction angle phi')
+};
+
+// A profile line is the top of its material; the material extends down to the next line below it
+// (or to Section::bottom_y). Lines run left to right with x strictly increasing and all span the same x range.
+struct ProfileLine {
+  std::size_t material = 0;   // index into Section::materials
+  std::vector<Point> points;  // m
+};
+
+// Pore pressure at a point below the piezometric line: u = unit_weight * (height of the line above the point).
+struct Water {
+  std::vector<Point> piezometric_line;  // m, x strictly increasing, spans the section
+  double unit_weight = 9810.0;          // N/m^3
+};
+
+// Uniform vertical strip load on the ground surface between from_x and to_x.
+struct Surcharge {
+  double from_x = 0.0;    // m
+  double to_x = 0.0;      // m
+  double pressure = 0.0;  // Pa
+};
+
+struct Section {
+  double bottom_y = 0.0;                   // m, rigid base: no slip surface may pass below it
+  std::vector<ProfileLine> profile_lines;  // [0] is the ground surface
+  std::vector<Material> materials;
+  std::optional<Water> water;
+  std::vector<Surcharge> surcharges;
+  double seismic_coefficient = 0.0;  // horizontal pseudo-static coefficient kh (force kh*W out of the slope)
+
+  double x_min() const;  // m, left end of the section
+  double x_max() const;  // m, right end of the section
+  // Height of the ground surface (profile line 0) at x, m. x is clamped to the section.
+  double ground_y(double x) const;
+};
+
+// Height of a polyline (x strictly increasing) at x, linear between vertices, constant beyond the ends.
+double polyline_y(const std::vector<Point>& line, double x);
+
+}  // namespace slope

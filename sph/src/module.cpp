@@ -1,0 +1,4 @@
+// Anchor translation unit of the particle-engine library.
+namespace sph {
+const char* module_name() { return "sph"; }
+}  // namespace sph
