@@ -1,0 +1,49 @@
+#pragma once
+// Failure surface read out of a particle state: the shear band of accumulated plastic strain, bin by bin
+// along x, and a least-squares circle through it. SI units (m).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "slope/slices.hpp"
+
+namespace coupling {
+
+// What surface extraction needs from a particle state (soil particles only).
+struct ParticleSnapshot {
+  std::vector<double> x, y;            // m, current positions
+  std::vector<double> x0, y0;          // m, initial positions
+  std::vector<double> plastic_strain;  // accumulated equivalent plastic strain (-)
+  double spacing = 0.0;                // m, initial particle spacing
+};
+
+struct BandOptions {
+  double plastic_strain_threshold = 0.1;  // particles at or above it belong to the band
+  double bin_width = 0.0;                 // m; 0 means 2 x spacing
+  int min_particles_per_bin = 2;          // bins with fewer band particles are skipped
+  bool initial_configuration = true;      // read the band on the initial positions (where LEM surfaces live)
+};
+
+struct FailureSurface {
+  std::vector<slope::Point> points;  // band centre per bin, left to right, m
+  double plastic_strain_threshold = 0.0;
+  double bin_width = 0.0;            // m
+  std::size_t band_particles = 0;    // particles in the band
+};
+
+// Band centre per x-bin: in each bin the deepest connected run of particles at or above the threshold
+// (scanning up from the bottom; a gap larger than 1.5 spacings ends a run) and its plastic-strain-weighted
+// mean height. Bins without a band are skipped.
+FailureSurface plastic_band_surface(const ParticleSnapshot& particles, const BandOptions& options);
+
+struct CircleFit {
+  slope::Circle circle;
+  double rms_residual = 0.0;  // m, root mean square of (distance to centre - radius)
+  double max_residual = 0.0;  // m
+};
+
+// Geometric least-squares circle (algebraic Kasa fit refined by Gauss-Newton on the orthogonal distances).
+// Empty for fewer than three points or (nearly) collinear points.
+std::optional<CircleFit> fit_circle(const std::vector<slope::Point>& points);
+
+}  // namespace coupling

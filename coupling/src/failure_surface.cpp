@@ -1,0 +1,156 @@
+#include "coupling/failure_surface.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace coupling {
+
+FailureSurface plastic_band_surface(const ParticleSnapshot& particles, const BandOptions& options) {
+  FailureSurface surface;
+  surface.plastic_strain_threshold = options.plastic_strain_threshold;
+  surface.bin_width = options.bin_width > 0.0 ? options.bin_width : 2.0 * particles.spacing;
+  const std::vector<double>& xs = options.initial_configuration ? particles.x0 : particles.x;
+  const std::vector<double>& ys = options.initial_configuration ? particles.y0 : particles.y;
+  const std::size_t n = xs.size();
+  if (n == 0 || surface.bin_width <= 0.0) return surface;
+
+  const auto [x_lo, x_hi] = std::minmax_element(xs.begin(), xs.end());
+  const double x_min = *x_lo;
+  const int bins = static_cast<int>(std::floor((*x_hi - x_min) / surface.bin_width)) + 1;
+
+  // Particles of each bin, sorted by height.
+  std::vector<std::vector<std::size_t>> members(static_cast<std::size_t>(bins));
+  for (std::size_t i = 0; i < n; ++i) {
+    const int b = std::clamp(static_cast<int>((xs[i] - x_min) / surface.bin_width), 0, bins - 1);
+    members[static_cast<std::size_t>(b)].push_back(i);
+  }
+  const double gap = 1.5 * particles.spacing;
+  std::vector<std::size_t> band;  // particles of the deepest runs that made a point
+  for (int b = 0; b < bins; ++b) {
+    auto& column = members[static_cast<std::size_t>(b)];
+    std::sort(column.begin(), column.end(), [&](std::size_t a, std::size_t c) { return ys[a] < ys[c]; });
+    // Deepest connected run of band particles.
+    double weight = 0.0, weighted_x = 0.0, weighted_y = 0.0, last_band_y = 0.0;
+    int count = 0;
+    bool in_run = false;
+    const std::size_t band_start = band.size();
+    for (std::size_t i : column) {
+      const bool in_band = particles.plastic_strain[i] >= options.plastic_strain_threshold;
+      if (in_run && ys[i] - last_band_y > gap) break;  // the run ended
+      if (!in_band) continue;
+      in_run = true;
+      last_band_y = ys[i];
+      const double w = particles.plastic_strain[i];
+      weight += w;
+      weighted_x += w * xs[i];
+      weighted_y += w * ys[i];
+      band.push_back(i);
+      ++count;
+    }
+    if (count < options.min_particles_per_bin || weight <= 0.0) {
+      band.resize(band_start);
+      continue;
+    }
+    surface.points.push_back({weighted_x / weight, weighted_y / weight});
+  }
+  surface.band_particles = band.size();
+
+  // A column centre is off the band's centre line where the band is steep (its vertical extent is not
+  // symmetric about the line). Move every point along the local normal to the plastic-strain-weighted mean
+  // offset of the band particles beside it (within half a bin along the tangent); twice, as the normals move.
+  const std::size_t m = surface.points.size();
+  for (int pass = 0; pass < 2 && m >= 3; ++pass) {
+    std::vector<slope::Point> moved = surface.points;
+    for (std::size_t k = 0; k < m; ++k) {
+      const auto& before = surface.points[k == 0 ? 0 : k - 1];
+      const auto& after = surface.points[k + 1 == m ? m - 1 : k + 1];
+      double tx = after.x - before.x, ty = after.y - before.y;
+      const double length = std::hypot(tx, ty);
+      if (length <= 0.0) continue;
+      tx /= length;
+      ty /= length;
+      const double nx = -ty, ny = tx;
+      double weight = 0.0, offset = 0.0;
+      for (std::size_t i : band) {
+        const double dx = xs[i] - surface.points[k].x, dy = ys[i] - surface.points[k].y;
+        if (std::abs(dx * tx + dy * ty) > 0.5 * surface.bin_width) continue;
+        const double normal = dx * nx + dy * ny;
+        if (std::abs(normal) > 4.0 * surface.bin_width) continue;  // another branch of the band
+        weight += particles.plastic_strain[i];
+        offset += particles.plastic_strain[i] * normal;
+      }
+      if (weight > 0.0) moved[k] = {surface.points[k].x + nx * offset / weight, surface.points[k].y + ny * offset / weight};
+    }
+    surface.points = std::move(moved);
+  }
+  return surface;
+}
+
+std::optional<CircleFit> fit_circle(const std::vector<slope::Point>& points) {
+  const std::size_t n = points.size();
+  if (n < 3) return std::nullopt;
+  // Work relative to the centroid for conditioning.
+  double mx = 0.0, my = 0.0;
+  for (const auto& p : points) {
+    mx += p.x;
+    my += p.y;
+  }
+  mx /= static_cast<double>(n);
+  my /= static_cast<double>(n);
+
+  // Algebraic (Kasa) fit: x^2 + y^2 + D x + E y + F = 0.
+  Eigen::MatrixXd a(static_cast<Eigen::Index>(n), 3);
+  Eigen::VectorXd rhs(static_cast<Eigen::Index>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = points[i].x - mx, v = points[i].y - my;
+    const auto r = static_cast<Eigen::Index>(i);
+    a(r, 0) = u;
+    a(r, 1) = v;
+    a(r, 2) = 1.0;
+    rhs(r) = -(u * u + v * v);
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const auto& sv = svd.singularValues();
+  if (sv(2) <= 1e-12 * sv(0)) return std::nullopt;
+  const Eigen::Vector3d def = svd.solve(rhs);
+  double cu = -0.5 * def(0), cv = -0.5 * def(1);
+  double radius_sq = cu * cu + cv * cv - def(2);
+  if (!(radius_sq > 0.0)) return std::nullopt;
+  double radius = std::sqrt(radius_sq);
+
+  // Gauss-Newton on the orthogonal residuals d_i = |p_i - c| - R.
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    Eigen::MatrixXd jacobian(static_cast<Eigen::Index>(n), 3);
+    Eigen::VectorXd residual(static_cast<Eigen::Index>(n));
+    for (std::size_t i = 0; i < n; ++i) {
+      const double du = points[i].x - mx - cu, dv = points[i].y - my - cv;
+      const double dist = std::max(std::hypot(du, dv), 1e-300);
+      const auto r = static_cast<Eigen::Index>(i);
+      residual(r) = dist - radius;
+      jacobian(r, 0) = -du / dist;
+      jacobian(r, 1) = -dv / dist;
+      jacobian(r, 2) = -1.0;
+    }
+    const Eigen::Vector3d step = jacobian.colPivHouseholderQr().solve(-residual);
+    cu += step(0);
+    cv += step(1);
+    radius += step(2);
+    if (step.norm() <= 1e-12 * std::max(1.0, radius)) break;
+  }
+  if (!std::isfinite(radius) || radius <= 0.0) return std::nullopt;
+
+  CircleFit fit;
+  fit.circle = {cu + mx, cv + my, radius};
+  double sum_sq = 0.0;
+  for (const auto& p : points) {
+    const double d = std::abs(std::hypot(p.x - fit.circle.xc, p.y - fit.circle.yc) - radius);
+    sum_sq += d * d;
+    fit.max_residual = std::max(fit.max_residual, d);
+  }
+  fit.rms_residual = std::sqrt(sum_sq / static_cast<double>(n));
+  return fit;
+}
+
+}  // namespace coupling
