@@ -7,6 +7,7 @@
 #include "coupling/surface_comparison.hpp"
 
 using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
 
 namespace {
 
@@ -98,4 +99,25 @@ TEST_CASE("circle arcs: concentric arcs are the radius difference apart", "[comp
   const auto d = coupling::compare_surfaces(a, b);
   CHECK_THAT(d.mean_normal_distance, WithinAbs(1.0, 2e-3));
   CHECK_THAT(d.max_normal_distance, WithinAbs(1.0, 2e-3));
+}
+
+#include "coupling/sliding_mass.hpp"
+
+TEST_CASE("sliding-mass polygons and their overlap: squares and a half-disc", "[comparison]") {
+  // Two unit squares offset by half a side: intersection 0.5, union 1.5, IoU 1/3 (closed form).
+  const coupling::Polyline a{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, b{{0.5, 0}, {1.5, 0}, {1.5, 1}, {0.5, 1}};
+  const auto o = coupling::mass_overlap(a, b);
+  CHECK_THAT(o.intersection_area, WithinAbs(0.5, 1e-12));
+  CHECK_THAT(o.union_area, WithinAbs(1.5, 1e-12));
+  CHECK_THAT(o.intersection_over_union, WithinAbs(1.0 / 3.0, 1e-12));
+  // Disjoint polygons: IoU 0. The same polygon twice (opposite orientation): IoU 1.
+  const coupling::Polyline far{{5, 0}, {6, 0}, {6, 1}};
+  CHECK_THAT(coupling::mass_overlap(a, far).intersection_over_union, WithinAbs(0.0, 1e-12));
+  const coupling::Polyline reversed(a.rbegin(), a.rend());
+  CHECK_THAT(coupling::mass_overlap(a, reversed).intersection_over_union, WithinAbs(1.0, 1e-12));
+
+  // Below flat ground y = 0, the lower half-disc of radius 5 has area pi 25 / 2 (to the polygonisation error).
+  const coupling::Polyline ground{{-10, 0}, {10, 0}};
+  const auto disc = coupling::sliding_mass_polygon(ground, coupling::circle_arc({0, 0, 5}, -5, 5, 2000));
+  CHECK_THAT(coupling::polygon_area(disc), WithinRel(M_PI * 12.5, 1e-4));
 }
