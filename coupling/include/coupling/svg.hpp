@@ -1,0 +1,53 @@
+#pragma once
+// A small SVG canvas in world coordinates (m, y up) with equal scales on both axes, for report figures.
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "slope/section.hpp"
+
+namespace coupling {
+
+struct Rgb {
+  int r = 0, g = 0, b = 0;
+};
+std::string to_hex(Rgb colour);
+// Perceptually ordered colour map (dark blue → green → yellow) for t in [0, 1].
+Rgb colour_map(double t);
+
+class SvgCanvas {
+ public:
+  // World window [x_min, x_max] x [y_min, y_max] drawn `width_px` wide; margins around it for axes and legend.
+  SvgCanvas(double x_min, double x_max, double y_min, double y_max, double width_px = 900.0);
+
+  double px(double x) const;  // world x → pixel
+  double py(double y) const;  // world y → pixel (y up)
+  double scale() const { return scale_; }  // pixels per metre
+
+  void polyline(const std::vector<slope::Point>& points, const std::string& stroke, double width,
+                const std::string& dash = "", const std::string& fill = "none");
+  void polygon(const std::vector<slope::Point>& points, const std::string& fill, double opacity = 1.0);
+  void dot(double x, double y, double radius_px, const std::string& fill);
+  void text(double x_px, double y_px, const std::string& content, double size = 13.0,
+            const std::string& anchor = "start", const std::string& colour = "#222");
+  void rect_px(double x, double y, double w, double h, const std::string& fill, const std::string& stroke = "none");
+  void line_px(double x0, double y0, double x1, double y1, const std::string& stroke, double width = 1.0);
+  // Axes with ticks and labels in metres along the bottom and left edges of the world window.
+  void axes(const std::string& x_label = "x (m)", const std::string& y_label = "y (m)");
+  // Vertical colour bar at the right margin, labelled with its quantity and unit.
+  void colour_bar(double value_min, double value_max, const std::string& label);
+  // Legend entries (colour, dash, label) stacked at the top-right inside the plot.
+  void legend(const std::vector<std::tuple<std::string, std::string, std::string>>& entries);
+  void title(const std::string& content);
+
+  std::string str() const;
+
+ private:
+  double x_min_, x_max_, y_min_, y_max_;
+  double scale_;
+  double left_ = 70.0, right_ = 140.0, top_ = 40.0, bottom_ = 55.0;
+  double plot_w_, plot_h_;
+  std::ostringstream body_;
+};
+
+}  // namespace coupling
