@@ -1,0 +1,287 @@
+// Scene files: reading, JSON syntax, the top level and the analyses block. The section is in scene_section.cpp.
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "coupling/json_reader.hpp"
+#include "coupling/scene.hpp"
+#include "scene_internal.hpp"
+
+namespace coupling {
+
+SceneError::SceneError(std::vector<std::string> messages)
+    : std::runtime_error(messages.empty() ? std::string("invalid scene") : messages.front()),
+      messages_(std::move(messages)) {}
+
+namespace {
+
+// Duplicate keys are legal JSON but nlohmann keeps only the last one, which would silently drop what the user
+// wrote first. The parser callback tracks the JSON path and reports them.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(Diagnostics& diagnostics) : diagnostics_(&diagnostics) {}
+
+  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    switch (event) {
+      case Event::object_start: stack_.push_back(Frame{true, {}, {}, 0}); break;
+      case Event::array_start: stack_.push_back(Frame{false, {}, {}, 0}); break;
+      case Event::key: {
+        Frame& top = stack_.back();
+        top.key = parsed.get<std::string>();
+        if (!top.keys.insert(top.key).second) {
+          diagnostics_->error(path(), "duplicate key (each key may appear once in an object; the JSON parser "
+                                      "would keep only the last one)");
+        }
+        break;
+      }
+      case Event::value: advance(); break;
+      case Event::object_end:
+      case Event::array_end:
+        stack_.pop_back();
+        advance();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool is_object;
+    std::set<std::string> keys;
+    std::string key;
+    std::size_t index;
+  };
+
+  void advance() {
+    if (!stack_.empty() && !stack_.back().is_object) ++stack_.back().index;
+  }
+
+  std::string path() const {
+    std::string out;
+    for (const Frame& frame : stack_) out = frame.is_object ? join_path(out, frame.key) : index_path(out, frame.index);
+    return out;
+  }
+
+  Diagnostics* diagnostics_;
+  std::vector<Frame> stack_;
+};
+
+// "JSON syntax error at line 3, column 14: ..." from nlohmann's parse_error (byte offset is 1-based, of the last
+// character read).
+std::string syntax_error_message(std::string_view text, const nlohmann::json::parse_error& error) {
+  const std::size_t end = std::min<std::size_t>(error.byte == 0 ? 0 : error.byte - 1, text.size());
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < end; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  std::string detail = error.what();
+  // Drop nlohmann's "[json.exception.parse_error.101] parse error at line L, column C: " prefix.
+  if (const auto colon = detail.find(": "); colon != std::string::npos && detail.rfind("[json.exception", 0) == 0) {
+    detail = detail.substr(colon + 2);
+  }
+  return "JSON syntax error at line " + std::to_string(line) + ", column " + std::to_string(column) + ": " + detail;
+}
+
+std::string join(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& word : words) out += (out.empty() ? "" : ", ") + word;
+  return out;
+}
+
+void read_lem(JsonReader& analyses, Scene& scene, Diagnostics& diagnostics) {
+  auto lem = analyses.object("lem", Need::optional, "an object (may be empty: {})");
+  if (!lem) return;
+  LemAnalysis result = default_lem_analysis();
+
+  std::vector<std::string> method_keys;
+  for (slope::Method method : slope::all_methods()) method_keys.emplace_back(slope::method_key(method));
+  if (const nlohmann::json* methods = lem->array("methods", Need::optional, 1, "an array of method names")) {
+    result.methods.clear();
+    for (std::size_t i = 0; i < methods->size(); ++i) {
+      const std::string path = index_path(lem->path_of("methods"), i);
+      const auto key = read_string((*methods)[i], path, diagnostics);
+      if (!key) continue;
+      const auto method = slope::method_from_key(*key);
+      if (!method) {
+        const std::string suggestion = closest_match(*key, method_keys);
+        diagnostics.error(path, "unknown method \"" + *key + "\" (" +
+                                    (suggestion.empty() ? "" : "did you mean \"" + suggestion + "\"? ") +
+                                    "allowed: " + join(method_keys) + ")");
+        continue;
+      }
+      if (std::find(result.methods.begin(), result.methods.end(), *method) != result.methods.end()) {
+        diagnostics.error(path, "method \"" + *key + "\" is listed twice (list each method once)");
+        continue;
+      }
+      result.methods.push_back(*method);
+    }
+  }
+  if (const auto slices = lem->integer("slices", Need::optional, Bounds::closed(min_slices, max_slices))) {
+    result.search.slicing.slices = static_cast<int>(*slices);
+  }
+  if (const auto refine = lem->boolean("refine", Need::optional)) result.search.refine = *refine;
+  if (auto search = lem->object("search", Need::optional)) {
+    result.has_search_limits = read_search_limits(*search, scene.section ? &scene.section->section : nullptr,
+                                                  result.search.limits);
+    search->finish();
+  }
+  lem->finish();
+
+  if (!scene.section) {
+    diagnostics.error(lem->path(), "limit equilibrium needs a \"section\" (this scene has none)");
+    return;
+  }
+  scene.analyses.lem = std::move(result);
+}
+
+void read_analyses(JsonReader& top, Scene& scene, Diagnostics& diagnostics) {
+  auto analyses = top.object("analyses", Need::required, "an object naming the analyses to run: lem, sph, compare");
+  if (!analyses) return;
+  read_lem(*analyses, scene, diagnostics);
+  if (const nlohmann::json* sph = analyses->raw("sph", Need::optional)) {
+    if (!sph->is_object()) {
+      diagnostics.error(analyses->path_of("sph"), "expected an object, got " + json_type_name(*sph));
+    } else {
+      scene.analyses.sph = *sph;
+      if (scene.section) check_materials_for_sph(top.path_of("section"), *scene.section, diagnostics);
+    }
+  }
+  if (const nlohmann::json* compare = analyses->raw("compare", Need::optional)) {
+    if (!compare->is_object()) {
+      diagnostics.error(analyses->path_of("compare"), "expected an object, got " + json_type_name(*compare));
+    } else {
+      scene.analyses.compare = *compare;
+      if (!analyses->has("lem") || !analyses->has("sph")) {
+        diagnostics.error(analyses->path_of("compare"),
+                          "comparing surfaces needs both analyses.lem and analyses.sph in the scene");
+      }
+    }
+  }
+  if (!analyses->has("lem") && !analyses->has("sph") && !analyses->has("compare")) {
+    diagnostics.error(analyses->path(), "no analysis requested (add at least one of: \"lem\": {}, \"sph\": {...})");
+  }
+  analyses->finish();
+}
+
+}  // namespace
+
+LemAnalysis default_lem_analysis() {
+  LemAnalysis lem;
+  lem.methods = slope::all_methods();
+  lem.search.slicing.slices = 50;
+  lem.search.refine = true;
+  return lem;
+}
+
+Scene scene_from_json(const nlohmann::json& document, const std::filesystem::path& file) {
+  Diagnostics diagnostics;
+  Scene scene;
+  scene.file = file;
+  scene.document = document;
+
+  JsonReader top(document, "", diagnostics);
+  if (!top.is_object()) throw SceneError(diagnostics.messages());
+
+  if (const auto format = top.string("format", Need::required)) {
+    if (*format != scene_format) {
+      diagnostics.error("format", "unsupported format \"" + *format + "\" (allowed: \"" + std::string(scene_format) +
+                                      "\")");
+    }
+  }
+  scene.name = top.string("name", Need::optional).value_or(file.stem().string());
+  scene.source = top.string("source", Need::optional, false).value_or("");
+  top.allow("notes");
+
+  const bool has_section = top.has("section");
+  const bool has_bodies = top.has("bodies");
+  if (!has_section && !has_bodies && top.is_object()) {
+    diagnostics.error("section", "missing (required: a \"section\" for a slope, or \"bodies\" (and \"walls\") for a "
+                                 "particle scene)");
+  }
+  if (has_section) {
+    if (auto section = top.object("section", Need::required)) {
+      scene.section = read_section(*section, diagnostics);
+      section->finish();
+    }
+  }
+  // Particle scenes: defined and validated by the SPH stage; kept raw here.
+  if (const nlohmann::json* bodies = top.raw("bodies", Need::optional)) {
+    if (!bodies->is_array()) {
+      diagnostics.error("bodies", "expected an array of bodies, got " + json_type_name(*bodies));
+    } else {
+      scene.bodies = *bodies;
+    }
+  }
+  if (const nlohmann::json* walls = top.raw("walls", Need::optional)) scene.walls = *walls;
+
+  read_analyses(top, scene, diagnostics);
+  top.finish();
+
+  if (!diagnostics.empty()) throw SceneError(diagnostics.messages());
+  return scene;
+}
+
+Scene parse_scene(std::string_view text, const std::filesystem::path& file) {
+  Diagnostics diagnostics;
+  nlohmann::json document;
+  try {
+    document = nlohmann::json::parse(text.begin(), text.end(), DuplicateKeyCheck(diagnostics), true, false);
+  } catch (const nlohmann::json::parse_error& error) {
+    throw SceneError({syntax_error_message(text, error)});
+  }
+  if (!diagnostics.empty()) {
+    // Report duplicates together with whatever else is wrong.
+    std::vector<std::string> messages = diagnostics.messages();
+    try {
+      scene_from_json(document, file);
+    } catch (const SceneError& error) {
+      messages.insert(messages.end(), error.messages().begin(), error.messages().end());
+    }
+    throw SceneError(messages);
+  }
+  return scene_from_json(document, file);
+}
+
+Scene load_scene(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw SceneError({"cannot read scene file \"" + file.string() + "\" (does it exist and is it readable?)"});
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneError({"cannot read scene file \"" + file.string() + "\""});
+  return parse_scene(text.str(), file);
+}
+
+std::string summarize(const Scene& scene) {
+  std::ostringstream out;
+  out << '"' << scene.name << "\": ";
+  if (scene.section) {
+    const slope::Section& s = scene.section->section;
+    out << "section x " << format_number(s.x_min()) << " to " << format_number(s.x_max()) << " m, "
+        << s.profile_lines.size() << " profile line" << (s.profile_lines.size() == 1 ? "" : "s") << ", "
+        << s.materials.size() << " material" << (s.materials.size() == 1 ? "" : "s");
+    if (s.water) out << ", water table";
+    if (!s.surcharges.empty()) out << ", " << s.surcharges.size() << " surcharge" << (s.surcharges.size() == 1 ? "" : "s");
+    if (s.seismic_coefficient > 0) out << ", seismic kh = " << format_number(s.seismic_coefficient);
+  }
+  if (scene.bodies) {
+    if (scene.section) out << "; ";
+    out << scene.bodies->size() << " particle bod" << (scene.bodies->size() == 1 ? "y" : "ies");
+  }
+  out << "; analyses:";
+  if (scene.analyses.lem) {
+    out << " lem (" << scene.analyses.lem->methods.size() << " method"
+        << (scene.analyses.lem->methods.size() == 1 ? "" : "s") << ")";
+  }
+  if (scene.analyses.sph) out << " sph";
+  if (scene.analyses.compare) out << " compare";
+  return out.str();
+}
+
+}  // namespace coupling

@@ -1,0 +1,25 @@
+#pragma once
+// Shared between the scene readers (scene.cpp, scene_section.cpp); not part of the public interface.
+#include <optional>
+#include <string>
+
+#include "coupling/json_reader.hpp"
+#include "coupling/scene.hpp"
+
+namespace coupling {
+
+inline constexpr long min_slices = 5;
+inline constexpr long max_slices = 1000;
+inline constexpr long max_grid_points_per_axis = 200;
+
+// Reads and validates "section"; nullopt when anything in it is invalid (the faults are in `diagnostics`).
+std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagnostics);
+
+// Reads analyses.lem.search into `limits`; `section` (may be null) bounds the entry and exit ranges.
+// Returns whether any limit was given.
+bool read_search_limits(JsonReader& search, const slope::Section* section, slope::SearchLimits& limits);
+
+// The SPH soil model needs the elastic constants of every material of the section.
+void check_materials_for_sph(const std::string& section_path, const SceneSection& section, Diagnostics& diagnostics);
+
+}  // namespace coupling

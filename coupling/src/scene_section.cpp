@@ -1,0 +1,453 @@
+// The "section" block of a scene and the LEM search limits: validation and conversion to SI.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "scene_internal.hpp"
+
+namespace coupling {
+
+namespace {
+
+constexpr double kilo = 1e3;
+constexpr double mega = 1e6;
+constexpr double degree = std::numbers::pi / 180.0;
+
+using Polyline = std::vector<slope::Point>;
+
+std::string range_text(double a, double b) { return format_number(a) + " to " + format_number(b); }
+
+// A polyline of [x, y] points with x strictly increasing.
+std::optional<Polyline> read_polyline(const nlohmann::json& points, const std::string& path,
+                                      Diagnostics& diagnostics) {
+  Polyline line;
+  bool ok = true;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::string point_path = index_path(path, i);
+    const auto point = read_pair(points[i], point_path, diagnostics, "a point [x_m, y_m]");
+    if (!point) {
+      ok = false;
+      continue;
+    }
+    if (!line.empty() && ok && !(point->first > line.back().x)) {
+      diagnostics.error(point_path, "x must increase (got " + points[i][0].dump() + " after " +
+                                        points[i - 1][0].dump() + "; points run left to right, x strictly increasing)");
+      ok = false;
+    }
+    line.push_back({point->first, point->second});
+  }
+  if (!ok) return std::nullopt;
+  return line;
+}
+
+// Linear interpolation on a polyline, constant beyond its ends (same rule as slope::polyline_y).
+double height_at(const Polyline& line, double x) {
+  if (x <= line.front().x) return line.front().y;
+  if (x >= line.back().x) return line.back().y;
+  const auto upper = std::upper_bound(line.begin(), line.end(), x,
+                                      [](double value, const slope::Point& p) { return value < p.x; });
+  const slope::Point& b = *upper;
+  const slope::Point& a = *(upper - 1);
+  return a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x);
+}
+
+// Every vertex x of both lines inside [lo, hi], sorted, plus the ends.
+std::vector<double> common_abscissae(const Polyline& a, const Polyline& b, double lo, double hi) {
+  std::vector<double> xs{lo, hi};
+  for (const auto* line : {&a, &b}) {
+    for (const slope::Point& p : *line) {
+      if (p.x > lo && p.x < hi) xs.push_back(p.x);
+    }
+  }
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  return xs;
+}
+
+std::optional<SoilMaterial> read_material(JsonReader& m) {
+  SoilMaterial material;
+  const auto name = m.string("name", Need::required);
+  const auto unit_weight = m.number("unit_weight_kN_m3", Need::required, Bounds::positive());
+  const auto cohesion = m.number("cohesion_kPa", Need::required, Bounds::non_negative());
+  const auto friction = m.number("friction_angle_deg", Need::required, Bounds::half_open(0.0, 90.0));
+  const auto dilatancy = m.number("dilatancy_angle_deg", Need::optional, Bounds::half_open(0.0, 90.0));
+  const auto youngs = m.number("youngs_modulus_MPa", Need::optional, Bounds::positive());
+  const auto poisson = m.number("poisson_ratio", Need::optional, Bounds::open(-1.0, 0.5));
+  m.finish();
+  if (dilatancy && friction && *dilatancy > *friction) {
+    m.diagnostics().error(m.path_of("dilatancy_angle_deg"),
+                          "must not exceed friction_angle_deg = " + format_number(*friction) + " (got " +
+                              format_number(*dilatancy) + "; 0 <= dilatancy <= friction angle)");
+    return std::nullopt;
+  }
+  if (!name || !unit_weight || !cohesion || !friction) return std::nullopt;
+  if (m.has("dilatancy_angle_deg") && !dilatancy) return std::nullopt;
+  if (m.has("youngs_modulus_MPa") && !youngs) return std::nullopt;
+  if (m.has("poisson_ratio") && !poisson) return std::nullopt;
+  material.name = *name;
+  material.unit_weight = *unit_weight * kilo;
+  material.cohesion = *cohesion * kilo;
+  material.friction_angle = *friction * degree;
+  if (dilatancy) material.dilatancy_angle = *dilatancy * degree;
+  if (youngs) material.youngs_modulus = *youngs * mega;
+  material.poisson_ratio = poisson;
+  return material;
+}
+
+struct LineRead {
+  std::optional<std::size_t> material;
+  std::optional<Polyline> points;
+  std::string path;
+};
+
+// Profile lines: same x span as the ground surface, at or below it, pairwise not crossing, not below the bottom.
+bool check_profile_geometry(const std::vector<LineRead>& lines, std::optional<double> bottom_y,
+                            const std::string& section_path, Diagnostics& diagnostics) {
+  const std::size_t errors_before = diagnostics.size();
+  const Polyline& ground = *lines[0].points;
+  const double x_min = ground.front().x, x_max = ground.back().x;
+  double scale = std::max(1.0, x_max - x_min);
+  for (const LineRead& line : lines) {
+    for (const slope::Point& p : *line.points) scale = std::max(scale, std::fabs(p.y));
+  }
+  const double tolerance = 1e-9 * scale;
+
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const Polyline& line = *lines[i].points;
+    const std::string points_path = join_path(lines[i].path, "points_m");
+    const bool left_ok = std::fabs(line.front().x - x_min) <= tolerance;
+    const bool right_ok = std::fabs(line.back().x - x_max) <= tolerance;
+    if (!left_ok || !right_ok) {
+      diagnostics.error(index_path(points_path, left_ok ? line.size() - 1 : 0),
+                        "every profile line must span the same x range as the ground surface (profile_lines[0]: x " +
+                            range_text(x_min, x_max) + " m); this line spans x " +
+                            range_text(line.front().x, line.back().x) + " m");
+    }
+  }
+  if (diagnostics.size() != errors_before) return false;
+
+  for (std::size_t j = 1; j < lines.size(); ++j) {
+    // The ground surface is on top of every other line.
+    const Polyline& line = *lines[j].points;
+    for (double x : common_abscissae(ground, line, x_min, x_max)) {
+      const double above = height_at(line, x) - height_at(ground, x);
+      if (above > tolerance) {
+        diagnostics.error(lines[j].path,
+                          "rises above the ground surface (profile_lines[0]) at x = " + format_number(x) +
+                              " m (y = " + format_number(height_at(line, x)) + " above " +
+                              format_number(height_at(ground, x)) +
+                              "); the first profile line is the ground surface and must be on top (lines may touch "
+                              "but not cross)");
+        break;
+      }
+    }
+  }
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    for (std::size_t j = i + 1; j < lines.size(); ++j) {
+      const Polyline& a = *lines[i].points;
+      const Polyline& b = *lines[j].points;
+      double previous_x = 0.0, previous_d = 0.0;
+      bool have_previous = false;
+      for (double x : common_abscissae(a, b, x_min, x_max)) {
+        const double d = height_at(a, x) - height_at(b, x);
+        if (std::fabs(d) <= tolerance) continue;  // touching
+        if (have_previous && (d > 0) != (previous_d > 0)) {
+          const double crossing = previous_x + (x - previous_x) * previous_d / (previous_d - d);
+          diagnostics.error(lines[j].path, "crosses profile_lines[" + std::to_string(i) + "] near x = " +
+                                               format_number(crossing) + " m (lines may touch but not cross)");
+          break;
+        }
+        previous_x = x;
+        previous_d = d;
+        have_previous = true;
+      }
+    }
+  }
+
+  if (bottom_y) {
+    const std::string bottom_path = join_path(section_path, "bottom_y_m");
+    bool reported = false;
+    for (std::size_t i = 0; i < lines.size() && !reported; ++i) {
+      const Polyline& line = *lines[i].points;
+      for (std::size_t k = 0; k < line.size(); ++k) {
+        if (line[k].y < *bottom_y - tolerance) {
+          diagnostics.error(bottom_path, "must be at or below every profile line (got " + format_number(*bottom_y) +
+                                             ", but " + index_path(join_path(lines[i].path, "points_m"), k) +
+                                             " has y = " + format_number(line[k].y) + ")");
+          reported = true;
+          break;
+        }
+      }
+    }
+    const bool ground_above = std::any_of(ground.begin(), ground.end(),
+                                          [&](const slope::Point& p) { return p.y > *bottom_y + tolerance; });
+    if (!reported && !ground_above) {
+      diagnostics.error(bottom_path, "must be below the ground surface (got " + format_number(*bottom_y) +
+                                         "; the ground surface is nowhere above it, so the section holds no soil)");
+    }
+  }
+  return diagnostics.size() == errors_before;
+}
+
+std::optional<slope::Water> read_water(JsonReader& water, double x_min, double x_max, std::optional<double> bottom_y,
+                                       bool geometry_ok) {
+  Diagnostics& diagnostics = water.diagnostics();
+  slope::Water result;
+  std::optional<Polyline> line;
+  if (const nlohmann::json* points = water.array("piezometric_line_m", Need::required, 2,
+                                                 "an array of at least two points [x_m, y_m]")) {
+    line = read_polyline(*points, water.path_of("piezometric_line_m"), diagnostics);
+  }
+  const auto unit_weight = water.number("unit_weight_kN_m3", Need::optional, Bounds::positive());
+  water.finish();
+  if (!line || (water.has("unit_weight_kN_m3") && !unit_weight)) return std::nullopt;
+  result.piezometric_line = *line;
+  result.unit_weight = unit_weight.value_or(9.81) * kilo;
+  if (!geometry_ok) return result;
+
+  const std::string path = water.path_of("piezometric_line_m");
+  const double tolerance = 1e-9 * std::max(1.0, x_max - x_min);
+  if (line->front().x > x_min + tolerance || line->back().x < x_max - tolerance) {
+    diagnostics.error(path, "must span the section's x range (x " + range_text(x_min, x_max) +
+                                " m; it may extend beyond it), got x " +
+                                range_text(line->front().x, line->back().x) + " m");
+    return std::nullopt;
+  }
+  if (bottom_y) {
+    double highest = std::max(height_at(*line, x_min), height_at(*line, x_max));
+    for (const slope::Point& p : *line) {
+      if (p.x > x_min && p.x < x_max) highest = std::max(highest, p.y);
+    }
+    if (highest <= *bottom_y) {
+      diagnostics.error(path, "lies at or below bottom_y_m = " + format_number(*bottom_y) +
+                                  " over the whole section, so there is no water in it (heights are elevations in m, "
+                                  "not depths; leave \"water\" out for a dry slope)");
+      return std::nullopt;
+    }
+  }
+  return result;
+}
+
+std::vector<slope::Surcharge> read_surcharges(const nlohmann::json& array, const std::string& path, double x_min,
+                                              double x_max, bool geometry_ok, Diagnostics& diagnostics, bool& ok) {
+  std::vector<slope::Surcharge> result;
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    JsonReader s(array[i], index_path(path, i), diagnostics);
+    const auto from = s.number("from_x_m", Need::required);
+    const auto to = s.number("to_x_m", Need::required);
+    const auto pressure = s.number("pressure_kPa", Need::required, Bounds::non_negative());
+    s.finish();
+    if (!from || !to || !pressure) {
+      ok = false;
+      continue;
+    }
+    if (!(*from < *to)) {
+      diagnostics.error(s.path_of("to_x_m"), "must be greater than from_x_m (got from " + format_number(*from) +
+                                                 " to " + format_number(*to) + ")");
+      ok = false;
+      continue;
+    }
+    if (geometry_ok && (*from < x_min || *to > x_max)) {
+      diagnostics.error(s.path(), "must lie on the section (x " + range_text(x_min, x_max) + " m), got x " +
+                                      range_text(*from, *to) + " m");
+      ok = false;
+      continue;
+    }
+    result.push_back({*from, *to, *pressure * kilo});
+  }
+  return result;
+}
+
+// [min, max] with min <= max (or min < max when `strict`).
+std::optional<slope::Range> read_range(JsonReader& reader, std::string_view key, bool strict,
+                                       const Bounds& bounds = Bounds::any()) {
+  const nlohmann::json* value = reader.raw(key, Need::optional);
+  if (value == nullptr) return std::nullopt;
+  const std::string path = reader.path_of(key);
+  Diagnostics& diagnostics = reader.diagnostics();
+  const auto pair = read_pair(*value, path, diagnostics, "a range [min, max]");
+  if (!pair) return std::nullopt;
+  if (strict ? !(pair->first < pair->second) : !(pair->first <= pair->second)) {
+    diagnostics.error(path, std::string("min must be ") + (strict ? "less than" : "at most") + " max (got [" +
+                                format_number(pair->first) + ", " + format_number(pair->second) + "])");
+    return std::nullopt;
+  }
+  if (!bounds.contains(pair->first) || !bounds.contains(pair->second)) {
+    diagnostics.error(path, "both ends must be " + bounds.describe() + " (got [" + format_number(pair->first) + ", " +
+                                format_number(pair->second) + "])");
+    return std::nullopt;
+  }
+  return slope::Range{pair->first, pair->second};
+}
+
+}  // namespace
+
+bool read_search_limits(JsonReader& search, const slope::Section* section, slope::SearchLimits& limits) {
+  Diagnostics& diagnostics = search.diagnostics();
+  Bounds on_ground = Bounds::any();
+  std::string ground_text;
+  if (section != nullptr && !section->profile_lines.empty() && !section->profile_lines[0].points.empty()) {
+    const auto& ground = section->profile_lines[0].points;
+    on_ground = Bounds::closed(ground.front().x, ground.back().x);
+    ground_text = " (the ground surface's x range)";
+  }
+  for (const char* key : {"entry_x_m", "exit_x_m"}) {
+    auto range = read_range(search, key, false);
+    if (range && (!on_ground.contains(range->min) || !on_ground.contains(range->max))) {
+      diagnostics.error(search.path_of(key), "must lie " + on_ground.describe() + ground_text + ", got [" +
+                                                 format_number(range->min) + ", " + format_number(range->max) + "]");
+      range.reset();
+    }
+    if (std::string_view(key) == "entry_x_m") {
+      limits.entry_x = range;
+    } else {
+      limits.exit_x = range;
+    }
+  }
+  if (auto grid = search.object("centre_grid", Need::optional,
+                                "an object {\"x_m\": [min, max], \"y_m\": [min, max], \"nx\": 10, \"ny\": 10}")) {
+    const bool has_x = grid->has("x_m"), has_y = grid->has("y_m");
+    const auto x = read_range(*grid, "x_m", true);
+    const auto y = read_range(*grid, "y_m", true);
+    if (!has_x) diagnostics.error(grid->path_of("x_m"), "missing (required: a range [min, max] of centre x, m)");
+    if (!has_y) diagnostics.error(grid->path_of("y_m"), "missing (required: a range [min, max] of centre y, m)");
+    const Bounds counts = Bounds::closed(2, static_cast<double>(max_grid_points_per_axis));
+    const auto nx = grid->integer("nx", Need::optional, counts);
+    const auto ny = grid->integer("ny", Need::optional, counts);
+    grid->finish();
+    if (x && y && (nx || !grid->has("nx")) && (ny || !grid->has("ny"))) {
+      slope::CentreGrid centre_grid;
+      centre_grid.x = *x;
+      centre_grid.y = *y;
+      centre_grid.nx = static_cast<int>(nx.value_or(10));
+      centre_grid.ny = static_cast<int>(ny.value_or(10));
+      limits.centre_grid = centre_grid;
+    }
+  }
+  limits.radius = read_range(search, "radius_m", false, Bounds::positive());
+  return search.has("entry_x_m") || search.has("exit_x_m") || search.has("centre_grid") || search.has("radius_m");
+}
+
+void check_materials_for_sph(const std::string& section_path, const SceneSection& section, Diagnostics& diagnostics) {
+  for (std::size_t i = 0; i < section.materials.size(); ++i) {
+    const SoilMaterial& m = section.materials[i];
+    std::string missing;
+    if (!m.youngs_modulus) missing += "youngs_modulus_MPa";
+    if (!m.poisson_ratio) missing += std::string(missing.empty() ? "" : " and ") + "poisson_ratio";
+    if (missing.empty()) continue;
+    diagnostics.error(index_path(join_path(section_path, "materials"), i),
+                      "material \"" + m.name + "\" lacks " + missing +
+                          ", which the SPH analysis (analyses.sph) needs for every material (elastic constants of the "
+                          "soil model; dilatancy_angle_deg is optional, default 0)");
+  }
+}
+
+std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagnostics) {
+  const std::size_t errors_before = diagnostics.size();
+  SceneSection result;
+
+  const auto bottom_y = section.number("bottom_y_m", Need::required);
+
+  // Materials first: profile lines refer to them by name.
+  std::map<std::string, std::size_t> material_index;
+  if (const nlohmann::json* materials = section.array("materials", Need::required, 1, "an array of materials")) {
+    std::map<std::string, std::string> first_path;
+    for (std::size_t i = 0; i < materials->size(); ++i) {
+      JsonReader m((*materials)[i], index_path(section.path_of("materials"), i), diagnostics);
+      auto material = read_material(m);
+      if (!material) {
+        // Keep the name (if readable) so profile lines naming it do not report a second, misleading error.
+        if (m.is_object() && (*materials)[i].contains("name") && (*materials)[i]["name"].is_string()) {
+          material_index.emplace((*materials)[i]["name"].get<std::string>(), result.materials.size());
+          result.materials.emplace_back();
+        }
+        continue;
+      }
+      const auto [it, inserted] = first_path.emplace(material->name, m.path());
+      if (!inserted) {
+        diagnostics.error(m.path_of("name"), "duplicate material name \"" + material->name + "\" (already used by " +
+                                                 it->second + "; names must be unique)");
+        continue;
+      }
+      material_index.emplace(material->name, result.materials.size());
+      result.materials.push_back(std::move(*material));
+    }
+  }
+
+  std::vector<LineRead> lines;
+  bool lines_ok = false;
+  if (const nlohmann::json* profile = section.array("profile_lines", Need::required, 1,
+                                                    "an array of profile lines, the ground surface first")) {
+    lines_ok = true;
+    for (std::size_t i = 0; i < profile->size(); ++i) {
+      LineRead line;
+      line.path = index_path(section.path_of("profile_lines"), i);
+      JsonReader l((*profile)[i], line.path, diagnostics);
+      if (const auto name = l.string("material", Need::required)) {
+        const auto it = material_index.find(*name);
+        if (it != material_index.end()) {
+          line.material = it->second;
+        } else if (!material_index.empty() || section.has("materials")) {
+          std::vector<std::string> names;
+          for (const auto& [known, index] : material_index) names.push_back(known);
+          std::string defined;
+          for (const std::string& n : names) defined += (defined.empty() ? "" : ", ") + n;
+          const std::string suggestion = closest_match(*name, names);
+          diagnostics.error(l.path_of("material"),
+                            "unknown material \"" + *name + "\" (" +
+                                (suggestion.empty() ? "" : "did you mean \"" + suggestion + "\"? ") +
+                                "defined in section.materials: " + (defined.empty() ? "none" : defined) + ")");
+        }
+      }
+      if (const nlohmann::json* points =
+              l.array("points_m", Need::required, 2, "an array of at least two points [x_m, y_m]")) {
+        line.points = read_polyline(*points, l.path_of("points_m"), diagnostics);
+      }
+      l.finish();
+      if (!line.material || !line.points) lines_ok = false;
+      lines.push_back(std::move(line));
+    }
+  }
+
+  // Geometry checks need every line's points.
+  bool geometry_ok = lines_ok && !lines.empty();
+  if (geometry_ok) {
+    for (const LineRead& line : lines) geometry_ok = geometry_ok && line.points.has_value();
+  }
+  if (geometry_ok) geometry_ok = check_profile_geometry(lines, bottom_y, section.path(), diagnostics) && bottom_y;
+
+  double x_min = 0.0, x_max = 0.0;
+  if (geometry_ok) {
+    x_min = lines[0].points->front().x;
+    x_max = lines[0].points->back().x;
+  }
+
+  if (auto water = section.object("water", Need::optional,
+                                  "an object {\"piezometric_line_m\": [[x, y], ...], \"unit_weight_kN_m3\": 9.81}")) {
+    result.section.water = read_water(*water, x_min, x_max, bottom_y, geometry_ok);
+  }
+  bool surcharges_ok = true;
+  if (const nlohmann::json* surcharges = section.array("surcharges", Need::optional)) {
+    result.section.surcharges = read_surcharges(*surcharges, section.path_of("surcharges"), x_min, x_max,
+                                                geometry_ok, diagnostics, surcharges_ok);
+  }
+  if (auto seismic = section.object("seismic", Need::optional, "an object {\"horizontal_coefficient\": 0.1}")) {
+    result.section.seismic_coefficient =
+        seismic->number("horizontal_coefficient", Need::required, Bounds::half_open(0.0, 1.0)).value_or(0.0);
+    seismic->finish();
+  }
+
+  if (diagnostics.size() != errors_before || !geometry_ok) return std::nullopt;
+
+  result.section.bottom_y = *bottom_y;
+  for (const SoilMaterial& m : result.materials) {
+    result.section.materials.push_back(slope::Material{m.name, m.unit_weight, m.cohesion, m.friction_angle});
+  }
+  for (const LineRead& line : lines) {
+    result.section.profile_lines.push_back(slope::ProfileLine{*line.material, *line.points});
+  }
+  return result;
+}
+
+}  // namespace coupling
