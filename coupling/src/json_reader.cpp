@@ -121,7 +121,9 @@ std::string closest_match(std::string_view word, const std::vector<std::string>&
 std::optional<double> read_number(const nlohmann::json& value, const std::string& path, Diagnostics& diagnostics,
                                   const Bounds& bounds) {
   if (!value.is_number()) {
-    diagnostics.error(path, "expected a number (" + bounds.describe() + "), got " + got(value));
+    const bool any = !bounds.min && !bounds.max;
+    diagnostics.error(path, std::string("expected a number") + (any ? "" : " (" + bounds.describe() + ")") + ", got " +
+                                got(value));
     return std::nullopt;
   }
   const double number = value.get<double>();
@@ -142,7 +144,9 @@ std::optional<long> read_integer(const nlohmann::json& value, const std::string&
                      (value.is_number_float() && std::isfinite(value.get<double>()) &&
                       std::floor(value.get<double>()) == value.get<double>());
   if (!whole) {
-    diagnostics.error(path, "expected a whole number (" + bounds.describe() + "), got " + got(value));
+    const bool any = !bounds.min && !bounds.max;
+    diagnostics.error(path, std::string("expected a whole number") + (any ? "" : " (" + bounds.describe() + ")") +
+                                ", got " + got(value));
     return std::nullopt;
   }
   const double number = value.get<double>();
@@ -215,7 +219,8 @@ const nlohmann::json* JsonReader::raw(std::string_view key, Need need, std::stri
 }
 
 std::optional<double> JsonReader::number(std::string_view key, Need need, const Bounds& bounds) {
-  const nlohmann::json* value = find(key, need, "a number " + bounds.describe());
+  const bool any = !bounds.min && !bounds.max;
+  const nlohmann::json* value = find(key, need, any ? std::string("a number") : "a number " + bounds.describe());
   if (value == nullptr) return std::nullopt;
   return read_number(*value, path_of(key), *diagnostics_, bounds);
 }
@@ -225,7 +230,9 @@ double JsonReader::number_or(std::string_view key, double fallback, const Bounds
 }
 
 std::optional<long> JsonReader::integer(std::string_view key, Need need, const Bounds& bounds) {
-  const nlohmann::json* value = find(key, need, "a whole number " + bounds.describe());
+  const bool any = !bounds.min && !bounds.max;
+  const nlohmann::json* value =
+      find(key, need, any ? std::string("a whole number") : "a whole number " + bounds.describe());
   if (value == nullptr) return std::nullopt;
   return read_integer(*value, path_of(key), *diagnostics_, bounds);
 }

@@ -95,7 +95,7 @@ std::string join(const std::vector<std::string>& words) {
   return out;
 }
 
-void read_lem(JsonReader& analyses, Scene& scene, Diagnostics& diagnostics) {
+void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics& diagnostics) {
   auto lem = analyses.object("lem", Need::optional, "an object (may be empty: {})");
   if (!lem) return;
   LemAnalysis result = default_lem_analysis();
@@ -135,16 +135,17 @@ void read_lem(JsonReader& analyses, Scene& scene, Diagnostics& diagnostics) {
   lem->finish();
 
   if (!scene.section) {
-    diagnostics.error(lem->path(), "limit equilibrium needs a \"section\" (this scene has none)");
+    // Only a fault of its own when the scene has no section at all (an invalid section is reported already).
+    if (!has_section) diagnostics.error(lem->path(), "limit equilibrium needs a \"section\" (this scene has none)");
     return;
   }
   scene.analyses.lem = std::move(result);
 }
 
-void read_analyses(JsonReader& top, Scene& scene, Diagnostics& diagnostics) {
+void read_analyses(JsonReader& top, Scene& scene, bool has_section, Diagnostics& diagnostics) {
   auto analyses = top.object("analyses", Need::required, "an object naming the analyses to run: lem, sph, compare");
   if (!analyses) return;
-  read_lem(*analyses, scene, diagnostics);
+  read_lem(*analyses, scene, has_section, diagnostics);
   if (const nlohmann::json* sph = analyses->raw("sph", Need::optional)) {
     if (!sph->is_object()) {
       diagnostics.error(analyses->path_of("sph"), "expected an object, got " + json_type_name(*sph));
@@ -221,7 +222,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
   }
   if (const nlohmann::json* walls = top.raw("walls", Need::optional)) scene.walls = *walls;
 
-  read_analyses(top, scene, diagnostics);
+  read_analyses(top, scene, has_section, diagnostics);
   top.finish();
 
   if (!diagnostics.empty()) throw SceneError(diagnostics.messages());
@@ -274,13 +275,14 @@ std::string summarize(const Scene& scene) {
     if (scene.section) out << "; ";
     out << scene.bodies->size() << " particle bod" << (scene.bodies->size() == 1 ? "y" : "ies");
   }
-  out << "; analyses:";
+  std::vector<std::string> analyses;
   if (scene.analyses.lem) {
-    out << " lem (" << scene.analyses.lem->methods.size() << " method"
-        << (scene.analyses.lem->methods.size() == 1 ? "" : "s") << ")";
+    const std::size_t n = scene.analyses.lem->methods.size();
+    analyses.push_back("lem (" + std::to_string(n) + " method" + (n == 1 ? "" : "s") + ")");
   }
-  if (scene.analyses.sph) out << " sph";
-  if (scene.analyses.compare) out << " compare";
+  if (scene.analyses.sph) analyses.emplace_back("sph");
+  if (scene.analyses.compare) analyses.emplace_back("compare");
+  out << "; analyses: " << join(analyses);
   return out.str();
 }
 

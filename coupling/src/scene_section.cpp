@@ -351,6 +351,7 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
 
   // Materials first: profile lines refer to them by name.
   std::map<std::string, std::size_t> material_index;
+  std::vector<std::string> material_names;  // in the order defined, for messages
   if (const nlohmann::json* materials = section.array("materials", Need::required, 1, "an array of materials")) {
     std::map<std::string, std::string> first_path;
     for (std::size_t i = 0; i < materials->size(); ++i) {
@@ -360,6 +361,7 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
         // Keep the name (if readable) so profile lines naming it do not report a second, misleading error.
         if (m.is_object() && (*materials)[i].contains("name") && (*materials)[i]["name"].is_string()) {
           material_index.emplace((*materials)[i]["name"].get<std::string>(), result.materials.size());
+          material_names.push_back((*materials)[i]["name"].get<std::string>());
           result.materials.emplace_back();
         }
         continue;
@@ -371,6 +373,7 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
         continue;
       }
       material_index.emplace(material->name, result.materials.size());
+      material_names.push_back(material->name);
       result.materials.push_back(std::move(*material));
     }
   }
@@ -389,11 +392,9 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
         if (it != material_index.end()) {
           line.material = it->second;
         } else if (!material_index.empty() || section.has("materials")) {
-          std::vector<std::string> names;
-          for (const auto& [known, index] : material_index) names.push_back(known);
           std::string defined;
-          for (const std::string& n : names) defined += (defined.empty() ? "" : ", ") + n;
-          const std::string suggestion = closest_match(*name, names);
+          for (const std::string& n : material_names) defined += (defined.empty() ? "" : ", ") + n;
+          const std::string suggestion = closest_match(*name, material_names);
           diagnostics.error(l.path_of("material"),
                             "unknown material \"" + *name + "\" (" +
                                 (suggestion.empty() ? "" : "did you mean \"" + suggestion + "\"? ") +

@@ -1,0 +1,55 @@
+#pragma once
+// The workflow behind the sphslope program: scene -> analyses -> report.json. main.cpp only parses the command
+// line and prints; tests call these functions directly.
+//
+// Exit statuses (SCENE.md): 0 when every requested analysis ran; 2 for invalid input (nothing written; the
+// messages name the JSON path of the fault); 1 for a run that failed (report written with the reason).
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "coupling/scene.hpp"
+#include "slope/search.hpp"
+
+namespace coupling {
+
+enum class ExitStatus : int { ok = 0, failed = 1, invalid_input = 2 };
+
+enum class Mode {
+  check,  // validate only
+  lem,    // limit equilibrium only (analyses.lem of the scene, or its defaults when absent)
+  run,    // every analysis the scene asks for
+};
+
+struct WorkflowOptions {
+  Mode mode = Mode::run;
+  std::optional<std::filesystem::path> output_dir;  // report.json goes here; none: nothing is written
+  std::ostream* log = nullptr;                      // progress and notes (stderr in the program); may be null
+};
+
+struct WorkflowResult {
+  ExitStatus status = ExitStatus::ok;
+  std::optional<Scene> scene;                     // set once the scene is valid
+  std::vector<std::string> errors;                // invalid input: "<json path>: ..."; failed run: the reasons
+  nlohmann::json report;                          // null when the input was invalid or in check mode
+  std::optional<slope::SearchResult> lem;         // the limit-equilibrium result, for the table
+  std::optional<std::filesystem::path> report_file;  // where report.json was written
+};
+
+// Loads and validates the scene file, then runs what `options.mode` asks for.
+WorkflowResult run_scene_file(const std::filesystem::path& scene_file, const WorkflowOptions& options);
+
+// Runs an already validated scene.
+WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options);
+
+// Default output folder of "sphslope run": runs/<scene file stem> (relative to the working directory).
+std::filesystem::path default_output_dir(const std::filesystem::path& scene_file);
+
+// Fixed-width table of the critical surface per method (FS, centre, radius, entry, exit) and the search totals.
+std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& result);
+
+}  // namespace coupling

@@ -1,0 +1,230 @@
+#include "coupling/workflow.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <ostream>
+#include <system_error>
+
+#include "coupling/atomic_write.hpp"
+#include "coupling/report.hpp"
+
+namespace coupling {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// What one analysis stage hands back to the workflow.
+struct StageOutcome {
+  ExitStatus status = ExitStatus::ok;
+  std::vector<std::string> errors;  // invalid input: JSON-path messages; failed: reasons
+};
+
+StageOutcome run_lem_stage(const Scene& scene, const LemAnalysis& analysis, WorkflowResult& out) {
+  StageOutcome outcome;
+  const Clock::time_point start = Clock::now();
+  const slope::Section& section = scene.section->section;
+  slope::SearchResult result;
+  try {
+    result = slope::search_critical(section, analysis.methods, analysis.search);
+  } catch (const std::exception& error) {
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back(std::string("lem: the limit-equilibrium search failed: ") + error.what());
+    out.report["lem"] = {{"error", outcome.errors.back()}};
+    out.report["timing_s"]["lem"] = seconds_since(start);
+    return outcome;
+  }
+  out.report["timing_s"]["lem"] = seconds_since(start);
+
+  if (!result.error.empty()) {
+    if (analysis.has_search_limits) {
+      // The user's limits admit no slip circle: that is a fault of the input, reported at its JSON path.
+      outcome.status = ExitStatus::invalid_input;
+      outcome.errors.push_back("analyses.lem.search: the search limits admit no valid slip circle (" + result.error +
+                               "); widen entry_x_m, exit_x_m, radius_m or centre_grid, or leave \"search\" out "
+                               "for the automatic search");
+      return outcome;
+    }
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back("lem: the automatic search found no valid slip circle: " + result.error);
+  }
+  out.report["lem"] = lem_report(section, analysis, result);
+  if (outcome.status == ExitStatus::ok) {
+    bool any = false;
+    for (const slope::CriticalSurface& critical : result.methods) {
+      any = any || (critical.mass && critical.result.factor_of_safety && std::isfinite(*critical.result.factor_of_safety));
+    }
+    if (!any) {
+      outcome.status = ExitStatus::failed;
+      outcome.errors.push_back("lem: no method converged on any slip surface (see lem.methods.*.error)");
+    }
+  }
+  out.lem = std::move(result);
+  return outcome;
+}
+
+// The SPH stage. Not part of this build yet: the SPH helper plugs the particle model in here (scene.section or
+// scene.bodies/walls -> sph::Model -> sph::run -> report["sph"]).
+StageOutcome run_sph_stage(const Scene& /*scene*/, WorkflowResult& out) {
+  StageOutcome outcome;
+  outcome.status = ExitStatus::failed;
+  outcome.errors.push_back("sph: the SPH analysis is not implemented in this build of sphslope");
+  out.report["sph"] = {{"error", outcome.errors.back()}, {"stopped_because", "not_implemented"}};
+  return outcome;
+}
+
+// The surface comparison stage (needs both LEM and SPH results). Not part of this build yet.
+StageOutcome run_compare_stage(const Scene& /*scene*/, WorkflowResult& out) {
+  StageOutcome outcome;
+  outcome.status = ExitStatus::failed;
+  outcome.errors.push_back("compare: the comparison of SPH and LEM surfaces is not implemented in this build");
+  out.report["comparison"] = {{"error", outcome.errors.back()}};
+  return outcome;
+}
+
+}  // namespace
+
+std::filesystem::path default_output_dir(const std::filesystem::path& scene_file) {
+  return std::filesystem::path("runs") / scene_file.stem();
+}
+
+WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options) {
+  const Clock::time_point start = Clock::now();
+  WorkflowResult out;
+  out.scene = scene;
+  if (options.mode == Mode::check) return out;
+
+  out.report = report_header(scene);
+  out.report["timing_s"] = nlohmann::json::object();
+
+  std::vector<std::string> requested;
+  std::optional<LemAnalysis> lem = scene.analyses.lem;
+  if (options.mode == Mode::lem) {
+    if (!scene.section) {
+      out.status = ExitStatus::invalid_input;
+      out.errors.push_back("section: missing (sphslope lem needs a slope \"section\"; this is a particle scene)");
+      out.report = nullptr;
+      return out;
+    }
+    if (!lem) lem = default_lem_analysis();
+    requested.push_back("lem");
+  } else {
+    if (lem) requested.push_back("lem");
+    if (scene.analyses.sph) requested.push_back("sph");
+    if (scene.analyses.compare) requested.push_back("compare");
+  }
+  out.report["analyses"] = requested;
+
+  std::vector<std::string> failures;
+  auto absorb = [&](StageOutcome&& stage) {
+    if (stage.status == ExitStatus::invalid_input) {
+      out.status = ExitStatus::invalid_input;
+      out.errors = std::move(stage.errors);
+      return false;
+    }
+    if (stage.status == ExitStatus::failed) {
+      out.status = ExitStatus::failed;
+      failures.insert(failures.end(), stage.errors.begin(), stage.errors.end());
+    }
+    return true;
+  };
+
+  // LEM first: it is fast and can still reject the input (search limits without a valid circle) before anything
+  // is written.
+  if (lem && !absorb(run_lem_stage(scene, *lem, out))) {
+    out.report = nullptr;
+    return out;
+  }
+  if (options.mode == Mode::run) {
+    if (scene.analyses.sph) absorb(run_sph_stage(scene, out));
+    if (scene.analyses.compare) absorb(run_compare_stage(scene, out));
+  }
+
+  out.report["status"] = failures.empty() ? "ok" : "failed";
+  out.report["errors"] = failures;
+  out.errors = failures;
+  out.report["timing_s"]["total"] = seconds_since(start);
+
+  if (options.output_dir) {
+    try {
+      std::filesystem::create_directories(*options.output_dir);
+      const std::filesystem::path file = *options.output_dir / "report.json";
+      atomic_write(file, report_text(out.report));
+      out.report_file = file;
+    } catch (const std::exception& error) {
+      out.status = ExitStatus::failed;
+      out.errors.push_back(std::string("cannot write the report: ") + error.what());
+    }
+  }
+  return out;
+}
+
+WorkflowResult run_scene_file(const std::filesystem::path& scene_file, const WorkflowOptions& options) {
+  const Clock::time_point start = Clock::now();
+  Scene scene;
+  try {
+    scene = load_scene(scene_file);
+  } catch (const SceneError& error) {
+    WorkflowResult out;
+    out.status = ExitStatus::invalid_input;
+    out.errors = error.messages();
+    return out;
+  }
+  const double load_seconds = seconds_since(start);
+  WorkflowResult out = run_scene(scene, options);
+  if (out.report.is_object() && out.report.contains("timing_s")) {
+    out.report["timing_s"]["load"] = load_seconds;
+    out.report["timing_s"]["total"] = seconds_since(start);
+    // Rewrite with the load time included (same atomic write; cheap).
+    if (out.report_file) {
+      try {
+        atomic_write(*out.report_file, report_text(out.report));
+      } catch (const std::exception& error) {
+        out.status = ExitStatus::failed;
+        out.errors.push_back(std::string("cannot write the report: ") + error.what());
+      }
+    }
+  }
+  return out;
+}
+
+std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& result) {
+  std::string text;
+  char line[512];
+  std::snprintf(line, sizeof line, "%-27s %7s  %-19s %8s  %-17s %-17s\n", "method", "FS", "centre (x, y) m",
+                "radius m", "entry (x, y) m", "exit (x, y) m");
+  text += line;
+  for (slope::Method method : analysis.methods) {
+    const slope::CriticalSurface* found = nullptr;
+    for (const slope::CriticalSurface& critical : result.methods) {
+      if (critical.method == method) found = &critical;
+    }
+    const std::string key(slope::method_key(method));
+    if (found == nullptr || !found->mass || !found->result.factor_of_safety) {
+      const std::string why = found == nullptr ? result.error : found->result.error;
+      std::snprintf(line, sizeof line, "%-27s %7s  %s\n", key.c_str(), "-",
+                    ("failed: " + (why.empty() ? std::string("no converged surface") : why)).c_str());
+      text += line;
+      continue;
+    }
+    const slope::SlipMass& mass = *found->mass;
+    char centre[64], entry[64], exit[64];
+    std::snprintf(centre, sizeof centre, "(%.2f, %.2f)", mass.circle.xc, mass.circle.yc);
+    std::snprintf(entry, sizeof entry, "(%.2f, %.2f)", mass.entry.x, mass.entry.y);
+    std::snprintf(exit, sizeof exit, "(%.2f, %.2f)", mass.exit.x, mass.exit.y);
+    std::snprintf(line, sizeof line, "%-27s %7.3f  %-19s %8.2f  %-17s %-17s\n", key.c_str(),
+                  *found->result.factor_of_safety, centre, mass.circle.radius, entry, exit);
+    text += line;
+  }
+  std::snprintf(line, sizeof line, "search: %ld trial surfaces in %.3f s\n", result.trial_surfaces, result.seconds);
+  text += line;
+  return text;
+}
+
+}  // namespace coupling
