@@ -1,0 +1,409 @@
+// Scene loading in-process: SI conversion, defaults, what is accepted, errors collected with their JSON paths,
+// the report builder and atomic_write.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "coupling/atomic_write.hpp"
+#include "coupling/json_reader.hpp"
+#include "coupling/report.hpp"
+#include "coupling/scene.hpp"
+#include "coupling/workflow.hpp"
+
+namespace fs = std::filesystem;
+using coupling::parse_scene;
+using coupling::Scene;
+using coupling::SceneError;
+using nlohmann::json;
+
+namespace {
+
+constexpr double degree = std::numbers::pi / 180.0;
+
+// The example of SCENE.md, complete.
+json example_scene() {
+  return json::parse(R"({
+    "format": "sphslope-scene/1",
+    "name": "Homogeneous 2:1 slope",
+    "source": "SCENE.md example",
+    "notes": {"anything": ["goes", 1, null]},
+    "section": {
+      "bottom_y_m": 0.0,
+      "profile_lines": [
+        { "material": "upper", "points_m": [[0, 20], [20, 20], [40, 10], [60, 10]] },
+        { "material": "lower", "points_m": [[0, 15], [60, 15]] }
+      ],
+      "materials": [
+        { "name": "upper", "unit_weight_kN_m3": 20, "cohesion_kPa": 10, "friction_angle_deg": 20,
+          "dilatancy_angle_deg": 0, "youngs_modulus_MPa": 50, "poisson_ratio": 0.3 },
+        { "name": "lower", "unit_weight_kN_m3": 18, "cohesion_kPa": 5, "friction_angle_deg": 10 }
+      ],
+      "water": { "piezometric_line_m": [[0, 18], [60, 9]], "unit_weight_kN_m3": 9.81 },
+      "surcharges": [ { "from_x_m": 2, "to_x_m": 10, "pressure_kPa": 20 } ],
+      "seismic": { "horizontal_coefficient": 0.0 }
+    },
+    "analyses": {
+      "lem": { "methods": ["ordinary", "bishop", "janbu", "spencer", "morgenstern_price"] }
+    }
+  })");
+}
+
+// The lower line of the example crosses the ground surface between x = 20 and 40 (the ground goes down to 10),
+// so the valid variant used here keeps it below: at 8 m.
+json valid_example() {
+  json scene = example_scene();
+  scene["section"]["profile_lines"][1]["points_m"] = json::parse("[[0, 8], [60, 8]]");
+  return scene;
+}
+
+Scene load(const json& document, const fs::path& file = "scenes/example.json") {
+  return parse_scene(document.dump(), file);
+}
+
+std::vector<std::string> errors_of(const json& document) {
+  try {
+    load(document);
+  } catch (const SceneError& error) {
+    return error.messages();
+  }
+  return {};
+}
+
+bool mentions(const std::vector<std::string>& errors, const std::string& text) {
+  for (const std::string& e : errors) {
+    if (e.find(text) != std::string::npos) return true;
+  }
+  return false;
+}
+
+std::string all(const std::vector<std::string>& errors) {
+  std::string out;
+  for (const std::string& e : errors) out += e + "\n";
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("scene: units are converted to SI once", "[scene]") {
+  const Scene scene = load(valid_example());
+  REQUIRE(scene.section);
+  const slope::Section& s = scene.section->section;
+  CHECK(scene.name == "Homogeneous 2:1 slope");
+  CHECK(scene.source == "SCENE.md example");
+  CHECK(s.bottom_y == 0.0);
+  REQUIRE(s.materials.size() == 2);
+  CHECK(s.materials[0].name == "upper");
+  CHECK(s.materials[0].unit_weight == Approx(20000.0));        // kN/m^3 -> N/m^3
+  CHECK(s.materials[0].cohesion == Approx(10000.0));           // kPa -> Pa
+  CHECK(s.materials[0].friction_angle == Approx(20 * degree)); // deg -> rad
+  CHECK(s.materials[1].unit_weight == Approx(18000.0));
+  CHECK(s.materials[1].cohesion == Approx(5000.0));
+  CHECK(s.materials[1].friction_angle == Approx(10 * degree));
+
+  const coupling::SoilMaterial& upper = scene.section->materials[0];
+  REQUIRE(upper.youngs_modulus);
+  CHECK(*upper.youngs_modulus == Approx(50e6));                // MPa -> Pa
+  CHECK(*upper.poisson_ratio == Approx(0.3));
+  CHECK(*upper.dilatancy_angle == Approx(0.0));
+  CHECK(upper.density() == Approx(20000.0 / 9.81));            // kg/m^3
+  CHECK_FALSE(scene.section->materials[1].youngs_modulus);
+
+  REQUIRE(s.profile_lines.size() == 2);
+  CHECK(s.profile_lines[0].material == 0);
+  CHECK(s.profile_lines[1].material == 1);
+  REQUIRE(s.profile_lines[0].points.size() == 4);
+  CHECK(s.profile_lines[0].points[2].x == 40.0);
+  CHECK(s.profile_lines[0].points[2].y == 10.0);
+
+  REQUIRE(s.water);
+  CHECK(s.water->unit_weight == Approx(9810.0));
+  CHECK(s.water->piezometric_line.size() == 2);
+  REQUIRE(s.surcharges.size() == 1);
+  CHECK(s.surcharges[0].from_x == 2.0);
+  CHECK(s.surcharges[0].to_x == 10.0);
+  CHECK(s.surcharges[0].pressure == Approx(20000.0));
+  CHECK(s.seismic_coefficient == 0.0);
+
+  REQUIRE(scene.analyses.lem);
+  const auto& methods = scene.analyses.lem->methods;
+  REQUIRE(methods.size() == 5);
+  CHECK(methods[0] == slope::Method::ordinary);
+  CHECK(methods[4] == slope::Method::morgenstern_price);
+  CHECK_FALSE(scene.analyses.sph);
+}
+
+TEST_CASE("scene: defaults are applied", "[scene]") {
+  json document = valid_example();
+  document.erase("name");
+  document["section"]["water"].erase("unit_weight_kN_m3");
+  document["section"].erase("seismic");
+  document["section"].erase("surcharges");
+  document["analyses"]["lem"] = json::object();
+  const Scene scene = load(document, "somewhere/my_slope.json");
+  CHECK(scene.name == "my_slope");  // the file stem
+  CHECK(scene.file == fs::path("somewhere/my_slope.json"));
+  const slope::Section& s = scene.section->section;
+  CHECK(s.water->unit_weight == Approx(9810.0));
+  CHECK(s.seismic_coefficient == 0.0);
+  CHECK(s.surcharges.empty());
+  REQUIRE(scene.analyses.lem);
+  CHECK(scene.analyses.lem->methods == slope::all_methods());
+  CHECK(scene.analyses.lem->methods.size() == 7);
+  CHECK(scene.analyses.lem->search.slicing.slices == 50);
+  CHECK(scene.analyses.lem->search.refine == true);
+  CHECK_FALSE(scene.analyses.lem->has_search_limits);
+  CHECK_FALSE(scene.analyses.lem->search.limits.entry_x);
+  CHECK_FALSE(scene.analyses.lem->search.limits.exit_x);
+  CHECK_FALSE(scene.analyses.lem->search.limits.centre_grid);
+  CHECK_FALSE(scene.analyses.lem->search.limits.radius);
+}
+
+TEST_CASE("scene: LEM options and search limits are read", "[scene]") {
+  json document = valid_example();
+  document["section"]["seismic"]["horizontal_coefficient"] = 0.15;
+  document["analyses"]["lem"] = json::parse(R"({
+    "methods": ["spencer"], "slices": 30, "refine": false,
+    "search": { "entry_x_m": [2, 18], "exit_x_m": [38, 50],
+                "centre_grid": { "x_m": [25, 45], "y_m": [22, 40], "nx": 8 }, "radius_m": [10, 40] } })");
+  const Scene scene = load(document);
+  const coupling::LemAnalysis& lem = *scene.analyses.lem;
+  CHECK(scene.section->section.seismic_coefficient == Approx(0.15));
+  CHECK(lem.methods == std::vector<slope::Method>{slope::Method::spencer});
+  CHECK(lem.search.slicing.slices == 30);
+  CHECK(lem.search.refine == false);
+  CHECK(lem.has_search_limits);
+  REQUIRE(lem.search.limits.entry_x);
+  CHECK(lem.search.limits.entry_x->min == 2.0);
+  CHECK(lem.search.limits.entry_x->max == 18.0);
+  CHECK(lem.search.limits.exit_x->min == 38.0);
+  REQUIRE(lem.search.limits.centre_grid);
+  CHECK(lem.search.limits.centre_grid->x.max == 45.0);
+  CHECK(lem.search.limits.centre_grid->y.min == 22.0);
+  CHECK(lem.search.limits.centre_grid->nx == 8);
+  CHECK(lem.search.limits.centre_grid->ny == 10);  // default
+  CHECK(lem.search.limits.radius->max == 40.0);
+}
+
+TEST_CASE("scene: what is accepted", "[scene]") {
+  SECTION("water above the ground surface (ponding)") {
+    json document = valid_example();
+    document["section"]["water"]["piezometric_line_m"] = json::parse("[[0, 18], [40, 14], [60, 14]]");
+    CHECK_NOTHROW(load(document));
+  }
+  SECTION("a piezometric line extending beyond the section") {
+    json document = valid_example();
+    document["section"]["water"]["piezometric_line_m"] = json::parse("[[-10, 18], [70, 9]]");
+    CHECK_NOTHROW(load(document));
+  }
+  SECTION("a piezometric line partly below the bottom") {
+    json document = valid_example();
+    document["section"]["water"]["piezometric_line_m"] = json::parse("[[0, 5], [60, -3]]");
+    CHECK_NOTHROW(load(document));
+  }
+  SECTION("profile lines that touch each other and the bottom") {
+    json document = valid_example();
+    document["section"]["profile_lines"][1]["points_m"] = json::parse("[[0, 8], [40, 10], [50, 0], [60, 0]]");
+    CHECK_NOTHROW(load(document));
+  }
+  SECTION("a particle scene: bodies and walls are kept raw") {
+    json document = json::parse(R"({"format": "sphslope-scene/1", "name": "dam break",
+        "bodies": [{"kind": "water", "anything": 1}], "walls": {"box_m": [[0, 0], [4, 3]]},
+        "analyses": {"sph": {"end_time_s": 1}}})");
+    const Scene scene = load(document);
+    CHECK_FALSE(scene.section);
+    REQUIRE(scene.bodies);
+    CHECK((*scene.bodies)[0]["kind"] == "water");
+    REQUIRE(scene.walls);
+    REQUIRE(scene.analyses.sph);
+    CHECK((*scene.analyses.sph)["end_time_s"] == 1);
+  }
+  SECTION("an sph block with the elastic constants, and compare kept raw") {
+    json document = valid_example();
+    document["section"]["materials"][1]["youngs_modulus_MPa"] = 20;
+    document["section"]["materials"][1]["poisson_ratio"] = 0.25;
+    document["analyses"]["sph"] = json::parse(R"({"particle_spacing_m": 0.5, "end_time_s": 2})");
+    document["analyses"]["compare"] = json::parse(R"({"plastic_strain_threshold": 0.1})");
+    const Scene scene = load(document);
+    REQUIRE(scene.analyses.sph);
+    CHECK((*scene.analyses.sph)["particle_spacing_m"] == 0.5);
+    REQUIRE(scene.analyses.compare);
+    CHECK(*scene.section->materials[1].youngs_modulus == Approx(20e6));
+  }
+  SECTION("notes in any object") {
+    json document = valid_example();
+    document["section"]["notes"] = "about the section";
+    document["section"]["materials"][0]["notes"] = {{"lab", "triaxial"}};
+    CHECK_NOTHROW(load(document));
+  }
+  SECTION("whole numbers written as 10.0 for counts") {
+    json document = valid_example();
+    document["analyses"]["lem"]["slices"] = 40.0;
+    CHECK(load(document).analyses.lem->search.slicing.slices == 40);
+  }
+}
+
+TEST_CASE("scene: every fault is reported at once, each with its JSON path", "[scene]") {
+  json document = valid_example();
+  document["section"]["materials"][0]["unit_weight_kN_m3"] = -1;
+  document["section"]["materials"][1]["friction_angle_deg"] = 95;
+  document["section"]["surcharges"][0]["pressure_kPa"] = -3;
+  document["analyses"]["lem"]["methods"] = json::parse(R"(["bishop", "fellenius"])");
+  document["analyses"]["lem"]["refine"] = "yes";
+  document["extra"] = 1;
+  const auto errors = errors_of(document);
+  INFO(all(errors));
+  CHECK(errors.size() == 6);
+  CHECK(mentions(errors, "section.materials[0].unit_weight_kN_m3: must be > 0 (got -1)"));
+  CHECK(mentions(errors, "section.materials[1].friction_angle_deg: must be in [0, 90) (got 95)"));
+  CHECK(mentions(errors, "section.surcharges[0].pressure_kPa: must be >= 0 (got -3)"));
+  CHECK(mentions(errors, "analyses.lem.methods[1]: unknown method \"fellenius\""));
+  CHECK(mentions(errors, "analyses.lem.refine: expected true or false, got a string \"yes\""));
+  CHECK(mentions(errors, "extra: unknown key (allowed here: format, name, source, section, bodies, walls, analyses)"));
+}
+
+TEST_CASE("scene: geometry faults", "[scene]") {
+  SECTION("the lower line of SCENE.md's example, taken literally, rises above the ground surface") {
+    const auto errors = errors_of(example_scene());
+    INFO(all(errors));
+    REQUIRE(errors.size() == 1);
+    CHECK(mentions(errors, "section.profile_lines[1]: rises above the ground surface (profile_lines[0]) at x = 40"));
+  }
+  SECTION("a single line that doubles back is reported at the offending point") {
+    json document = valid_example();
+    document["section"]["profile_lines"][0]["points_m"] = json::parse("[[0, 20], [20, 20], [20, 10], [60, 10]]");
+    const auto errors = errors_of(document);
+    INFO(all(errors));
+    CHECK(mentions(errors, "section.profile_lines[0].points_m[2]: x must increase (got 20 after 20"));
+  }
+  SECTION("a point that is not a pair") {
+    json document = valid_example();
+    document["section"]["profile_lines"][0]["points_m"][1] = json::parse("[20, 20, 5]");
+    const auto errors = errors_of(document);
+    INFO(all(errors));
+    CHECK(mentions(errors, "section.profile_lines[0].points_m[1]: expected a point [x_m, y_m]"));
+  }
+  SECTION("no soil above the bottom") {
+    json document = valid_example();
+    document["section"]["profile_lines"] = json::parse(R"([{"material": "upper", "points_m": [[0, 0], [60, 0]]}])");
+    const auto errors = errors_of(document);
+    INFO(all(errors));
+    CHECK(mentions(errors, "section.bottom_y_m: must be below the ground surface"));
+  }
+  SECTION("a surcharge reaching beyond the section") {
+    json document = valid_example();
+    document["section"]["surcharges"][0]["to_x_m"] = 61;
+    CHECK(mentions(errors_of(document), "section.surcharges[0]: must lie on the section (x 0 to 60 m)"));
+  }
+}
+
+TEST_CASE("scene: syntax errors give line and column", "[scene]") {
+  try {
+    parse_scene("{\n  \"format\": \"sphslope-scene/1\",\n  \"name\": oops\n}\n");
+    FAIL("no error");
+  } catch (const SceneError& error) {
+    REQUIRE(error.messages().size() == 1);
+    INFO(error.messages()[0]);
+    CHECK(error.messages()[0].find("JSON syntax error at line 3, column") != std::string::npos);
+  }
+}
+
+TEST_CASE("json reader: unknown keys suggest the closest known one", "[scene]") {
+  coupling::Diagnostics diagnostics;
+  const json value = json::parse(R"({"frictoin_angle_deg": 1, "notes": "x", "zzz": 2})");
+  coupling::JsonReader reader(value, "m", diagnostics);
+  reader.number("friction_angle_deg", coupling::Need::optional);
+  reader.number("cohesion_kPa", coupling::Need::optional);
+  reader.finish();
+  REQUIRE(diagnostics.size() == 2);
+  CHECK(diagnostics.messages()[0] ==
+        "m.frictoin_angle_deg: unknown key (did you mean \"friction_angle_deg\"? allowed here: friction_angle_deg, "
+        "cohesion_kPa)");
+  CHECK(diagnostics.messages()[1] == "m.zzz: unknown key (allowed here: friction_angle_deg, cohesion_kPa)");
+}
+
+TEST_CASE("atomic_write replaces the file and leaves no temporary behind", "[io]") {
+  const fs::path folder = fs::temp_directory_path() / ("sphslope-atomic-" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const fs::path file = folder / "report.json";
+  coupling::atomic_write(file, "first");
+  coupling::atomic_write(file, "second, longer content\n");
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  CHECK(text.str() == "second, longer content\n");
+  CHECK(std::distance(fs::directory_iterator(folder), fs::directory_iterator()) == 1);
+  CHECK_THROWS_AS(coupling::atomic_write(folder / "missing" / "x.json", "x"), std::system_error);
+  fs::remove_all(folder);
+}
+
+TEST_CASE("report: a critical surface in report units", "[report]") {
+  slope::Section section;
+  section.materials.push_back({"clay", 18000.0, 12000.0, 25 * degree});
+  slope::CriticalSurface critical;
+  critical.method = slope::Method::spencer;
+  slope::SlipMass mass;
+  mass.circle = {10.0, 20.0, 15.0};
+  mass.entry = {1.0, 10.0};
+  mass.exit = {20.0, 2.0};
+  slope::Slice slice;
+  slice.x_left = 1.0;
+  slice.x_right = 2.0;
+  slice.width = 1.0;
+  slice.base_angle = 30 * degree;
+  slice.base_length = 1.1547;
+  slice.weight = 36000.0;
+  slice.surcharge_load = 5000.0;
+  slice.cohesion = 12000.0;
+  slice.tan_friction = std::tan(25 * degree);
+  slice.pore_pressure = 9810.0;
+  mass.slices.push_back(slice);
+  critical.mass = mass;
+  critical.result.factor_of_safety = 1.25;
+  critical.result.lambda = 0.3;
+  slope::SliceForces forces;
+  forces.normal = 40000.0;
+  forces.shear = 15000.0;
+  forces.interslice_normal_right = 2000.0;
+  forces.interslice_shear_right = 600.0;
+  critical.result.forces.push_back(forces);
+
+  const json m = coupling::method_report(section, critical);
+  CHECK(m["factor_of_safety"] == 1.25);
+  CHECK(m["lambda"] == 0.3);
+  CHECK(m["surface"]["type"] == "circle");
+  CHECK(m["surface"]["center_m"] == json::parse("[10.0, 20.0]"));
+  CHECK(m["surface"]["radius_m"] == 15.0);
+  CHECK(m["surface"]["entry_m"] == json::parse("[1.0, 10.0]"));
+  CHECK(m["surface"]["exit_m"] == json::parse("[20.0, 2.0]"));
+  REQUIRE(m["slices"].size() == 1);
+  const json& s = m["slices"][0];
+  CHECK(s["weight_kN_m"].get<double>() == Approx(36.0));
+  CHECK(s["surcharge_kN_m"].get<double>() == Approx(5.0));
+  CHECK(s["base_angle_deg"].get<double>() == Approx(30.0));
+  CHECK(s["friction_angle_deg"].get<double>() == Approx(25.0));
+  CHECK(s["cohesion_kPa"].get<double>() == Approx(12.0));
+  CHECK(s["pore_pressure_kPa"].get<double>() == Approx(9.81));
+  CHECK(s["normal_force_kN_m"].get<double>() == Approx(40.0));
+  CHECK(s["shear_force_kN_m"].get<double>() == Approx(15.0));
+  CHECK(s["interslice_normal_right_kN_m"].get<double>() == Approx(2.0));
+  CHECK(s["interslice_shear_right_kN_m"].get<double>() == Approx(0.6));
+  CHECK(s["material"] == "clay");
+
+  SECTION("a method that failed everywhere reports null and the reason, never a number") {
+    slope::CriticalSurface failed;
+    failed.method = slope::Method::bishop;
+    failed.result.error = "no convergence";
+    const json f = coupling::method_report(section, failed);
+    CHECK(f["factor_of_safety"].is_null());
+    CHECK(f["error"] == "no convergence");
+    CHECK_FALSE(f.contains("lambda"));
+  }
+}
