@@ -236,6 +236,13 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file) {
     document = nlohmann::json::parse(text.begin(), text.end(), DuplicateKeyCheck(diagnostics), true, false);
   } catch (const nlohmann::json::parse_error& error) {
     throw SceneError({syntax_error_message(text, error)});
+  } catch (const nlohmann::json::exception& error) {
+    // e.g. out_of_range.406 "number overflow parsing '1e400'" (no position is available for these).
+    std::string detail = error.what();
+    if (const auto bracket = detail.find("] "); detail.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) {
+      detail = detail.substr(bracket + 2);
+    }
+    throw SceneError({"invalid JSON: " + detail});
   }
   if (!diagnostics.empty()) {
     // Report duplicates together with whatever else is wrong.

@@ -224,7 +224,17 @@ std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& re
   }
   std::snprintf(line, sizeof line, "search: %ld trial surfaces in %.3f s\n", result.trial_surfaces, result.seconds);
   text += line;
-  return text;
+  // No trailing blanks at the ends of the padded lines.
+  std::string trimmed;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    std::string row = text.substr(start, end - start);
+    row.erase(row.find_last_not_of(' ') + 1);
+    trimmed += row + "\n";
+    start = end + 1;
+  }
+  return trimmed;
 }
 
 }  // namespace coupling
