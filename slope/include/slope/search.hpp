@@ -33,6 +33,9 @@ struct SearchOptions {
   SearchLimits limits;
   SliceOptions slicing;
   bool refine = true;  // Nelder-Mead refinement of the best trial surfaces
+  // Added: smallest admissible slip mass, as its largest vertical thickness (m). Negative: automatic, 2 % of the
+  // ground surface relief (keeps cohesionless slopes from converging to vanishing surface ravelling).
+  double minimum_depth = -1.0;
 };
 
 // One trial surface of the coarse search, for the factor-of-safety map.

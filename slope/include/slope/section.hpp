@@ -57,4 +57,9 @@ struct Section {
 // Height of a polyline (x strictly increasing) at x, linear between vertices, constant beyond the ends.
 double polyline_y(const std::vector<Point>& line, double x);
 
+// Empty when the section can be analysed; otherwise a sentence saying what is wrong with it (profile lines not
+// strictly increasing in x or not spanning the same range, a line above the ground or below bottom_y, a missing
+// material, a non-positive unit weight, ...).
+std::string section_error(const Section& section);
+
 }  // namespace slope

@@ -14,7 +14,8 @@ struct Circle {
   double radius = 0.0;  // m
 };
 
-// One slice of the sliding mass. Angles are measured so that a positive base angle drives the mass in the
+// One slice of the sliding mass. Slices are listed left to right (increasing x) whatever the direction of sliding.
+// Angles are measured so that a positive base angle drives the mass in the
 // direction of sliding (the mass slides toward +x when SlipMass::direction = +1, toward -x when -1).
 struct Slice {
   double x_left = 0.0;           // m
@@ -32,6 +33,11 @@ struct Slice {
   double tan_friction = 0.0;     // tan(phi') of the material at the base
   double pore_pressure = 0.0;    // Pa, at the base midpoint
   std::size_t base_material = 0; // index into Section::materials
+  // Added for the methods (zero when there is no water / no seismic load):
+  double seismic_force = 0.0;    // N/m, kh * weight, horizontal, in the direction of sliding, acting at mid-height
+                                 // of the slice ((base_y + top_y) / 2: centroid approximated at mid-height)
+  double water_thrust = 0.0;     // N/m, horizontal component of the free-water pressure on the sloping slice top,
+                                 // positive in the direction of sliding, acting at (base_x, top_y)
 };
 
 struct SlipMass {

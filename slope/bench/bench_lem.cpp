@@ -1,0 +1,95 @@
+// bench-lem: limit-equilibrium throughput on one core.
+//   trial circles per second (slicing + factor of safety together, 50 slices) for Bishop, Spencer and
+//   Morgenstern-Price on the homogeneous Griffiths & Lane (1999) slope, and the wall time of the default critical
+//   search with refinement. A benchmark program, not a test: it prints figures (docs/performance.md).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "slope/evaluator.hpp"
+#include "slope/search.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+slope::Section griffiths_lane() {
+  slope::Section s;
+  s.bottom_y = 0.0;
+  s.materials.push_back({"soil", 20e3, 10e3, 20.0 * M_PI / 180.0});
+  s.profile_lines.push_back({0, {{0, 20}, {20, 20}, {40, 10}, {60, 10}}});
+  return s;
+}
+
+// Trial circles scattered around the critical one, all admissible for every method measured.
+std::vector<slope::Circle> trial_circles(const slope::Section& section, int count) {
+  slope::CircleEvaluator evaluator(section);
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> xc(28.0, 42.0), yc(24.0, 40.0), depth(0.5, 8.0);
+  std::vector<slope::Circle> circles;
+  while (static_cast<int>(circles.size()) < count) {
+    const double x = xc(rng), y = yc(rng);
+    // radius so that the circle reaches `depth` below the slope face line near its centre
+    const slope::Circle c{x, y, y - 10.0 + depth(rng) * 0.5};
+    if (evaluator.factor_of_safety(c, slope::Method::bishop) && evaluator.factor_of_safety(c, slope::Method::spencer) &&
+        evaluator.factor_of_safety(c, slope::Method::morgenstern_price))
+      circles.push_back(c);
+  }
+  return circles;
+}
+
+void throughput(const char* name, slope::Method method, const slope::Section& section,
+                const std::vector<slope::Circle>& circles) {
+  slope::CircleEvaluator evaluator(section, slope::SliceOptions{50});
+  long evaluated = 0, slices = 0;
+  double checksum = 0.0;
+  const auto start = Clock::now();
+  double seconds = 0.0;
+  do {
+    for (const slope::Circle& c : circles) {
+      if (auto fs = evaluator.factor_of_safety(c, method)) checksum += *fs;
+      slices += evaluator.last_slice_count();
+      ++evaluated;
+    }
+    seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  } while (seconds < 1.5);
+  std::printf("%-28s %10.0f trial circles/s  (%.1f slices per circle, %ld circles, mean FS %.4f)\n", name,
+              evaluated / seconds, static_cast<double>(slices) / evaluated, evaluated, checksum / evaluated);
+}
+
+void search_time(const char* name, const std::vector<slope::Method>& methods, const slope::Section& section) {
+  std::vector<double> times;
+  slope::SearchResult last;
+  for (int run = 0; run < 7; ++run) {
+    const auto start = Clock::now();
+    last = slope::search_critical(section, methods, slope::SearchOptions{});
+    times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  std::sort(times.begin(), times.end());
+  std::printf("%-28s median %.4f s (min %.4f s) over 7 runs, %ld FS evaluations;", name, times[times.size() / 2],
+              times.front(), last.trial_surfaces);
+  for (const slope::CriticalSurface& c : last.methods)
+    std::printf(" %s %.4f", std::string(slope::method_key(c.method)).c_str(),
+                c.result.factor_of_safety.value_or(std::nan("")));
+  std::printf("\n");
+}
+
+}  // namespace
+
+int main() {
+  const slope::Section section = griffiths_lane();
+  std::printf("bench-lem: Griffiths & Lane (1999) homogeneous slope (H = 10 m, 2:1, c' = 10 kPa, phi' = 20 deg), "
+              "one core\n");
+  const std::vector<slope::Circle> circles = trial_circles(section, 2000);
+  throughput("Bishop simplified", slope::Method::bishop, section, circles);
+  throughput("Spencer", slope::Method::spencer, section, circles);
+  throughput("Morgenstern-Price half-sine", slope::Method::morgenstern_price, section, circles);
+  throughput("Ordinary", slope::Method::ordinary, section, circles);
+  throughput("Janbu simplified", slope::Method::janbu, section, circles);
+  search_time("default search, Bishop", {slope::Method::bishop}, section);
+  search_time("default search, all methods", slope::all_methods(), section);
+  return 0;
+}

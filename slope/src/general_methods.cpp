@@ -1,0 +1,220 @@
+// Spencer and Morgenstern-Price: force and moment equilibrium with interslice shear X = lambda f(x) E.
+// Formulation and sign conventions: docs/lem-methods.md.
+//
+// Slices are swept from the entry (upper end) to the exit in the mirrored frame (sliding toward +x'). At each
+// interface E is the (compressive) normal force and X the shear force, X acting upward on the upslope slice and
+// downward on the downslope slice; X = lambda f E, so lambda > 0 in the usual case where the downslope part holds
+// the upslope part up. Slice i receives E_L (+x') and X_L (downward) on its upslope face and -E_R, X_R (upward)
+// on its downslope face. Vertical equilibrium
+//     (N' + U) cos a + S sin a = V + X_L - X_R,       S = (c' l + N' tan phi') / F,
+// gives N' = (A0 - X_R) / m_a with A0 = V + X_L - U cos a - c' l sin a / F; horizontal equilibrium
+//     E_R = E_L + H + (N' + U) sin a - S cos a
+// with X_R = lambda f_R E_R is linear in E_R and solved slice by slice (the standard recursion, cf. Zhu, Lee, Qian
+// & Chen 2005). Two residuals in (F, lambda):
+//     r1 = E at the exit / sum(V)                          (horizontal force equilibrium of the whole mass)
+//     r2 = sum(d S) / M_drive - 1                          (moment equilibrium about the circle centre)
+// are solved with GSL's hybrid (Powell dogleg) multiroot solver in (ln F, lambda), which keeps F positive.
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multiroots.h>
+
+#include <cmath>
+#include <mutex>
+
+#include "method_kernels.hpp"
+
+namespace slope::detail {
+
+namespace {
+
+struct Sweep {
+  double end_force = 0.0;  // E after the last slice
+  double resisting_moment = 0.0;  // sum d (c' l + N' tan phi')
+  bool finite = true;
+};
+
+// One pass over the slices. f[k]: interslice function at the downslope boundary of the k-th slice from the entry.
+// When `forces` is given, the slice forces are written there (index = slice index, left to right).
+Sweep sweep(const SliceTable& t, const double* f, double F, double lambda, SliceForces* forces) {
+  Sweep out;
+  const int n = t.count;
+  const double inv_f = 1.0 / F;
+  double e_left = 0.0, x_left = 0.0, moment = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const int i = t.direction > 0 ? k : n - 1 - k;
+    const double c = t.cos_a[i];
+    const double s = t.sin_a[i];
+    const double tp = t.tan_phi[i];
+    const double cl = t.cohesion_force[i];
+    const double U = t.pore_force[i];
+    const double inv_m = 1.0 / (c + s * tp * inv_f);
+    const double a0 = t.vertical[i] + x_left - U * c - cl * s * inv_f;
+    const double kk = (s - tp * c * inv_f) * inv_m;
+    const double lf = lambda * f[k];
+    const double numerator = e_left + t.horizontal[i] + U * s - cl * c * inv_f + a0 * kk;
+    const double e_right = numerator / (1.0 + lf * kk);
+    const double x_right = lf * e_right;
+    const double effective_normal = (a0 - x_right) * inv_m;
+    const double available = cl + effective_normal * tp;
+    moment += t.shear_arm[i] * available;
+    if (forces != nullptr) {
+      SliceForces& sf = forces[i];
+      sf.normal = effective_normal + U;
+      sf.shear = available * inv_f;
+      sf.pore_force = U;
+      // reported on the right-hand side of the slice (increasing x), as pushed by the left-hand slice
+      if (t.direction > 0) {
+        sf.interslice_normal_right = e_right;
+        sf.interslice_shear_right = x_right;
+      } else {
+        // for a mass sliding toward -x the sweep runs right to left: the right side of slice i carries the
+        // upslope force E_L, X_L of this sweep step
+        sf.interslice_normal_right = e_left;
+        sf.interslice_shear_right = x_left;
+      }
+    }
+    e_left = e_right;
+    x_left = x_right;
+  }
+  out.end_force = e_left;
+  out.resisting_moment = moment;
+  out.finite = std::isfinite(e_left) && std::isfinite(moment);
+  return out;
+}
+
+struct Problem {
+  const SliceTable* table;
+  const double* f;
+  double force_scale;
+};
+
+int residual(const gsl_vector* x, void* params, gsl_vector* r) {
+  const Problem& p = *static_cast<const Problem*>(params);
+  const double F = std::exp(gsl_vector_get(x, 0));
+  const double lambda = gsl_vector_get(x, 1);
+  if (!std::isfinite(F) || !std::isfinite(lambda)) return GSL_EBADFUNC;
+  const Sweep s = sweep(*p.table, p.f, F, lambda, nullptr);
+  if (!s.finite) return GSL_EBADFUNC;
+  gsl_vector_set(r, 0, s.end_force / p.force_scale);
+  gsl_vector_set(r, 1, s.resisting_moment / (F * p.table->total_drive_moment) - 1.0);
+  return GSL_SUCCESS;
+}
+
+void fill_interface_function(const SliceTable& t, bool half_sine, std::vector<double>& f) {
+  const int n = t.count;
+  if (f.size() < static_cast<std::size_t>(n)) f.resize(static_cast<std::size_t>(n) * 2);
+  const double x_entry = t.entry.x;
+  const double span = t.exit.x - t.entry.x;
+  for (int k = 0; k < n; ++k) {
+    if (!half_sine) {
+      f[k] = 1.0;
+      continue;
+    }
+    const int i = t.direction > 0 ? k : n - 1 - k;
+    const double x_boundary = t.direction > 0 ? t.x_right[i] : t.x_left[i];  // downslope boundary
+    const double fraction = (x_boundary - x_entry) / span;
+    f[k] = std::sin(M_PI * fraction);
+  }
+  if (half_sine) f[n - 1] = 0.0;  // the exit
+}
+
+}  // namespace
+
+MethodWorkspace::MethodWorkspace() {
+  static std::once_flag once;
+  // GSL's default error handler aborts the program; the library reports failures through return codes instead.
+  std::call_once(once, [] { gsl_set_error_handler_off(); });
+}
+
+MethodWorkspace::~MethodWorkspace() {
+  if (solver != nullptr) gsl_multiroot_fsolver_free(solver);
+  if (start != nullptr) gsl_vector_free(start);
+}
+
+Outcome general_limit_equilibrium(const SliceTable& t, MethodWorkspace& ws, bool half_sine, double guess) {
+  Outcome out;
+  if (!t.driven()) {
+    out.failure = Failure::no_driving_moment;
+    return out;
+  }
+  if (!(guess > 0.0) || !std::isfinite(guess)) {
+    const Outcome bishop = bishop_method(t, ws);
+    guess = bishop.ok() ? bishop.factor_of_safety : 1.0;
+  }
+  fill_interface_function(t, half_sine, ws.interface_function);
+  double force_scale = 0.0;
+  for (int i = 0; i < t.count; ++i) force_scale += std::fabs(t.vertical[i]) + std::fabs(t.horizontal[i]);
+  Problem problem{&t, ws.interface_function.data(), force_scale > 0.0 ? force_scale : 1.0};
+  if (ws.solver == nullptr) {
+    ws.solver = gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, 2);
+    ws.start = gsl_vector_alloc(2);
+  }
+  gsl_multiroot_function function{&residual, 2, &problem};
+  gsl_vector_set(ws.start, 0, std::log(guess));
+  gsl_vector_set(ws.start, 1, 0.0);
+  if (gsl_multiroot_fsolver_set(ws.solver, &function, ws.start) != GSL_SUCCESS) {
+    out.failure = Failure::singular_recursion;
+    return out;
+  }
+  int status = GSL_CONTINUE;
+  int it = 0;
+  while (status == GSL_CONTINUE && it < 100) {
+    ++it;
+    const int step = gsl_multiroot_fsolver_iterate(ws.solver);
+    if (step == GSL_EBADFUNC) {
+      out.failure = Failure::singular_recursion;
+      out.iterations = it;
+      return out;
+    }
+    status = gsl_multiroot_test_residual(ws.solver->f, 1e-10);
+    if (status == GSL_CONTINUE && step != GSL_SUCCESS) break;  // no progress
+  }
+  out.iterations = it;
+  if (status != GSL_SUCCESS) {
+    out.failure = Failure::not_converged;
+    return out;
+  }
+  const double F = std::exp(gsl_vector_get(ws.solver->x, 0));
+  const double lambda = gsl_vector_get(ws.solver->x, 1);
+  if (!(F > 0.0) || !std::isfinite(F)) {
+    out.failure = Failure::not_positive;
+    return out;
+  }
+  if (!(std::fabs(lambda) <= maximum_lambda)) {  // a root beyond the poles of the recursion: not physical
+    out.failure = Failure::lambda_out_of_range;
+    out.value = lambda;
+    return out;
+  }
+  // Whitman & Bailey (1967) check at the solution, and a sane recursion (1 + lambda f k / m_a must stay positive:
+  // otherwise the interslice forces change sign through a pole).
+  const int n = t.count;
+  for (int k = 0; k < n; ++k) {
+    const int i = t.direction > 0 ? k : n - 1 - k;
+    const double c = t.cos_a[i];
+    const double s = t.sin_a[i];
+    const double m = c + s * t.tan_phi[i] / F;
+    if (s < 0.0 && m < minimum_m_alpha) {
+      out.failure = Failure::m_alpha;
+      out.slice = i;
+      out.value = m;
+      return out;
+    }
+    const double kk = (s - t.tan_phi[i] * c / F) / m;
+    if (1.0 + lambda * ws.interface_function[k] * kk <= 0.0) {
+      out.failure = Failure::singular_recursion;
+      out.slice = i;
+      return out;
+    }
+  }
+  out.factor_of_safety = F;
+  out.lambda = lambda;
+  return out;
+}
+
+void general_forces(const SliceTable& t, MethodWorkspace& ws, bool half_sine, double F, double lambda,
+                    std::vector<SliceForces>& forces) {
+  fill_interface_function(t, half_sine, ws.interface_function);
+  forces.assign(static_cast<std::size_t>(t.count), SliceForces{});
+  sweep(t, ws.interface_function.data(), F, lambda, forces.data());
+}
+
+}  // namespace slope::detail

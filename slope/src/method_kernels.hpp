@@ -1,0 +1,71 @@
+#pragma once
+// Internal: the methods of slices on a SliceTable, without allocation per call once the workspace has grown.
+#include <gsl/gsl_multiroots.h>
+
+#include <string>
+#include <vector>
+
+#include "slice_table.hpp"
+#include "slope/methods.hpp"
+
+namespace slope::detail {
+
+enum class Failure {
+  none,
+  no_driving_moment,   // the loads do not drive the mass toward the exit
+  no_driving_force,    // force methods: the net driving force is not positive
+  m_alpha,             // m_alpha < 0.2 on a slice with a negative base angle (Whitman & Bailey 1967)
+  not_converged,       // the iteration did not converge
+  not_positive,        // the solution is not a positive finite number
+  singular_recursion,  // Spencer / Morgenstern-Price: the interslice force recursion broke down
+  lambda_out_of_range, // Spencer / Morgenstern-Price: |lambda| > maximum_lambda (non-physical root)
+};
+
+struct Outcome {
+  double factor_of_safety = 0.0;
+  double lambda = 0.0;
+  int iterations = 0;
+  Failure failure = Failure::none;
+  int slice = -1;      // slice index (left to right) the failure refers to, if any
+  double value = 0.0;  // the offending value (m_alpha, ...)
+  bool ok() const { return failure == Failure::none; }
+};
+
+// Whitman & Bailey (1967): a surface is rejected when m_alpha = cos(a) + sin(a) tan(phi') / F < 0.2 on a slice.
+inline constexpr double minimum_m_alpha = 0.2;
+// Spencer / Morgenstern-Price roots with |lambda| above this (interslice resultant steeper than about 72 degrees
+// where f = 1) lie beyond the poles of the interslice recursion and are rejected as non-physical.
+inline constexpr double maximum_lambda = 3.0;
+
+// Scratch buffers and the GSL multiroot solver, reused between trials (one per thread).
+class MethodWorkspace {
+ public:
+  MethodWorkspace();
+  ~MethodWorkspace();
+  MethodWorkspace(const MethodWorkspace&) = delete;
+  MethodWorkspace& operator=(const MethodWorkspace&) = delete;
+
+  std::vector<double> numerator, friction_term, interface_function;
+  gsl_multiroot_fsolver* solver = nullptr;
+  gsl_vector* start = nullptr;
+};
+
+Outcome ordinary_method(const SliceTable& table);
+Outcome bishop_method(const SliceTable& table, MethodWorkspace& ws);
+Outcome janbu_method(const SliceTable& table, MethodWorkspace& ws);
+// Janbu's empirical correction factor f0 = 1 + b1 (d/L - 1.4 (d/L)^2) for this mass.
+double janbu_correction_factor(const SliceTable& table);
+// Spencer (half_sine = false: f = 1) or Morgenstern-Price with the half-sine interslice function.
+// guess: starting factor of safety (e.g. Bishop's); <= 0 to let the method pick one.
+Outcome general_limit_equilibrium(const SliceTable& table, MethodWorkspace& ws, bool half_sine, double guess);
+
+// Dispatch; guess as above (used by Spencer and Morgenstern-Price only).
+Outcome evaluate_method(const SliceTable& table, Method method, MethodWorkspace& ws, double guess = 0.0);
+
+// Slice forces at a solution.
+void slice_forces(const SliceTable& table, Method method, const Outcome& outcome, MethodWorkspace& ws,
+                  std::vector<SliceForces>& forces);
+
+std::string describe_failure(const Outcome& outcome, const SliceTable& table);
+
+}  // namespace slope::detail

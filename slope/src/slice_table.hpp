@@ -1,0 +1,123 @@
+#pragma once
+// Internal: the slices of one slip mass in structure-of-arrays form, and the slicer that fills it without
+// allocating per trial circle. The public slice_circle() and factor_of_safety() go through the same code.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "slope/section.hpp"
+#include "slope/slices.hpp"
+
+namespace slope::detail {
+
+// Why a circle is not an admissible slip surface.
+enum class Rejection {
+  none,
+  invalid_circle,        // radius not positive / not finite
+  misses_ground,         // the lower arc does not cut into the ground
+  not_closed_lower_arc,  // the ground stays above the circle's lowest half: no closed mass on the lower arc
+  beyond_section,        // the mass would extend past the left or right end of the section
+  several_masses,        // the circle cuts the ground surface more than twice
+  below_base,            // the arc passes below the rigid base bottom_y
+  too_small,             // the mass is vanishingly small
+};
+const char* rejection_text(Rejection rejection);
+
+// Slices of one mass, ordered left to right (increasing x). Primitive fields mirror slope::Slice; the derived
+// fields are what the methods use and are computed in exactly one place, compute_loads().
+struct SliceTable {
+  int count = 0;
+  Circle circle;
+  Point entry;
+  Point exit;
+  int direction = 1;
+  double max_depth = 0.0;  // m, largest vertical thickness of the mass at a slice centre line
+
+  // primitive, per slice
+  std::vector<double> x_left, x_right, width, sin_a, cos_a, base_length, base_x, base_y, top_y;
+  std::vector<double> weight, surcharge, ponded, water_thrust, seismic;
+  std::vector<double> cohesion, tan_phi, pore_pressure;
+  std::vector<std::size_t> material;
+  // derived, per slice
+  std::vector<double> cohesion_force;  // c' l
+  std::vector<double> pore_force;      // U = u l
+  std::vector<double> vertical;        // V = W + surcharge + ponded water, downward
+  std::vector<double> horizontal;      // H = kh W + water thrust, in the sliding direction
+  std::vector<double> drive_moment;    // moment of V and H about the centre, positive when it drives sliding
+  std::vector<double> shear_arm;       // distance from the centre to the base chord
+  double total_drive_moment = 0.0;
+  double drive_moment_scale = 0.0;  // sum of |moments|: a total below 1e-9 of it counts as no driving moment
+  bool driven() const { return total_drive_moment > 1e-9 * drive_moment_scale; }
+
+  void resize(int n);  // sets count; grows the buffers only when needed
+  void compute_loads();
+};
+
+// Section data arranged for fast repeated slicing.
+struct PreparedSection {
+  double x_min = 0.0, x_max = 0.0, bottom_y = 0.0;
+  double ground_y_min = 0.0, ground_y_max = 0.0;
+  std::vector<Point> ground;
+  // profile lines ordered from the top (the ground surface) down; they may touch but not cross
+  std::vector<const std::vector<Point>*> lines;
+  std::vector<double> line_unit_weight, line_cohesion, line_tan_phi;
+  std::vector<std::size_t> line_material;
+  bool has_water = false;
+  std::vector<Point> piezometric_line;
+  double water_unit_weight = 0.0;
+  std::vector<Surcharge> surcharges;
+  double seismic_coefficient = 0.0;
+  // x of every profile-line and piezometric-line vertex, surcharge end and piezometric line / ground crossing
+  std::vector<double> fixed_breaks;
+  // x of the ground vertices that lie on the rigid base (e.g. the toe of a slope standing on a firm base): no soil
+  // on one side, so a slip surface may end there
+  std::vector<double> base_contacts;
+
+  explicit PreparedSection(const Section& section);
+  double ground_at(double x) const;
+};
+
+// Heights of a polyline at non-decreasing x, O(1) amortised per query.
+struct PolylineCursor {
+  const std::vector<Point>* line = nullptr;
+  std::size_t segment = 0;
+  void reset(const std::vector<Point>& l) {
+    line = &l;
+    segment = 0;
+  }
+  double y(double x) {
+    const std::vector<Point>& p = *line;
+    const std::size_t last = p.size() - 1;
+    if (x <= p.front().x) return p.front().y;
+    if (x >= p.back().x) return p.back().y;
+    while (segment + 1 < last && p[segment + 1].x < x) ++segment;
+    const Point& a = p[segment];
+    const Point& b = p[segment + 1];
+    return a.y + (x - a.x) * (b.y - a.y) / (b.x - a.x);
+  }
+};
+
+// Appends to `out` the x of every point where the lower half of the circle cuts the polyline strictly inside
+// (x_from, x_to).
+void lower_arc_crossings(const std::vector<Point>& line, const Circle& circle, double x_from, double x_to,
+                         std::vector<double>& out);
+
+class Slicer {
+ public:
+  explicit Slicer(const Section& section) : prepared_(section) {}
+  const PreparedSection& prepared() const { return prepared_; }
+  // Fills `table` with the slices of the mass above `circle`. No allocation once the buffers have grown.
+  Rejection slice(const Circle& circle, int target_slices, SliceTable& table);
+
+ private:
+  PreparedSection prepared_;
+  std::vector<double> roots_, breaks_, bounds_, arc_y_, ground_y_, line_y_;
+  std::vector<char> root_is_contact_;
+  std::vector<PolylineCursor> line_cursors_;
+};
+
+// Conversions between the table and the public SlipMass (one place each).
+void table_to_mass(const SliceTable& table, SlipMass& mass);
+void mass_to_table(const SlipMass& mass, SliceTable& table);
+
+}  // namespace slope::detail

@@ -1,0 +1,499 @@
+// Slicing the mass above a circular slip surface.
+//
+// Geometry: the slip surface is the lower half of the circle. The mass is the single region where the ground
+// surface lies above the arc. Slice boundaries are put at every profile-line vertex, piezometric-line vertex,
+// surcharge end, piezometric-line/ground crossing and at every point where a profile line (a material change)
+// or the piezometric line crosses the arc inside the mass; the intervals between these are divided into
+// near-equal slices so that the total is close to the target. Inside a slice the ground, every profile line and
+// the piezometric line are therefore straight, so areas and water loads evaluated at the slice centre line are
+// exact; the base is the chord of the arc between the slice boundaries (its normal at the chord midpoint passes
+// through the circle centre).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "slice_table.hpp"
+#include "slope/slices.hpp"
+
+namespace slope::detail {
+
+const char* rejection_text(Rejection rejection) {
+  switch (rejection) {
+    case Rejection::none: return "admissible";
+    case Rejection::invalid_circle: return "the circle radius is not a positive finite number";
+    case Rejection::misses_ground: return "the circle does not cut into the ground surface";
+    case Rejection::not_closed_lower_arc:
+      return "the ground surface stays above the circle's lower half (no closed mass on the lower arc)";
+    case Rejection::beyond_section: return "the slip mass would extend beyond the end of the section";
+    case Rejection::several_masses: return "the circle cuts the ground surface more than twice";
+    case Rejection::below_base: return "the circle passes below the rigid base (bottom_y)";
+    case Rejection::too_small: return "the slip mass is vanishingly small";
+  }
+  return "unknown";
+}
+
+void SliceTable::resize(int n) {
+  count = n;
+  if (static_cast<std::size_t>(n) <= x_left.size()) return;
+  const std::size_t capacity = static_cast<std::size_t>(n) + static_cast<std::size_t>(n) / 2 + 8;
+  for (std::vector<double>* v :
+       {&x_left, &x_right, &width, &sin_a, &cos_a, &base_length, &base_x, &base_y, &top_y, &weight, &surcharge,
+        &ponded, &water_thrust, &seismic, &cohesion, &tan_phi, &pore_pressure, &cohesion_force, &pore_force,
+        &vertical, &horizontal, &drive_moment, &shear_arm}) {
+    v->resize(capacity);
+  }
+  material.resize(capacity);
+}
+
+// The loads of every method, from the primitive slice data. Moments are about the circle centre, in a frame
+// mirrored so that sliding is toward +x' (x' = direction * (x - xc), y' = y - yc); a moment is positive when it
+// drives sliding (anticlockwise in the mirrored frame).
+void SliceTable::compute_loads() {
+  const double xc = circle.xc;
+  const double yc = circle.yc;
+  const double dir = direction >= 0 ? 1.0 : -1.0;
+  double total = 0.0, scale = 0.0;
+  for (int i = 0; i < count; ++i) {
+    cohesion_force[i] = cohesion[i] * base_length[i];
+    pore_force[i] = pore_pressure[i] * base_length[i];
+    vertical[i] = weight[i] + surcharge[i] + ponded[i];
+    horizontal[i] = seismic[i] + water_thrust[i];
+    const double x_arm = dir * (base_x[i] - xc);            // vertical loads act on the slice centre line
+    const double y_mid = 0.5 * (base_y[i] + top_y[i]) - yc;  // seismic force at mid-height
+    const double y_top = top_y[i] - yc;                      // water thrust at the slice top
+    const double m = -x_arm * vertical[i] - y_mid * seismic[i] - y_top * water_thrust[i];
+    drive_moment[i] = m;
+    total += m;
+    scale += std::fabs(x_arm * vertical[i]) + std::fabs(y_mid * seismic[i]) + std::fabs(y_top * water_thrust[i]);
+    const double dx = base_x[i] - xc;
+    const double dy = base_y[i] - yc;
+    shear_arm[i] = std::sqrt(dx * dx + dy * dy);
+  }
+  total_drive_moment = total;
+  drive_moment_scale = scale;
+}
+
+PreparedSection::PreparedSection(const Section& section) {
+  x_min = section.x_min();
+  x_max = section.x_max();
+  bottom_y = section.bottom_y;
+  ground = section.profile_lines.front().points;
+  ground_y_min = std::numeric_limits<double>::infinity();
+  ground_y_max = -std::numeric_limits<double>::infinity();
+  for (const Point& p : ground) {
+    ground_y_min = std::min(ground_y_min, p.y);
+    ground_y_max = std::max(ground_y_max, p.y);
+  }
+
+  // Order the profile lines from the top down. They do not cross, so comparing them at all vertices is enough;
+  // the ground surface stays first.
+  std::vector<double> xs;
+  for (const ProfileLine& line : section.profile_lines)
+    for (const Point& p : line.points) xs.push_back(p.x);
+  std::vector<double> level(section.profile_lines.size(), 0.0);
+  for (std::size_t k = 0; k < section.profile_lines.size(); ++k)
+    for (double x : xs) level[k] += polyline_y(section.profile_lines[k].points, x);
+  std::vector<std::size_t> order(section.profile_lines.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin() + 1, order.end(), [&](std::size_t a, std::size_t b) { return level[a] > level[b]; });
+  for (std::size_t k : order) {
+    const ProfileLine& line = section.profile_lines[k];
+    const Material& m = section.materials.at(line.material);
+    lines.push_back(&line.points);
+    line_unit_weight.push_back(m.unit_weight);
+    line_cohesion.push_back(m.cohesion);
+    line_tan_phi.push_back(std::tan(m.friction_angle));
+    line_material.push_back(line.material);
+  }
+
+  fixed_breaks = xs;
+  if (section.water) {
+    has_water = true;
+    piezometric_line = section.water->piezometric_line;
+    water_unit_weight = section.water->unit_weight;
+    for (const Point& p : piezometric_line) fixed_breaks.push_back(p.x);
+    // where the piezometric line crosses the ground surface (edge of ponded water)
+    std::vector<double> knots;
+    for (const Point& p : ground) knots.push_back(p.x);
+    for (const Point& p : piezometric_line) knots.push_back(std::clamp(p.x, x_min, x_max));
+    std::sort(knots.begin(), knots.end());
+    for (std::size_t i = 0; i + 1 < knots.size(); ++i) {
+      const double a = knots[i];
+      const double b = knots[i + 1];
+      if (!(b > a)) continue;
+      const double da = polyline_y(piezometric_line, a) - polyline_y(ground, a);
+      const double db = polyline_y(piezometric_line, b) - polyline_y(ground, b);
+      if ((da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0)) fixed_breaks.push_back(a + (b - a) * da / (da - db));
+    }
+  }
+  const double contact_tolerance = 1e-9 * (1.0 + std::fabs(bottom_y) + (ground_y_max - ground_y_min));
+  for (const Point& p : ground)
+    if (p.y <= bottom_y + contact_tolerance && p.x > x_min && p.x < x_max) base_contacts.push_back(p.x);
+  surcharges = section.surcharges;
+  for (const Surcharge& s : surcharges) {
+    fixed_breaks.push_back(s.from_x);
+    fixed_breaks.push_back(s.to_x);
+  }
+  seismic_coefficient = section.seismic_coefficient;
+  std::sort(fixed_breaks.begin(), fixed_breaks.end());
+  fixed_breaks.erase(std::unique(fixed_breaks.begin(), fixed_breaks.end()), fixed_breaks.end());
+}
+
+double PreparedSection::ground_at(double x) const { return polyline_y(ground, std::clamp(x, x_min, x_max)); }
+
+void lower_arc_crossings(const std::vector<Point>& line, const Circle& circle, double x_from, double x_to,
+                         std::vector<double>& out) {
+  const double r2 = circle.radius * circle.radius;
+  const double y_limit = circle.yc + 1e-12 * circle.radius;
+  // first segment that can reach x_from
+  auto first = std::upper_bound(line.begin(), line.end(), x_from, [](double v, const Point& p) { return v < p.x; });
+  std::size_t i = first == line.begin() ? 0 : static_cast<std::size_t>(first - line.begin()) - 1;
+  for (; i + 1 < line.size(); ++i) {
+    const Point& p0 = line[i];
+    const Point& p1 = line[i + 1];
+    if (p0.x >= x_to) break;
+    if (p1.x <= x_from) continue;
+    const double dx = p1.x - p0.x;
+    const double dy = p1.y - p0.y;
+    const double fx = p0.x - circle.xc;
+    const double fy = p0.y - circle.yc;
+    const double a = dx * dx + dy * dy;
+    const double b = 2.0 * (fx * dx + fy * dy);
+    const double c = fx * fx + fy * fy - r2;
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0 || a <= 0.0) continue;
+    const double sq = std::sqrt(disc);
+    const double q = -0.5 * (b + (b >= 0.0 ? sq : -sq));
+    double ts[2] = {q / a, q != 0.0 ? c / q : q / a};
+    for (double t : ts) {
+      if (t < -1e-12 || t > 1.0 + 1e-12) continue;
+      t = std::clamp(t, 0.0, 1.0);
+      const double x = p0.x + t * dx;
+      const double y = p0.y + t * dy;
+      if (y > y_limit) continue;
+      if (x > x_from && x < x_to) out.push_back(x);
+    }
+  }
+}
+
+Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& table) {
+  const PreparedSection& ps = prepared_;
+  const double xc = circle.xc;
+  const double yc = circle.yc;
+  const double R = circle.radius;
+  if (!(R > 0.0) || !std::isfinite(R) || !std::isfinite(xc) || !std::isfinite(yc)) return Rejection::invalid_circle;
+  const double R2 = R * R;
+  auto arc = [&](double x) {
+    const double d = x - xc;
+    return yc - std::sqrt(std::max(0.0, R2 - d * d));
+  };
+
+  // 1. The lower arc against the ground surface: find the single interval where there is soil above the arc.
+  //    Soil lies between the ground and the rigid base, so where the ground is on the base (a slope on a firm
+  //    stratum at toe level) there is none, and such ground vertices may end a mass like a crossing does.
+  const double x_lo = std::max(ps.x_min, xc - R);
+  const double x_hi = std::min(ps.x_max, xc + R);
+  if (!(x_hi > x_lo)) return Rejection::misses_ground;
+  roots_.clear();
+  lower_arc_crossings(ps.ground, circle, x_lo, x_hi, roots_);
+  const std::size_t n_crossings = roots_.size();
+  for (double x : ps.base_contacts)
+    if (x > x_lo && x < x_hi) roots_.push_back(x);
+  if (roots_.size() > n_crossings) {
+    // keep track of which split points are base contacts (they need the arc to pass through them)
+    root_is_contact_.assign(roots_.size(), 0);
+    for (std::size_t k = n_crossings; k < roots_.size(); ++k) root_is_contact_[k] = 1;
+    for (std::size_t k = 1; k < roots_.size(); ++k)  // insertion sort of the few split points, flags alongside
+      for (std::size_t j = k; j > 0 && roots_[j - 1] > roots_[j]; --j) {
+        std::swap(roots_[j - 1], roots_[j]);
+        std::swap(root_is_contact_[j - 1], root_is_contact_[j]);
+      }
+  } else {
+    std::sort(roots_.begin(), roots_.end());
+    root_is_contact_.assign(roots_.size(), 0);
+  }
+  const double tol_x = 1e-10 * (R + std::fabs(xc) + 1.0);
+  const double tol_base = 1e-9 * (1.0 + R + std::fabs(ps.bottom_y));
+  double left = 0.0, right = 0.0;
+  bool open = false, found = false, left_is_root = false;
+  bool left_is_contact = false, right_is_contact = false;
+  int masses = 0;
+  double a = x_lo;
+  bool a_is_root = false, a_is_contact = false;
+  const std::size_t n_roots = roots_.size();
+  for (std::size_t k = 0; k <= n_roots; ++k) {
+    const double b = k < n_roots ? roots_[k] : x_hi;
+    const bool b_is_root = k < n_roots;
+    const bool b_is_contact = k < n_roots && root_is_contact_[k] != 0;
+    if (b - a > tol_x) {
+      const double mid = 0.5 * (a + b);
+      const double g = ps.ground_at(mid);
+      const bool positive = g > arc(mid) && g > ps.bottom_y + tol_base;
+      if (positive && !open) {  // a new positive stretch (adjacent positive stretches merge: tangent touch)
+        open = true;
+        left = a;
+        left_is_root = a_is_root;
+        left_is_contact = a_is_contact;
+        ++masses;
+      } else if (!positive && open) {
+        open = false;
+        right = a;
+        right_is_contact = a_is_contact;
+        found = true;
+        if (!a_is_root) return Rejection::beyond_section;
+      }
+    }
+    a = b;
+    a_is_root = b_is_root;
+    a_is_contact = b_is_contact;
+  }
+  if (open) {  // positive up to x_hi
+    if (x_hi < ps.x_max - tol_x) return Rejection::not_closed_lower_arc;
+    return Rejection::beyond_section;
+  }
+  if (masses == 0 || !found) return Rejection::misses_ground;
+  if (masses > 1) return Rejection::several_masses;
+  if (!left_is_root) return (x_lo > ps.x_min + tol_x) ? Rejection::not_closed_lower_arc : Rejection::beyond_section;
+  const double xl = left;
+  const double xr = right;
+  const double span = xr - xl;
+  if (span < 1e-7 * (ps.x_max - ps.x_min)) return Rejection::too_small;
+  if (xc > xl && xc < xr && yc - R < ps.bottom_y - tol_base) return Rejection::below_base;
+  // a mass ending on the base must have its arc through that point, not below it
+  if ((left_is_contact && arc(xl) < ps.bottom_y - tol_base) || (right_is_contact && arc(xr) < ps.bottom_y - tol_base))
+    return Rejection::below_base;
+
+  // 2. Direction of sliding: from the higher end to the lower end.
+  const double yl = ps.ground_at(xl);
+  const double yr = ps.ground_at(xr);
+  const double tol_y = 1e-9 * (1.0 + std::fabs(yl) + std::fabs(yr));
+  int dir;
+  if (yl > yr + tol_y) dir = 1;
+  else if (yr > yl + tol_y) dir = -1;
+  else dir = 0.5 * (xl + xr) < xc ? 1 : -1;
+
+  // 3. Slice boundaries.
+  breaks_.clear();
+  for (auto it = std::upper_bound(ps.fixed_breaks.begin(), ps.fixed_breaks.end(), xl);
+       it != ps.fixed_breaks.end() && *it < xr; ++it)
+    breaks_.push_back(*it);
+  for (std::size_t k = 1; k < ps.lines.size(); ++k) lower_arc_crossings(*ps.lines[k], circle, xl, xr, breaks_);
+  if (ps.has_water) lower_arc_crossings(ps.piezometric_line, circle, xl, xr, breaks_);
+  std::sort(breaks_.begin(), breaks_.end());
+  breaks_.push_back(xr);
+  const double target_width = span / std::max(1, target_slices);
+  const double min_gap = 1e-6 * span;
+  bounds_.clear();
+  bounds_.push_back(xl);
+  double prev = xl;
+  for (double b : breaks_) {
+    const double gap = b - prev;
+    if (gap < min_gap) {
+      if (b == xr) bounds_.back() = xr;  // keep the exact end
+      continue;
+    }
+    const long k = std::max(1L, std::lround(gap / target_width));
+    for (long j = 1; j < k; ++j) bounds_.push_back(prev + gap * static_cast<double>(j) / static_cast<double>(k));
+    bounds_.push_back(b);
+    prev = b;
+  }
+  const int n = static_cast<int>(bounds_.size()) - 1;
+  if (n < 1) return Rejection::too_small;
+
+  // 4. Arc and ground at the boundaries.
+  arc_y_.resize(bounds_.size());
+  ground_y_.resize(bounds_.size());
+  PolylineCursor ground_cursor;
+  ground_cursor.reset(ps.ground);
+  for (std::size_t j = 0; j < bounds_.size(); ++j) {
+    arc_y_[j] = arc(bounds_[j]);
+    ground_y_[j] = ground_cursor.y(bounds_[j]);
+  }
+  arc_y_.front() = ground_y_.front();  // the ends lie on the ground
+  arc_y_.back() = ground_y_.back();
+
+  // 5. Slices.
+  table.resize(n);
+  table.circle = circle;
+  table.direction = dir;
+  const Point p_left{xl, ground_y_.front()};
+  const Point p_right{xr, ground_y_.back()};
+  table.entry = dir > 0 ? p_left : p_right;
+  table.exit = dir > 0 ? p_right : p_left;
+  const double sdir = dir > 0 ? 1.0 : -1.0;
+  const std::size_t n_lines = ps.lines.size();
+  if (n_lines > 1) {
+    line_cursors_.resize(n_lines);
+    line_y_.resize(n_lines + 1);
+    for (std::size_t k = 0; k < n_lines; ++k) line_cursors_[k].reset(*ps.lines[k]);
+  }
+  PolylineCursor water_cursor;
+  if (ps.has_water) water_cursor.reset(ps.piezometric_line);
+  const double kh = ps.seismic_coefficient;
+  double max_depth = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double x0 = bounds_[i];
+    const double x1 = bounds_[i + 1];
+    const double b = x1 - x0;
+    const double yb0 = arc_y_[i];
+    const double yb1 = arc_y_[i + 1];
+    const double dy = yb1 - yb0;
+    const double l = std::sqrt(b * b + dy * dy);
+    const double inv_l = 1.0 / l;
+    const double xm = 0.5 * (x0 + x1);
+    const double ybm = 0.5 * (yb0 + yb1);
+    const double ytm = 0.5 * (ground_y_[i] + ground_y_[i + 1]);
+    const double h = std::max(0.0, ytm - ybm);
+    max_depth = std::max(max_depth, h);
+    table.x_left[i] = x0;
+    table.x_right[i] = x1;
+    table.width[i] = b;
+    table.sin_a[i] = -sdir * dy * inv_l;
+    table.cos_a[i] = b * inv_l;
+    table.base_length[i] = l;
+    table.base_x[i] = xm;
+    table.base_y[i] = ybm;
+    table.top_y[i] = ytm;
+
+    double weight;
+    std::size_t base_line = 0;
+    if (n_lines == 1) {
+      weight = ps.line_unit_weight[0] * b * h;
+    } else {
+      // layers at the centre line: line k's material fills [Y(k+1), Y(k)], the last one down to bottom_y
+      line_y_[0] = ytm;
+      for (std::size_t k = 1; k < n_lines; ++k) line_y_[k] = std::min(line_cursors_[k].y(xm), line_y_[k - 1]);
+      line_y_[n_lines] = std::min(ps.bottom_y, line_y_[n_lines - 1]);
+      weight = 0.0;
+      base_line = n_lines - 1;
+      for (std::size_t k = 0; k < n_lines; ++k) {
+        const double top = line_y_[k];
+        const double bottom = std::max(line_y_[k + 1], ybm);
+        if (top > bottom) weight += ps.line_unit_weight[k] * (top - bottom);
+        if (line_y_[k + 1] < ybm) {
+          base_line = k;
+          break;
+        }
+      }
+      weight *= b;
+    }
+    table.weight[i] = weight;
+    table.material[i] = ps.line_material[base_line];
+    table.cohesion[i] = ps.line_cohesion[base_line];
+    table.tan_phi[i] = ps.line_tan_phi[base_line];
+
+    double u = 0.0, ponded = 0.0, thrust = 0.0;
+    if (ps.has_water) {
+      const double hw = water_cursor.y(xm);
+      u = ps.water_unit_weight * std::max(0.0, hw - ybm);
+      const double depth = hw - ytm;
+      if (depth > 0.0) {
+        ponded = ps.water_unit_weight * depth * b;
+        // pressure p normal to the ground y = G(x) pushes on the slice top with (p G', -p) per unit x
+        thrust = sdir * ponded * (ground_y_[i + 1] - ground_y_[i]) / b;
+      }
+    }
+    table.pore_pressure[i] = u;
+    table.ponded[i] = ponded;
+    table.water_thrust[i] = thrust;
+    table.seismic[i] = kh * weight;
+
+    double q = 0.0;
+    for (const Surcharge& s : ps.surcharges) {
+      const double overlap = std::min(s.to_x, x1) - std::max(s.from_x, x0);
+      if (overlap > 0.0) q += s.pressure * overlap;
+    }
+    table.surcharge[i] = q;
+  }
+  table.max_depth = max_depth;
+  table.compute_loads();
+  return Rejection::none;
+}
+
+void table_to_mass(const SliceTable& t, SlipMass& mass) {
+  mass.circle = t.circle;
+  mass.entry = t.entry;
+  mass.exit = t.exit;
+  mass.direction = t.direction;
+  mass.slices.resize(static_cast<std::size_t>(t.count));
+  for (int i = 0; i < t.count; ++i) {
+    Slice& s = mass.slices[static_cast<std::size_t>(i)];
+    s.x_left = t.x_left[i];
+    s.x_right = t.x_right[i];
+    s.width = t.width[i];
+    s.base_angle = std::atan2(t.sin_a[i], t.cos_a[i]);
+    s.base_length = t.base_length[i];
+    s.base_x = t.base_x[i];
+    s.base_y = t.base_y[i];
+    s.top_y = t.top_y[i];
+    s.weight = t.weight[i];
+    s.surcharge_load = t.surcharge[i];
+    s.ponded_water_load = t.ponded[i];
+    s.cohesion = t.cohesion[i];
+    s.tan_friction = t.tan_phi[i];
+    s.pore_pressure = t.pore_pressure[i];
+    s.base_material = t.material[i];
+    s.seismic_force = t.seismic[i];
+    s.water_thrust = t.water_thrust[i];
+  }
+}
+
+void mass_to_table(const SlipMass& mass, SliceTable& t) {
+  const int n = static_cast<int>(mass.slices.size());
+  t.resize(n);
+  t.circle = mass.circle;
+  t.entry = mass.entry;
+  t.exit = mass.exit;
+  t.direction = mass.direction >= 0 ? 1 : -1;
+  double max_depth = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const Slice& s = mass.slices[static_cast<std::size_t>(i)];
+    t.x_left[i] = s.x_left;
+    t.x_right[i] = s.x_right;
+    t.width[i] = s.width;
+    t.sin_a[i] = std::sin(s.base_angle);
+    t.cos_a[i] = std::cos(s.base_angle);
+    t.base_length[i] = s.base_length;
+    t.base_x[i] = s.base_x;
+    t.base_y[i] = s.base_y;
+    t.top_y[i] = s.top_y;
+    t.weight[i] = s.weight;
+    t.surcharge[i] = s.surcharge_load;
+    t.ponded[i] = s.ponded_water_load;
+    t.cohesion[i] = s.cohesion;
+    t.tan_phi[i] = s.tan_friction;
+    t.pore_pressure[i] = s.pore_pressure;
+    t.material[i] = s.base_material;
+    t.seismic[i] = s.seismic_force;
+    t.water_thrust[i] = s.water_thrust;
+    max_depth = std::max(max_depth, s.top_y - s.base_y);
+  }
+  t.max_depth = max_depth;
+  t.compute_loads();
+}
+
+}  // namespace slope::detail
+
+namespace slope {
+
+std::optional<SlipMass> slice_circle(const Section& section, const Circle& circle, const SliceOptions& options,
+                                     std::string* reason) {
+  if (const std::string error = section_error(section); !error.empty()) {
+    if (reason != nullptr) *reason = "invalid section: " + error;
+    return std::nullopt;
+  }
+  detail::Slicer slicer(section);
+  detail::SliceTable table;
+  const detail::Rejection rejection = slicer.slice(circle, options.slices, table);
+  if (rejection != detail::Rejection::none) {
+    if (reason != nullptr) *reason = detail::rejection_text(rejection);
+    return std::nullopt;
+  }
+  SlipMass mass;
+  detail::table_to_mass(table, mass);
+  if (reason != nullptr) reason->clear();
+  return mass;
+}
+
+}  // namespace slope

@@ -1,0 +1,224 @@
+// Section geometry and slicing of circular slip masses. Reference values are closed-form geometry.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "lem_sections.hpp"
+#include "slope/methods.hpp"
+#include "slope/slices.hpp"
+
+using Catch::Matchers::Contains;
+using namespace lem_test;
+
+namespace {
+
+// Area of the circular segment cut off by a chord at distance d from the centre (closed form).
+double segment_area(double radius, double d) {
+  const double half_angle = std::acos(d / radius);
+  return radius * radius * (half_angle - std::sin(half_angle) * std::cos(half_angle));
+}
+
+slope::Section flat_ground(double ground_y, double bottom_y) {
+  slope::Section s;
+  s.bottom_y = bottom_y;
+  s.materials.push_back(material("soil", 20.0, 10.0, 25.0));
+  s.profile_lines.push_back(slope::ProfileLine{0, {{0, ground_y}, {100, ground_y}}});
+  return s;
+}
+
+double total(const slope::SlipMass& mass, double slope::Slice::*field) {
+  double sum = 0.0;
+  for (const slope::Slice& s : mass.slices) sum += s.*field;
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("polyline_y interpolates and is constant beyond the ends; ground_y clamps", "[slope][geometry]") {
+  const std::vector<slope::Point> line{{0, 1}, {2, 3}, {4, 3}, {6, 0}};
+  CHECK(slope::polyline_y(line, -5) == 1.0);
+  CHECK(slope::polyline_y(line, 1) == Approx(2.0));
+  CHECK(slope::polyline_y(line, 3) == Approx(3.0));
+  CHECK(slope::polyline_y(line, 5) == Approx(1.5));
+  CHECK(slope::polyline_y(line, 9) == 0.0);
+  const slope::Section s = griffiths_lane_no_foundation();
+  CHECK(s.x_min() == 0.0);
+  CHECK(s.x_max() == 52.0);
+  CHECK(s.ground_y(22.0) == Approx(15.0));
+  CHECK(s.ground_y(-3.0) == 20.0);
+}
+
+TEST_CASE("section_error names what is wrong with a section", "[slope][geometry]") {
+  CHECK(slope::section_error(griffiths_lane_no_foundation()).empty());
+  slope::Section s = griffiths_lane_no_foundation();
+  s.profile_lines[0].points[2].x = 11.0;  // x no longer increasing
+  CHECK_THAT(slope::section_error(s), Contains("increase"));
+  s = griffiths_lane_no_foundation();
+  s.bottom_y = 15.0;
+  CHECK_THAT(slope::section_error(s), Contains("below the rigid base"));
+  s = griffiths_lane_no_foundation();
+  s.profile_lines.push_back(slope::ProfileLine{0, {{0, 25}, {52, 25}}});
+  CHECK_THAT(slope::section_error(s), Contains("above the ground"));
+  s = griffiths_lane_no_foundation();
+  s.materials[0].unit_weight = 0.0;
+  CHECK_THAT(slope::section_error(s), Contains("unit weight"));
+}
+
+TEST_CASE("slice weights add up to the closed-form circular-segment area", "[slope][slicing]") {
+  // Flat ground at y = 20, circle centre 8 m above it, R = 12: a segment of a circle (closed form). The base is
+  // the chord polygon of the arc, so its area falls short of the segment by O(1/n^2): 0.1 % with 50 slices.
+  const slope::Section s = flat_ground(20.0, 0.0);
+  const slope::Circle circle{50.0, 28.0, 12.0};
+  const auto mass = slope::slice_circle(s, circle, slope::SliceOptions{50});
+  REQUIRE(mass);
+  const double area = segment_area(12.0, 8.0);
+  CHECK(total(*mass, &slope::Slice::weight) == Approx(20e3 * area).epsilon(1e-3));
+  CHECK(total(*mass, &slope::Slice::weight) < 20e3 * area);
+  CHECK(mass->slices.size() == 50);
+  CHECK(std::min(mass->entry.x, mass->exit.x) == Approx(50.0 - std::sqrt(144.0 - 64.0)).epsilon(1e-12));
+  CHECK(mass->exit.y == Approx(20.0));
+  double width = 0.0;
+  for (const slope::Slice& sl : mass->slices) {
+    CHECK(sl.x_right > sl.x_left);
+    CHECK(sl.width == Approx(sl.x_right - sl.x_left));
+    CHECK(sl.base_length >= sl.width);
+    width += sl.width;
+  }
+  CHECK(width == Approx(2.0 * std::sqrt(80.0)).epsilon(1e-12));
+
+  SECTION("a symmetric mass has no driving moment: every method refuses it instead of returning a number") {
+    for (slope::Method method : slope::all_methods()) {
+      const slope::FsResult r = slope::factor_of_safety(*mass, method);
+      INFO(slope::method_key(method) << ": " << r.error);
+      CHECK_FALSE(r.factor_of_safety.has_value());
+      CHECK_FALSE(r.error.empty());
+    }
+  }
+}
+
+TEST_CASE("slice boundaries fall on every profile vertex and material change inside the mass", "[slope][slicing]") {
+  // Two layers: the slope soil above y = 8 (horizontal interface below the toe), a stiffer clay below. The circle
+  // crosses the interface at x = xc -+ sqrt(R^2 - (yc - 8)^2); the crest (20) and toe (40) vertices are inside.
+  slope::Section s = griffiths_lane_1999();
+  s.materials.push_back(material("lower", 18.0, 30.0, 5.0));
+  s.profile_lines.push_back(slope::ProfileLine{1, {{0, 8}, {60, 8}}});
+  const slope::Circle circle{36.0, 30.0, 25.0};
+  const auto mass = slope::slice_circle(s, circle, slope::SliceOptions{30});
+  REQUIRE(mass);
+  const double crossing_left = 36.0 - std::sqrt(625.0 - 484.0);
+  const double crossing_right = 36.0 + std::sqrt(625.0 - 484.0);
+  auto has_boundary = [&](double x) {
+    for (const slope::Slice& sl : mass->slices)
+      if (std::fabs(sl.x_left - x) < 1e-9 || std::fabs(sl.x_right - x) < 1e-9) return true;
+    return false;
+  };
+  CHECK(has_boundary(20.0));
+  CHECK(has_boundary(40.0));
+  CHECK(has_boundary(crossing_left));
+  CHECK(has_boundary(crossing_right));
+  for (const slope::Slice& sl : mass->slices) {
+    const bool in_lower = sl.base_x > crossing_left && sl.base_x < crossing_right;
+    CHECK(sl.base_material == (in_lower ? 1u : 0u));
+    CHECK(sl.cohesion == Approx(in_lower ? 30e3 : 10e3));
+    // weight: 20 kN/m3 above y = 8, 18 kN/m3 below, at the slice centre line (exact for straight boundaries)
+    const double upper = sl.top_y - std::max(8.0, sl.base_y);
+    const double lower = std::max(0.0, 8.0 - sl.base_y);
+    CHECK(sl.weight == Approx((20e3 * upper + 18e3 * lower) * sl.width).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("pore pressure, ponded water and its thrust on the slice top follow the piezometric line",
+          "[slope][slicing][water]") {
+  // Horizontal piezometric line at y = 14 over a 2:1 slope whose toe is at y = 10: 4 m of water stand on the toe.
+  slope::Section s = griffiths_lane_1999();
+  s.water = slope::Water{{{0, 14}, {60, 14}}, 9810.0};
+  const auto mass = slope::slice_circle(s, slope::Circle{36.0, 30.0, 20.0}, slope::SliceOptions{40});
+  REQUIRE(mass);
+  bool ponded_found = false;
+  for (const slope::Slice& sl : mass->slices) {
+    CHECK(sl.pore_pressure == Approx(9810.0 * std::max(0.0, 14.0 - sl.base_y)).margin(1e-9));
+    const double depth = std::max(0.0, 14.0 - sl.top_y);
+    CHECK(sl.ponded_water_load == Approx(9810.0 * depth * sl.width).margin(1e-6));
+    if (depth > 0.0) {
+      ponded_found = true;
+      if (sl.x_right <= 40.0) {
+        // on the 2:1 face the thrust is p * (dy/dx) * width against the sliding direction (toward +x): -p b / 2
+        CHECK(sl.water_thrust == Approx(-0.5 * sl.ponded_water_load).epsilon(1e-9));
+      } else {
+        CHECK(sl.water_thrust == Approx(0.0).margin(1e-9));  // flat toe ground
+      }
+    }
+  }
+  CHECK(ponded_found);
+}
+
+TEST_CASE("inadmissible circles are rejected with a reason", "[slope][slicing]") {
+  const slope::Section s = griffiths_lane_1999();
+  std::string reason;
+  CHECK_FALSE(slope::slice_circle(s, slope::Circle{30.0, 25.0, 30.0}, {}, &reason));  // lowest point y = -5
+  CHECK_THAT(reason, Contains("rigid base"));
+  CHECK_FALSE(slope::slice_circle(s, slope::Circle{30.0, 60.0, 10.0}, {}, &reason));  // in the air
+  CHECK_THAT(reason, Contains("does not cut"));
+  CHECK_FALSE(slope::slice_circle(s, slope::Circle{5.0, 30.0, 15.0}, {}, &reason));  // beyond the left end
+  CHECK_THAT(reason, Contains("beyond"));
+  CHECK_FALSE(slope::slice_circle(s, slope::Circle{30.0, 0.0, 1.0}, {}, &reason));  // buried, no closed mass
+  CHECK_FALSE(reason.empty());
+  CHECK_FALSE(slope::slice_circle(s, slope::Circle{30.0, 30.0, -1.0}, {}, &reason));
+  CHECK_THAT(reason, Contains("radius"));
+
+  // a bumpy ground cut four times by one circle
+  slope::Section bumpy = s;
+  bumpy.profile_lines[0].points = {{0, 20}, {20, 20}, {26, 17}, {28, 14}, {30, 17}, {40, 10}, {60, 10}};
+  CHECK_FALSE(slope::slice_circle(bumpy, slope::Circle{31.0, 30.0, 15.5}, {}, &reason));
+  CHECK_THAT(reason, Contains("more than twice"));
+}
+
+TEST_CASE("a toe on a firm base may end a mass; an arc under the toe is rejected", "[slope][slicing]") {
+  // Griffiths & Lane example 1 stands on a rigid base at toe level (x = 32, y = 10).
+  const slope::Section s = griffiths_lane_no_foundation();
+  const slope::Circle through_toe{40.0, 30.0, std::hypot(8.0, 20.0)};  // descends at the toe
+  const auto mass = slope::slice_circle(s, through_toe, {});
+  REQUIRE(mass);
+  CHECK(mass->exit.x == Approx(32.0));
+  CHECK(mass->exit.y == Approx(10.0));
+  std::string reason;
+  slope::Circle below = through_toe;
+  below.radius += 0.1;
+  CHECK_FALSE(slope::slice_circle(s, below, {}, &reason));
+  CHECK_THAT(reason, Contains("rigid base"));
+}
+
+TEST_CASE("mirroring the section mirrors the slices and keeps every factor of safety", "[slope][slicing]") {
+  slope::Section s = griffiths_lane_1999();
+  s.water = slope::Water{{{0, 16}, {25, 14}, {60, 11}}, 9810.0};
+  s.surcharges.push_back(slope::Surcharge{5.0, 15.0, 20e3});
+  s.seismic_coefficient = 0.1;
+  const slope::Section m = mirrored(s);
+  const slope::Circle circle{36.0, 32.0, 22.0};
+  const auto right = slope::slice_circle(s, circle, {});
+  const auto left = slope::slice_circle(m, slope::Circle{-36.0, 32.0, 22.0}, {});
+  REQUIRE(right);
+  REQUIRE(left);
+  CHECK(right->direction == 1);
+  CHECK(left->direction == -1);
+  CHECK(left->entry.x == Approx(-right->entry.x));
+  CHECK(left->exit.x == Approx(-right->exit.x));
+  REQUIRE(left->slices.size() == right->slices.size());
+  const std::size_t n = right->slices.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const slope::Slice& a = right->slices[i];
+    const slope::Slice& b = left->slices[n - 1 - i];
+    CHECK(b.base_angle == Approx(a.base_angle).margin(1e-12));
+    CHECK(b.weight == Approx(a.weight).epsilon(1e-12));
+    CHECK(b.water_thrust == Approx(a.water_thrust).margin(1e-6));
+  }
+  for (slope::Method method : slope::all_methods()) {
+    INFO(slope::method_key(method));
+    const slope::FsResult a = slope::factor_of_safety(*right, method);
+    const slope::FsResult b = slope::factor_of_safety(*left, method);
+    REQUIRE(a.factor_of_safety);
+    REQUIRE(b.factor_of_safety);
+    CHECK(*b.factor_of_safety == Approx(*a.factor_of_safety).epsilon(1e-9));
+    CHECK(b.lambda == Approx(a.lambda).margin(1e-7));
+  }
+}
