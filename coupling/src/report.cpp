@@ -104,6 +104,8 @@ nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& anal
   lem["settings"] = {{"methods", method_keys},
                      {"slices", analysis.search.slicing.slices},
                      {"refine", analysis.search.refine},
+                     {"minimum_depth_m", analysis.search.minimum_depth > 0 ? nlohmann::json(analysis.search.minimum_depth)
+                                                                          : nlohmann::json(nullptr)},
                      {"search_limits_given", analysis.has_search_limits}};
 
   nlohmann::json methods = nlohmann::json::object();

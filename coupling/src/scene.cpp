@@ -130,6 +130,10 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
   if (auto search = lem->object("search", Need::optional)) {
     result.has_search_limits = read_search_limits(*search, scene.section ? &scene.section->section : nullptr,
                                                   result.search.limits);
+    if (const auto depth = read_minimum_depth(*search)) {
+      result.search.minimum_depth = *depth;
+      result.has_search_limits = true;
+    }
     search->finish();
   }
   lem->finish();

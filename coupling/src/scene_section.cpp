@@ -65,36 +65,6 @@ std::vector<double> common_abscissae(const Polyline& a, const Polyline& b, doubl
   return xs;
 }
 
-std::optional<SoilMaterial> read_material(JsonReader& m) {
-  SoilMaterial material;
-  const auto name = m.string("name", Need::required);
-  const auto unit_weight = m.number("unit_weight_kN_m3", Need::required, Bounds::positive());
-  const auto cohesion = m.number("cohesion_kPa", Need::required, Bounds::non_negative());
-  const auto friction = m.number("friction_angle_deg", Need::required, Bounds::half_open(0.0, 90.0));
-  const auto dilatancy = m.number("dilatancy_angle_deg", Need::optional, Bounds::half_open(0.0, 90.0));
-  const auto youngs = m.number("youngs_modulus_MPa", Need::optional, Bounds::positive());
-  const auto poisson = m.number("poisson_ratio", Need::optional, Bounds::open(-1.0, 0.5));
-  m.finish();
-  if (dilatancy && friction && *dilatancy > *friction) {
-    m.diagnostics().error(m.path_of("dilatancy_angle_deg"),
-                          "must not exceed friction_angle_deg = " + format_number(*friction) + " (got " +
-                              format_number(*dilatancy) + "; 0 <= dilatancy <= friction angle)");
-    return std::nullopt;
-  }
-  if (!name || !unit_weight || !cohesion || !friction) return std::nullopt;
-  if (m.has("dilatancy_angle_deg") && !dilatancy) return std::nullopt;
-  if (m.has("youngs_modulus_MPa") && !youngs) return std::nullopt;
-  if (m.has("poisson_ratio") && !poisson) return std::nullopt;
-  material.name = *name;
-  material.unit_weight = *unit_weight * kilo;
-  material.cohesion = *cohesion * kilo;
-  material.friction_angle = *friction * degree;
-  if (dilatancy) material.dilatancy_angle = *dilatancy * degree;
-  if (youngs) material.youngs_modulus = *youngs * mega;
-  material.poisson_ratio = poisson;
-  return material;
-}
-
 struct LineRead {
   std::optional<std::size_t> material;
   std::optional<Polyline> points;
@@ -283,6 +253,36 @@ std::optional<slope::Range> read_range(JsonReader& reader, std::string_view key,
 
 }  // namespace
 
+std::optional<SoilMaterial> read_material(JsonReader& m) {
+  SoilMaterial material;
+  const auto name = m.string("name", Need::required);
+  const auto unit_weight = m.number("unit_weight_kN_m3", Need::required, Bounds::positive());
+  const auto cohesion = m.number("cohesion_kPa", Need::required, Bounds::non_negative());
+  const auto friction = m.number("friction_angle_deg", Need::required, Bounds::half_open(0.0, 90.0));
+  const auto dilatancy = m.number("dilatancy_angle_deg", Need::optional, Bounds::half_open(0.0, 90.0));
+  const auto youngs = m.number("youngs_modulus_MPa", Need::optional, Bounds::positive());
+  const auto poisson = m.number("poisson_ratio", Need::optional, Bounds::open(-1.0, 0.5));
+  m.finish();
+  if (dilatancy && friction && *dilatancy > *friction) {
+    m.diagnostics().error(m.path_of("dilatancy_angle_deg"),
+                          "must not exceed friction_angle_deg = " + format_number(*friction) + " (got " +
+                              format_number(*dilatancy) + "; 0 <= dilatancy <= friction angle)");
+    return std::nullopt;
+  }
+  if (!name || !unit_weight || !cohesion || !friction) return std::nullopt;
+  if (m.has("dilatancy_angle_deg") && !dilatancy) return std::nullopt;
+  if (m.has("youngs_modulus_MPa") && !youngs) return std::nullopt;
+  if (m.has("poisson_ratio") && !poisson) return std::nullopt;
+  material.name = *name;
+  material.unit_weight = *unit_weight * kilo;
+  material.cohesion = *cohesion * kilo;
+  material.friction_angle = *friction * degree;
+  if (dilatancy) material.dilatancy_angle = *dilatancy * degree;
+  if (youngs) material.youngs_modulus = *youngs * mega;
+  material.poisson_ratio = poisson;
+  return material;
+}
+
 bool read_search_limits(JsonReader& search, const slope::Section* section, slope::SearchLimits& limits) {
   Diagnostics& diagnostics = search.diagnostics();
   Bounds on_ground = Bounds::any();
@@ -327,6 +327,10 @@ bool read_search_limits(JsonReader& search, const slope::Section* section, slope
   }
   limits.radius = read_range(search, "radius_m", false, Bounds::positive());
   return search.has("entry_x_m") || search.has("exit_x_m") || search.has("centre_grid") || search.has("radius_m");
+}
+
+std::optional<double> read_minimum_depth(JsonReader& search) {
+  return search.number("minimum_depth_m", Need::optional, Bounds::positive());
 }
 
 void check_materials_for_sph(const std::string& section_path, const SceneSection& section, Diagnostics& diagnostics) {

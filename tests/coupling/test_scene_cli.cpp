@@ -107,6 +107,7 @@ const BadScene bad_scenes[] = {
     {"entry_outside_ground.json", "check", "analyses.lem.search.entry_x_m: must lie in [0, 60]"},
     {"radius_min_above_max.json", "check", "analyses.lem.search.radius_m: min must be at most max"},
     {"radius_zero.json", "check", "analyses.lem.search.radius_m: both ends must be > 0"},
+    {"minimum_depth_negative.json", "check", "analyses.lem.search.minimum_depth_m: must be > 0 (got -1)"},
     {"grid_count_one.json", "check", "analyses.lem.search.centre_grid.nx: must be in [2, 200]"},
     {"sph_missing_elastic.json", "check", "section.materials[0]: material \"upper\" lacks youngs_modulus_MPa and poisson_ratio"},
     {"lem_without_section.json", "check", "analyses.lem: limit equilibrium needs a \"section\""},

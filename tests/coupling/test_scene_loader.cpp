@@ -163,6 +163,7 @@ TEST_CASE("scene: defaults are applied", "[scene]") {
   CHECK_FALSE(scene.analyses.lem->search.limits.exit_x);
   CHECK_FALSE(scene.analyses.lem->search.limits.centre_grid);
   CHECK_FALSE(scene.analyses.lem->search.limits.radius);
+  CHECK(scene.analyses.lem->search.minimum_depth < 0.0);  // automatic
 }
 
 TEST_CASE("scene: LEM options and search limits are read", "[scene]") {
@@ -171,7 +172,8 @@ TEST_CASE("scene: LEM options and search limits are read", "[scene]") {
   document["analyses"]["lem"] = json::parse(R"({
     "methods": ["spencer"], "slices": 30, "refine": false,
     "search": { "entry_x_m": [2, 18], "exit_x_m": [38, 50],
-                "centre_grid": { "x_m": [25, 45], "y_m": [22, 40], "nx": 8 }, "radius_m": [10, 40] } })");
+                "centre_grid": { "x_m": [25, 45], "y_m": [22, 40], "nx": 8 }, "radius_m": [10, 40],
+                "minimum_depth_m": 0.5 } })");
   const Scene scene = load(document);
   const coupling::LemAnalysis& lem = *scene.analyses.lem;
   CHECK(scene.section->section.seismic_coefficient == Approx(0.15));
@@ -189,6 +191,7 @@ TEST_CASE("scene: LEM options and search limits are read", "[scene]") {
   CHECK(lem.search.limits.centre_grid->nx == 8);
   CHECK(lem.search.limits.centre_grid->ny == 10);  // default
   CHECK(lem.search.limits.radius->max == 40.0);
+  CHECK(lem.search.minimum_depth == 0.5);
 }
 
 TEST_CASE("scene: what is accepted", "[scene]") {

@@ -49,7 +49,7 @@ struct SceneSection {
 struct LemAnalysis {
   std::vector<slope::Method> methods;   // default: slope::all_methods()
   slope::SearchOptions search;          // slicing.slices default 50, refine default true, limits optional
-  bool has_search_limits = false;       // the scene gave analyses.lem.search limits
+  bool has_search_limits = false;       // the scene gave analyses.lem.search limits (or a minimum depth)
 };
 
 struct Analyses {
