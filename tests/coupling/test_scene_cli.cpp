@@ -5,7 +5,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -262,6 +264,34 @@ TEST_CASE("sphslope lem without -o prints the table and writes nothing", "[cli][
   CHECK(output.find("method") != std::string::npos);
   CHECK(output.find("spencer") != std::string::npos);
   CHECK(fs::is_empty(folder.path));
+}
+
+TEST_CASE("sphslope run writes runs/<scene stem>/report.json by default; pore pressures reach the slices",
+          "[cli][run]") {
+  TemporaryFolder folder("run-default");
+  const fs::path scene = source_path("cases/two_layer_water.json");
+  const std::string command = "cd " + quoted(folder.path.string()) + " && " + quoted(SPHSLOPE_BINARY) + " run " +
+                              quoted(scene.string()) + " 2>&1";
+  const int raw = std::system(command.c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 0);
+  const fs::path file = folder.path / "runs" / "two_layer_water" / "report.json";
+  REQUIRE(fs::exists(file));
+  const nlohmann::json report = read_json(file);
+  CHECK(report["status"] == "ok");
+  CHECK(report["errors"].empty());
+  CHECK(report["analyses"] == nlohmann::json::array({"lem"}));
+  for (const char* key : {"load", "lem", "total"}) CHECK(report["timing_s"].contains(key));
+  const nlohmann::json& bishop = report["lem"]["methods"]["bishop"];
+  REQUIRE(bishop["factor_of_safety"].is_number());
+  double largest_pore_pressure = 0.0;
+  for (const auto& slice : bishop["slices"]) {
+    largest_pore_pressure = std::max(largest_pore_pressure, slice["pore_pressure_kPa"].get<double>());
+  }
+  // The piezometric line is at most 18 m high and the base at 0: u <= 9.81 kN/m3 x 18 m.
+  CHECK(largest_pore_pressure > 0.0);
+  CHECK(largest_pore_pressure < 9.81 * 18.0);
+  CHECK_FALSE(report["lem"]["methods"].contains("morgenstern_price_constant"));  // not asked for in this scene
 }
 
 TEST_CASE("sphslope run: status 1 and a report with the reason when an analysis is not available", "[cli][run]") {
