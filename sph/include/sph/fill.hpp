@@ -1,0 +1,47 @@
+#pragma once
+// Building particle bodies: lattice fills of regions/polygons and box walls.
+// Lattice convention: cell-centred, particles at ((i+1/2) dx, (j+1/2) dx) relative to the anchor (default origin),
+// so bodies filled separately on the same anchor line up.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "sph/particles.hpp"
+
+namespace sph {
+
+struct Point {
+  double x = 0, y = 0;
+};
+
+// Lattice points inside the axis-aligned box [x_min, x_max] x [y_min, y_max] for which inside(x, y) is true.
+std::vector<Point> lattice_points_in_region(double x_min, double y_min, double x_max, double y_max, double dx,
+                                            const std::function<bool(double, double)>& inside,
+                                            Point anchor = {});
+
+// Lattice points inside a simple polygon (vertex list, either orientation; even-odd rule).
+std::vector<Point> lattice_points_in_polygon(const std::vector<Point>& polygon, double dx, Point anchor = {});
+
+bool point_in_polygon(const std::vector<Point>& polygon, double x, double y);
+
+// Appends soil particles at the given points: mass = density dx^2 (per metre width). Returns the count.
+std::size_t add_soil(Particles& particles, const std::vector<Point>& points, double dx, std::uint16_t material,
+                     double density);
+
+// Fixed wall particles around the inner box [x_min, x_max] x [y_min, y_min + height]:
+// `layers` rows (0 = ceil(2h/dx), the kernel support) below the bottom and outside the sides.
+struct BoxWalls {
+  double x_min = 0, x_max = 1, y_min = 0, height = 1;
+  bool left = true, right = true, bottom = true;
+  int layers = 0;
+};
+
+// Appends the wall particles (kind wall, mass density dx^2, inward unit normals). Returns the count.
+std::size_t add_box_walls(Particles& particles, const BoxWalls& box, double dx, double h, std::uint16_t material,
+                          double density);
+
+// Wall layer count that covers the kernel support 2h.
+int wall_layers_for(double dx, double h);
+
+}  // namespace sph

@@ -1,0 +1,96 @@
+#pragma once
+// Model = particles + materials + numerical settings + run state (time, step, output bookkeeping).
+// The caller (coupling layer) builds particles with fill.hpp, sets materials and settings, then calls run().
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sph/kernel.hpp"
+#include "sph/material.hpp"
+#include "sph/particles.hpp"
+
+namespace sph {
+
+enum class GravityMode {
+  sudden,        // zero initial stress, full gravity from t = 0 (the thesis)
+  geostatic_k0,  // sigma_yy = -rho g depth below the local free surface, sigma_xx = sigma_zz = K0 sigma_yy
+};
+
+enum class WallSlip {
+  no_slip,    // wall ghost velocity = -(Shepard average of neighbouring soil velocity)
+  free_slip,  // wall ghost velocity = soil average mirrored in the wall normal (tangential part kept)
+};
+
+enum class ArtificialStressMode { off, on, automatic /* on iff some plastic material has cohesion > 0 */ };
+
+struct ArtificialViscosity {
+  double alpha = 0.1;  // Monaghan alpha_Pi (Bui et al. 2008 used 0.1 for soil)
+  double beta = 0.2;   // Monaghan beta_Pi
+  double eta_factor = 0.01;  // eta^2 = eta_factor h^2
+};
+
+struct ArtificialStress {
+  ArtificialStressMode mode = ArtificialStressMode::automatic;
+  double epsilon = 0.5;   // Gray, Monaghan & Swift (2001); Bui et al. (2008) used 0.5
+  double exponent = 2.55; // n in f_ij^n, f_ij = W(r_ij)/W(dx)
+};
+
+struct Xsph {
+  bool enabled = false;
+  double chi = 0.5;  // Monaghan (2002)
+};
+
+struct Settings {
+  KernelType kernel = KernelType::cubic_spline;
+  double particle_spacing = 0;   // dx [m] (required; lattice spacing used to build the bodies)
+  double h_over_dx = 1.2;        // smoothing length h = h_over_dx * dx
+  ArtificialViscosity viscosity;
+  ArtificialStress artificial_stress;
+  Xsph xsph;
+  double gravity_x = 0.0, gravity_y = -9.81;  // [m/s^2]
+  GravityMode gravity_mode = GravityMode::sudden;
+  WallSlip wall_slip = WallSlip::no_slip;
+  double damping = 0.0;          // optional linear velocity damping [1/s] (a -= damping * v), 0 = none
+  double cfl = 0.2;              // dt <= cfl * h / (c + |v|max)
+  double acceleration_safety = 0.25;  // dt <= acceleration_safety * sqrt(h / |a|max)
+  double end_time = 1.0;         // [s]
+  double output_interval = 0.1;  // [s] simulated time between frames / energy rows (<= 0: none)
+  double checkpoint_interval_wall_s = 600.0;  // wall-clock seconds between checkpoints (<= 0: none)
+  double blow_up_speed_factor = 1.0;  // stop if any speed > factor * max sound speed
+  double blow_up_energy_factor = 10.0;  // stop if KE > factor * (released potential energy + elastic floor)
+
+  double smoothing_length() const { return h_over_dx * particle_spacing; }
+  // Throws std::invalid_argument with a message naming the setting and the allowed range.
+  void validate() const;
+};
+
+// Simulation clock and output bookkeeping; part of the checkpoint.
+struct RunState {
+  double time = 0.0;
+  std::uint64_t step = 0;
+  bool rates_valid = false;         // rates in Particles correspond to the current state
+  bool initial_stress_applied = false;
+  double next_output_time = 0.0;
+  std::uint64_t frames_written = 0;
+  std::vector<double> frame_times;
+  double initial_potential_energy = 0.0;
+  std::uint64_t energy_csv_bytes = 0;  // bytes of energy.csv that belong to this state
+};
+
+struct Model {
+  Particles particles;
+  std::vector<Material> materials;
+  Settings settings;
+  RunState state;
+
+  // Validates settings, materials and particles (material ids in range, positive masses, ...).
+  void validate() const;
+  bool uses_artificial_stress() const;
+};
+
+// Upper estimate of the memory (bytes) needed to simulate n particles (particles, step workspace,
+// neighbour search, output buffers). Use it to refuse a case before allocating.
+std::size_t estimate_memory_bytes(std::size_t n_particles);
+
+}  // namespace sph

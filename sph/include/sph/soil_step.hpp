@@ -1,0 +1,79 @@
+#pragma once
+// One time step of the elasto-plastic soil SPH (Bui et al. 2008), assembled once from the model settings.
+//
+// Integration (second order, one rate evaluation per step; "velocity Verlet with predicted rates"):
+//   half:      v_h = v + dt/2 a,   rho_h = rho + dt/2 drho,   sigma_h = sigma + dt/2 dsigma
+//   drift:     x  += dt v_h
+//   predict:   v* = v + dt a, rho* = rho + dt drho, sigma* = R(sigma + dt dsigma)     (R = return to yield)
+//   evaluate:  sort by cell, wall extrapolation, rates a, drho, dsigma at (x, v*, rho*, sigma*)
+//   correct:   v = v_h + dt/2 a,  rho = rho_h + dt/2 drho,  sigma = R(sigma_h + dt/2 dsigma)
+// The rates of the evaluation are kept with the particles (and in checkpoints) for the next step.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sph/model.hpp"
+#include "sph/neighbour_search.hpp"
+
+namespace sph {
+
+struct Energies {
+  double kinetic = 0;            // [J/m]
+  double potential = 0;          // -sum m g.x over soil, datum x = 0  [J/m]
+  double plastic_dissipation = 0;// sum m * plastic work per mass [J/m]
+  double max_speed = 0;          // [m/s]
+};
+
+struct Health {
+  bool ok = true;
+  std::string diagnostic;  // names the particle (original id), field and step when !ok
+};
+
+class SoilStep {
+ public:
+  // Validates the model, derives material constants and allocates all work arrays.
+  explicit SoilStep(Model& model);
+  ~SoilStep();
+  SoilStep(const SoilStep&) = delete;
+  SoilStep& operator=(const SoilStep&) = delete;
+
+  // Prepares the state at the current time: applies the geostatic stress (once, if requested),
+  // sorts particles by cell and evaluates the rates if the model does not carry valid rates.
+  void initialise();
+
+  // Stable time step from the current rates: min(cfl h / (c(1 + 1.2 alpha) + |v|max (1 + 2.4 beta)),
+  // acceleration_safety sqrt(h / |a|max)).
+  double stable_time_step() const;
+
+  // Advances the model by dt (time and step counter included).
+  void advance(double dt);
+
+  Energies energies() const;
+  Health check_health() const;  // NaN/Inf in soil fields, speed above blow_up_speed_factor * c
+
+  double smoothing_length() const { return h_; }
+  double max_sound_speed() const { return c_max_; }
+  const std::vector<MaterialConstants>& material_constants() const { return mc_; }
+  bool artificial_stress_enabled() const { return artificial_stress_; }
+
+  // Evaluates the rates at the current state without advancing (sort + walls + rates).
+  void evaluate();
+
+  // Sets sigma_yy = -g sum(rho dx) over the soil above each particle in its lattice column,
+  // sigma_xx = sigma_zz = K0 sigma_yy. Requires gravity along -y.
+  void apply_geostatic_stress();
+
+  struct Impl;
+
+ private:
+  Model& model_;
+  double h_ = 0;
+  double c_max_ = 0;
+  bool artificial_stress_ = false;
+  std::vector<MaterialConstants> mc_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sph

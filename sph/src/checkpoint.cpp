@@ -1,0 +1,133 @@
+#include "sph/checkpoint.hpp"
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#include "sph/vtk_output.hpp"
+
+namespace sph {
+
+namespace {
+
+constexpr char kMagic[16] = "SPHSLOPE-CKPT\0\0";
+
+std::uint64_t fnv1a(const char* data, std::size_t n) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (std::size_t i = 0; i < n; ++i) {
+    h ^= static_cast<unsigned char>(data[i]);
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+struct Writer {
+  std::string buf;
+  template <class T>
+  void put(const T& v) { buf.append(reinterpret_cast<const char*>(&v), sizeof(T)); }
+  template <class T>
+  void put_vec(const std::vector<T>& v) {
+    put<std::uint64_t>(v.size());
+    buf.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+};
+
+struct Reader {
+  const std::string& buf;
+  std::size_t pos = 0;
+  std::string path;
+  void need(std::size_t n) {
+    if (pos + n > buf.size()) throw std::runtime_error("checkpoint " + path + " is truncated");
+  }
+  template <class T>
+  T get() {
+    need(sizeof(T));
+    T v;
+    std::memcpy(&v, buf.data() + pos, sizeof(T));
+    pos += sizeof(T);
+    return v;
+  }
+  template <class T>
+  void get_vec(std::vector<T>& v, std::size_t expected) {
+    const auto n = get<std::uint64_t>();
+    if (expected != static_cast<std::size_t>(-1) && n != expected)
+      throw std::runtime_error("checkpoint " + path + ": array length mismatch");
+    need(n * sizeof(T));
+    v.resize(n);
+    std::memcpy(v.data(), buf.data() + pos, n * sizeof(T));
+    pos += n * sizeof(T);
+  }
+};
+
+}  // namespace
+
+void write_checkpoint(const std::string& path, const Model& model) {
+  Writer w;
+  w.buf.reserve(model.particles.size() * (Particles::double_array_count * 8 + 16) + 4096);
+  w.buf.append(kMagic, 16);
+  w.put<std::uint32_t>(checkpoint_version);
+  w.put<std::uint32_t>(0x01020304u);
+  w.put<std::uint64_t>(model.particles.size());
+  w.put<std::uint32_t>(Particles::double_array_count);
+  w.put<std::uint32_t>(static_cast<std::uint32_t>(model.materials.size()));
+  w.put<double>(model.settings.particle_spacing);
+  w.put<double>(model.settings.h_over_dx);
+  const RunState& s = model.state;
+  w.put<double>(s.time);
+  w.put<std::uint64_t>(s.step);
+  w.put<std::uint8_t>(s.rates_valid ? 1 : 0);
+  w.put<std::uint8_t>(s.initial_stress_applied ? 1 : 0);
+  w.put<double>(s.next_output_time);
+  w.put<std::uint64_t>(s.frames_written);
+  w.put_vec(s.frame_times);
+  w.put<double>(s.initial_potential_energy);
+  w.put<std::uint64_t>(s.energy_csv_bytes);
+  const_cast<Particles&>(model.particles).for_each_array([&](auto& a) { w.put_vec(a); });
+  w.put<std::uint64_t>(fnv1a(w.buf.data(), w.buf.size()));
+  write_file_atomically(path, w.buf);
+}
+
+void read_checkpoint(const std::string& path, Model& model) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error("cannot open checkpoint " + path);
+  const std::string buf((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  if (buf.size() < 16 + 8 || std::memcmp(buf.data(), kMagic, 16) != 0)
+    throw std::runtime_error(path + " is not an sphslope checkpoint");
+  std::uint64_t stored_sum;
+  std::memcpy(&stored_sum, buf.data() + buf.size() - 8, 8);
+  if (fnv1a(buf.data(), buf.size() - 8) != stored_sum)
+    throw std::runtime_error("checkpoint " + path + " is corrupt or truncated (checksum mismatch)");
+  Reader r{buf, 16, path};
+  const auto version = r.get<std::uint32_t>();
+  if (version != checkpoint_version)
+    throw std::runtime_error("checkpoint " + path + " has version " + std::to_string(version) + ", expected " +
+                             std::to_string(checkpoint_version));
+  if (r.get<std::uint32_t>() != 0x01020304u) throw std::runtime_error("checkpoint " + path + ": wrong byte order");
+  const auto n = r.get<std::uint64_t>();
+  const auto ndouble = r.get<std::uint32_t>();
+  const auto nmat = r.get<std::uint32_t>();
+  const auto dx = r.get<double>();
+  const auto hdx = r.get<double>();
+  if (n != model.particles.size() || ndouble != Particles::double_array_count || nmat != model.materials.size() ||
+      dx != model.settings.particle_spacing || hdx != model.settings.h_over_dx)
+    throw std::runtime_error("checkpoint " + path + " does not belong to this model (particles " + std::to_string(n) +
+                             " vs " + std::to_string(model.particles.size()) + ", materials " + std::to_string(nmat) +
+                             " vs " + std::to_string(model.materials.size()) + ", or dx / h_over_dx differ)");
+  RunState s;
+  s.time = r.get<double>();
+  s.step = r.get<std::uint64_t>();
+  s.rates_valid = r.get<std::uint8_t>() != 0;
+  s.initial_stress_applied = r.get<std::uint8_t>() != 0;
+  s.next_output_time = r.get<double>();
+  s.frames_written = r.get<std::uint64_t>();
+  r.get_vec(s.frame_times, static_cast<std::size_t>(-1));
+  s.initial_potential_energy = r.get<double>();
+  s.energy_csv_bytes = r.get<std::uint64_t>();
+  Particles p;
+  p.for_each_array([&](auto& a) { r.get_vec(a, n); });
+  model.particles = std::move(p);
+  model.state = std::move(s);
+}
+
+}  // namespace sph

@@ -1,0 +1,102 @@
+#include "sph/fill.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sph {
+
+std::vector<Point> lattice_points_in_region(double x_min, double y_min, double x_max, double y_max, double dx,
+                                            const std::function<bool(double, double)>& inside, Point anchor) {
+  if (!(dx > 0)) throw std::invalid_argument("lattice fill: dx must be > 0");
+  std::vector<Point> out;
+  const auto i0 = static_cast<long long>(std::floor((x_min - anchor.x) / dx - 0.5)) - 1;
+  const auto i1 = static_cast<long long>(std::ceil((x_max - anchor.x) / dx - 0.5)) + 1;
+  const auto j0 = static_cast<long long>(std::floor((y_min - anchor.y) / dx - 0.5)) - 1;
+  const auto j1 = static_cast<long long>(std::ceil((y_max - anchor.y) / dx - 0.5)) + 1;
+  for (long long j = j0; j <= j1; ++j) {
+    const double y = anchor.y + (static_cast<double>(j) + 0.5) * dx;
+    if (y < y_min || y > y_max) continue;
+    for (long long i = i0; i <= i1; ++i) {
+      const double x = anchor.x + (static_cast<double>(i) + 0.5) * dx;
+      if (x < x_min || x > x_max) continue;
+      if (inside(x, y)) out.push_back({x, y});
+    }
+  }
+  return out;
+}
+
+bool point_in_polygon(const std::vector<Point>& poly, double x, double y) {
+  bool in = false;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Point& a = poly[i];
+    const Point& b = poly[j];
+    if ((a.y > y) != (b.y > y)) {
+      const double xc = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (x < xc) in = !in;
+    }
+  }
+  return in;
+}
+
+std::vector<Point> lattice_points_in_polygon(const std::vector<Point>& polygon, double dx, Point anchor) {
+  if (polygon.size() < 3) throw std::invalid_argument("lattice fill: a polygon needs at least 3 vertices");
+  double x0 = polygon[0].x, x1 = x0, y0 = polygon[0].y, y1 = y0;
+  for (const auto& p : polygon) {
+    x0 = std::min(x0, p.x); x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y); y1 = std::max(y1, p.y);
+  }
+  return lattice_points_in_region(
+      x0, y0, x1, y1, dx, [&](double x, double y) { return point_in_polygon(polygon, x, y); }, anchor);
+}
+
+std::size_t add_soil(Particles& particles, const std::vector<Point>& points, double dx, std::uint16_t material,
+                     double density) {
+  if (!(dx > 0) || !(density > 0)) throw std::invalid_argument("add_soil: dx and density must be > 0");
+  particles.reserve(particles.size() + points.size());
+  for (const auto& p : points) particles.add(p.x, p.y, density * dx * dx, density, material, ParticleKind::soil);
+  return points.size();
+}
+
+int wall_layers_for(double dx, double h) { return static_cast<int>(std::ceil(2.0 * h / dx - 1e-9)); }
+
+std::size_t add_box_walls(Particles& particles, const BoxWalls& box, double dx, double h, std::uint16_t material,
+                          double density) {
+  if (!(dx > 0) || !(h > 0) || !(density > 0)) throw std::invalid_argument("add_box_walls: dx, h, density must be > 0");
+  if (!(box.x_max > box.x_min) || !(box.height > 0)) throw std::invalid_argument("add_box_walls: empty box");
+  const int layers = box.layers > 0 ? box.layers : wall_layers_for(dx, h);
+  const double m = density * dx * dx;
+  const double s = 1.0 / std::sqrt(2.0);
+  std::size_t count = 0;
+  const auto nx = static_cast<long long>(std::llround((box.x_max - box.x_min) / dx));
+  const auto ny = static_cast<long long>(std::llround(box.height / dx));
+  auto put = [&](double x, double y, double nxv, double nyv) {
+    particles.add(x, y, m, density, material, ParticleKind::wall, nxv, nyv);
+    ++count;
+  };
+  if (box.bottom) {
+    const long long i_lo = box.left ? -layers : 0;
+    const long long i_hi = box.right ? nx + layers : nx;
+    for (int k = 0; k < layers; ++k) {
+      const double y = box.y_min - (k + 0.5) * dx;
+      for (long long i = i_lo; i < i_hi; ++i) {
+        const double x = box.x_min + (static_cast<double>(i) + 0.5) * dx;
+        double nxv = 0, nyv = 1;
+        if (i < 0) { nxv = s; nyv = s; }
+        if (i >= nx) { nxv = -s; nyv = s; }
+        put(x, y, nxv, nyv);
+      }
+    }
+  }
+  for (long long j = 0; j < ny; ++j) {
+    const double y = box.y_min + (static_cast<double>(j) + 0.5) * dx;
+    for (int k = 0; k < layers; ++k) {
+      if (box.left) put(box.x_min - (k + 0.5) * dx, y, 1.0, 0.0);
+      if (box.right) put(box.x_max + (k + 0.5) * dx, y, -1.0, 0.0);
+    }
+  }
+  return count;
+}
+
+}  // namespace sph

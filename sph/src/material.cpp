@@ -1,0 +1,55 @@
+#include "sph/material.hpp"
+
+#include <stdexcept>
+
+namespace sph {
+
+namespace {
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+}  // namespace
+
+void Material::validate() const {
+  const std::string m = "material '" + name + "': ";
+  require(std::isfinite(density) && density > 0, m + "density must be > 0 kg/m^3");
+  require(std::isfinite(youngs_modulus) && youngs_modulus > 0, m + "youngs_modulus must be > 0 Pa");
+  require(std::isfinite(poisson_ratio) && poisson_ratio > -1.0 && poisson_ratio < 0.5,
+          m + "poisson_ratio must lie in (-1, 0.5)");
+  require(std::isfinite(cohesion) && cohesion >= 0, m + "cohesion must be >= 0 Pa");
+  require(std::isfinite(friction_angle_deg) && friction_angle_deg >= 0 && friction_angle_deg < 90,
+          m + "friction_angle_deg must lie in [0, 90)");
+  require(std::isfinite(dilatancy_angle_deg) && dilatancy_angle_deg >= 0 &&
+              dilatancy_angle_deg <= friction_angle_deg,
+          m + "dilatancy_angle_deg must lie in [0, friction_angle_deg]");
+  require(!plastic || cohesion > 0 || friction_angle_deg > 0,
+          m + "a plastic material needs cohesion > 0 or friction_angle_deg > 0");
+  require(std::isnan(k0) || (k0 > 0 && k0 < 10), m + "k0 must lie in (0, 10) (or be unset)");
+}
+
+MaterialConstants MaterialConstants::from(const Material& m) {
+  m.validate();
+  MaterialConstants c;
+  constexpr double deg = 3.14159265358979323846 / 180.0;
+  c.density = m.density;
+  c.bulk_modulus = m.youngs_modulus / (3.0 * (1.0 - 2.0 * m.poisson_ratio));
+  c.shear_modulus = m.youngs_modulus / (2.0 * (1.0 + m.poisson_ratio));
+  c.lame_lambda = c.bulk_modulus - 2.0 * c.shear_modulus / 3.0;
+  c.plastic = m.plastic;
+  if (m.plastic) {
+    const double tphi = std::tan(m.friction_angle_deg * deg);
+    const double tpsi = std::tan(m.dilatancy_angle_deg * deg);
+    c.alpha_phi = tphi / std::sqrt(9.0 + 12.0 * tphi * tphi);
+    c.k_c = 3.0 * m.cohesion / std::sqrt(9.0 + 12.0 * tphi * tphi);
+    c.alpha_psi = tpsi / std::sqrt(9.0 + 12.0 * tpsi * tpsi);
+  } else {
+    c.alpha_phi = 0.0;
+    c.k_c = std::numeric_limits<double>::infinity();
+    c.alpha_psi = 0.0;
+  }
+  c.sound_speed = std::sqrt((c.bulk_modulus + 4.0 * c.shear_modulus / 3.0) / m.density);
+  c.k0 = std::isnan(m.k0) ? m.poisson_ratio / (1.0 - m.poisson_ratio) : m.k0;
+  return c;
+}
+
+}  // namespace sph

@@ -1,0 +1,85 @@
+#include "sph/model.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "sph/neighbour_search.hpp"
+
+namespace sph {
+
+namespace {
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+bool finite_positive(double v) { return std::isfinite(v) && v > 0; }
+}  // namespace
+
+void Settings::validate() const {
+  require(finite_positive(particle_spacing), "settings.particle_spacing must be > 0 m (the lattice spacing dx)");
+  require(finite_positive(h_over_dx) && h_over_dx >= 0.8 && h_over_dx <= 3.0,
+          "settings.h_over_dx must lie in [0.8, 3] (typical 1.2-1.5), got " + std::to_string(h_over_dx));
+  require(std::isfinite(viscosity.alpha) && viscosity.alpha >= 0, "settings.viscosity.alpha must be >= 0");
+  require(std::isfinite(viscosity.beta) && viscosity.beta >= 0, "settings.viscosity.beta must be >= 0");
+  require(finite_positive(viscosity.eta_factor), "settings.viscosity.eta_factor must be > 0 (typical 0.01)");
+  require(std::isfinite(artificial_stress.epsilon) && artificial_stress.epsilon >= 0 &&
+              artificial_stress.epsilon <= 1,
+          "settings.artificial_stress.epsilon must lie in [0, 1] (typical 0.3-0.5)");
+  require(finite_positive(artificial_stress.exponent), "settings.artificial_stress.exponent must be > 0 (typical 2.55-4)");
+  require(std::isfinite(xsph.chi) && xsph.chi >= 0 && xsph.chi <= 1, "settings.xsph.chi must lie in [0, 1]");
+  require(std::isfinite(gravity_x) && std::isfinite(gravity_y), "settings.gravity must be finite");
+  require(std::isfinite(damping) && damping >= 0, "settings.damping must be >= 0 1/s");
+  require(finite_positive(cfl) && cfl <= 0.5, "settings.cfl must lie in (0, 0.5] (typical 0.1-0.2)");
+  require(finite_positive(acceleration_safety) && acceleration_safety <= 0.5,
+          "settings.acceleration_safety must lie in (0, 0.5]");
+  require(std::isfinite(end_time) && end_time >= 0, "settings.end_time must be >= 0 s");
+  require(std::isfinite(output_interval), "settings.output_interval must be finite");
+  require(std::isfinite(checkpoint_interval_wall_s), "settings.checkpoint_interval_wall_s must be finite");
+  require(finite_positive(blow_up_speed_factor), "settings.blow_up_speed_factor must be > 0");
+  require(finite_positive(blow_up_energy_factor), "settings.blow_up_energy_factor must be > 0");
+}
+
+void Model::validate() const {
+  settings.validate();
+  require(!materials.empty(), "model: at least one material is required");
+  require(materials.size() <= 65535, "model: at most 65535 materials");
+  for (const auto& m : materials) m.validate();
+  const auto& p = particles;
+  const std::size_t n = p.size();
+  bool sizes_ok = true;
+  const_cast<Particles&>(p).for_each_array([&](auto& a) { sizes_ok = sizes_ok && a.size() == n; });
+  require(sizes_ok, "model: particle arrays have inconsistent sizes");
+  require(p.count(ParticleKind::soil) > 0, "model: no soil particles");
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p.material[i] >= materials.size())
+      throw std::invalid_argument("model: particle " + std::to_string(p.id[i]) + " has material " +
+                                  std::to_string(p.material[i]) + " but only " +
+                                  std::to_string(materials.size()) + " materials exist");
+    if (!finite_positive(p.mass[i]) || !finite_positive(p.rho[i]) || !std::isfinite(p.x[i]) ||
+        !std::isfinite(p.y[i]))
+      throw std::invalid_argument("model: particle " + std::to_string(p.id[i]) +
+                                  " has a non-positive mass/density or a non-finite position");
+    if (p.kind[i] > 1) throw std::invalid_argument("model: particle " + std::to_string(p.id[i]) + " has an unknown kind");
+  }
+}
+
+bool Model::uses_artificial_stress() const {
+  switch (settings.artificial_stress.mode) {
+    case ArtificialStressMode::off: return false;
+    case ArtificialStressMode::on: return settings.artificial_stress.epsilon > 0;
+    case ArtificialStressMode::automatic:
+      for (const auto& m : materials)
+        if (m.plastic && m.cohesion > 0) return settings.artificial_stress.epsilon > 0;
+      return false;
+  }
+  return false;
+}
+
+std::size_t estimate_memory_bytes(std::size_t n) {
+  const std::size_t particle_state = n * (Particles::double_array_count * sizeof(double) + 4 + 2 + 1);
+  const std::size_t workspace = n * (16 * sizeof(double) + 2 * sizeof(std::uint32_t));  // half-step, R, reorder scratch
+  const std::size_t output = n * 40 * sizeof(double) / 4;  // VTU writer buffers (one field at a time)
+  return particle_state + workspace + CellList::estimate_bytes(n) + output + (1u << 20);
+}
+
+}  // namespace sph

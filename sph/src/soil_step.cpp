@@ -1,0 +1,556 @@
+#include "sph/soil_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+namespace sph {
+
+namespace {
+constexpr std::size_t kBlock = 1024;  // fixed block size: reductions are independent of the thread count
+
+using Index = std::int64_t;
+}  // namespace
+
+struct SoilStep::Impl {
+  CellList cells;
+  // index lists (sorted positions), rebuilt after every sort
+  std::vector<std::uint32_t> soil, walls;
+  // half-step values (reordered with the particles)
+  std::vector<double> vxh, vyh, rhoh, sxxh, syyh, szzh, sxyh;
+  // per-evaluation scratch (recomputed after every sort)
+  std::vector<double> pxx, pyy, pxy, volume, sound, is_soil;  // sigma/rho^2, m/rho, c, 0/1
+  std::vector<double> rxx, ryy, rxy;                           // artificial stress R/rho^2 terms
+  std::vector<double> xsph_dx, xsph_dy;                        // XSPH velocity corrections
+  // reorder scratch
+  std::vector<double> tmp_d;
+  std::vector<std::uint32_t> tmp_u32;
+  std::vector<std::uint16_t> tmp_u16;
+  std::vector<std::uint8_t> tmp_u8;
+  std::vector<double> block_a, block_b, block_c;
+  void (*eval)(SoilStep&, Model&, Impl&) = nullptr;
+  double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
+
+  template <class F>
+  void for_each_carried_array(F&& f) {
+    f(vxh); f(vyh); f(rhoh); f(sxxh); f(syyh); f(szzh); f(sxyh);
+  }
+};
+
+namespace {
+
+template <class T>
+void permute(std::vector<T>& a, const std::vector<std::uint32_t>& order, std::vector<T>& tmp) {
+  const Index n = static_cast<Index>(order.size());
+  tmp.resize(order.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) tmp[static_cast<std::size_t>(k)] = a[order[static_cast<std::size_t>(k)]];
+  a.swap(tmp);
+}
+
+void index_kinds(const Particles& p, SoilStep::Impl& w) {
+  w.soil.clear();
+  w.walls.clear();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const bool soil = p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil);
+    w.is_soil[i] = soil ? 1.0 : 0.0;
+    (soil ? w.soil : w.walls).push_back(static_cast<std::uint32_t>(i));
+  }
+}
+
+void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
+  Particles& p = model.particles;
+  const std::size_t n = p.size();
+  w.cells.build(p.x.data(), p.y.data(), n, cell_size);
+  const auto& order = w.cells.order();
+  p.for_each_double_array([&](std::vector<double>& a) { permute(a, order, w.tmp_d); });
+  permute(p.id, order, w.tmp_u32);
+  permute(p.material, order, w.tmp_u16);
+  permute(p.kind, order, w.tmp_u8);
+  w.for_each_carried_array([&](std::vector<double>& a) { permute(a, order, w.tmp_d); });
+  index_kinds(p, w);
+}
+
+// Wall particles: Shepard-weighted soil stress with the Adami et al. (2012) hydrostatic correction on the
+// normal components, and a ghost velocity (no-slip: -v_avg; free-slip: v_avg mirrored in the wall normal).
+template <class Kernel>
+void wall_pass(Model& model, SoilStep::Impl& w, const Kernel& kernel) {
+  Particles& p = model.particles;
+  const double support2 = kernel.support() * kernel.support();
+  const double gx = model.settings.gravity_x, gy = model.settings.gravity_y;
+  const bool no_slip = model.settings.wall_slip == WallSlip::no_slip;
+  const Index nw = static_cast<Index>(w.walls.size());
+  const double* x = p.x.data();
+  const double* y = p.y.data();
+  const double* is_soil = w.is_soil.data();
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < nw; ++k) {
+    const std::size_t i = w.walls[static_cast<std::size_t>(k)];
+    const double xi = x[i], yi = y[i];
+    double sw = 0, sxx = 0, syy = 0, szz = 0, sxy = 0, hydro = 0, svx = 0, svy = 0;
+    w.cells.for_each_candidate(i, [&](std::uint32_t j) {
+      const double dx = xi - x[j], dy = yi - y[j];
+      const double r2 = dx * dx + dy * dy;
+      if (r2 >= support2 || is_soil[j] == 0.0) return;  // walls never read other walls (no data race)
+      const double wgt = kernel.value(std::sqrt(r2));
+      sw += wgt;
+      sxx += p.sxx[j] * wgt;
+      syy += p.syy[j] * wgt;
+      szz += p.szz[j] * wgt;
+      sxy += p.sxy[j] * wgt;
+      hydro += p.rho[j] * (gx * dx + gy * dy) * wgt;  // rho_f g.(x_w - x_f)
+      svx += p.vx[j] * wgt;
+      svy += p.vy[j] * wgt;
+    });
+    if (sw > 0) {
+      const double inv = 1.0 / sw;
+      const double axx = sxx * inv, ayy = syy * inv, axy = sxy * inv;
+      const double ax = svx * inv, ay = svy * inv;
+      if (no_slip) {
+        // shear traction continuous across the wall; ghost velocity opposite to the soil's (2 v_wall - v, v_wall = 0)
+        p.sxx[i] = axx;
+        p.syy[i] = ayy;
+        p.sxy[i] = axy;
+        p.vx[i] = -ax;
+        p.vy[i] = -ay;
+      } else {
+        // free slip: mirror stress and velocity in the wall, Q = I - 2 n n: sigma_w = Q sigma Q (the
+        // normal-tangential shear changes sign, so the wall transmits no shear traction), v_w = Q v
+        const double nx = p.wall_nx[i], ny = p.wall_ny[i];
+        const double q11 = 1.0 - 2.0 * nx * nx, q12 = -2.0 * nx * ny, q22 = 1.0 - 2.0 * ny * ny;
+        // (Q S Q) for symmetric S = [axx axy; axy ayy]
+        const double t11 = q11 * axx + q12 * axy, t12 = q11 * axy + q12 * ayy;
+        const double t21 = q12 * axx + q22 * axy, t22 = q12 * axy + q22 * ayy;
+        p.sxx[i] = t11 * q11 + t12 * q12;
+        p.sxy[i] = t11 * q12 + t12 * q22;
+        p.syy[i] = t21 * q12 + t22 * q22;
+        const double vn = ax * nx + ay * ny;
+        p.vx[i] = ax - 2.0 * vn * nx;
+        p.vy[i] = ay - 2.0 * vn * ny;
+      }
+      // Adami et al. (2012) hydrostatic correction of the normal stresses: sigma_w -= sum rho_f g.(x_w - x_f) W / sum W
+      p.sxx[i] -= hydro * inv;
+      p.syy[i] -= hydro * inv;
+      p.szz[i] = (szz - hydro) * inv;
+    } else {
+      p.sxx[i] = p.syy[i] = p.szz[i] = p.sxy[i] = 0.0;
+      p.vx[i] = p.vy[i] = 0.0;
+    }
+  }
+}
+
+// Per-particle quantities used by the pair loop (all particles, soil and wall).
+void prepare_pass(Model& model, SoilStep::Impl& w, const std::vector<MaterialConstants>& mc, bool artificial_stress,
+                  double epsilon) {
+  Particles& p = model.particles;
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const double inv_rho = 1.0 / p.rho[i];
+    const double inv_rho2 = inv_rho * inv_rho;
+    w.pxx[i] = p.sxx[i] * inv_rho2;
+    w.pyy[i] = p.syy[i] * inv_rho2;
+    w.pxy[i] = p.sxy[i] * inv_rho2;
+    w.volume[i] = p.mass[i] * inv_rho;
+    w.sound[i] = mc[p.material[i]].sound_speed;
+    if (artificial_stress) {
+      // Gray, Monaghan & Swift (2001): principal in-plane stresses; R' = -eps sigma'/rho^2 for tension.
+      const double a = p.sxx[i], b = p.syy[i], c = p.sxy[i];
+      const double mean = 0.5 * (a + b);
+      const double rad = std::sqrt(0.25 * (a - b) * (a - b) + c * c);
+      const double s1 = mean + rad, s2 = mean - rad;
+      const double theta = 0.5 * std::atan2(2.0 * c, a - b);
+      const double cs = std::cos(theta), sn = std::sin(theta);
+      const double r1 = s1 > 0 ? -epsilon * s1 * inv_rho2 : 0.0;
+      const double r2 = s2 > 0 ? -epsilon * s2 * inv_rho2 : 0.0;
+      w.rxx[i] = r1 * cs * cs + r2 * sn * sn;
+      w.ryy[i] = r1 * sn * sn + r2 * cs * cs;
+      w.rxy[i] = (r1 - r2) * sn * cs;
+    }
+  }
+}
+
+// Rates for every soil particle; pairs are gathered from the perspective of i (no write conflicts).
+template <class Kernel, bool kArtificialStress, bool kXsph>
+void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
+  Particles& p = model.particles;
+  const Settings& st = model.settings;
+  const Kernel kernel(self.smoothing_length());
+  sort_and_index(model, w, kernel.support());
+  wall_pass(model, w, kernel);
+  prepare_pass(model, w, self.material_constants(), kArtificialStress, st.artificial_stress.epsilon);
+
+  const double h = kernel.h();
+  const double support2 = kernel.support() * kernel.support();
+  const double eta2 = st.viscosity.eta_factor * h * h;
+  const double alpha = st.viscosity.alpha, beta = st.viscosity.beta;
+  const double inv_w_dx = 1.0 / w.w_dx;
+  const double as_n = st.artificial_stress.exponent;
+  const double chi = st.xsph.chi;
+  const double gx = st.gravity_x, gy = st.gravity_y, damping = st.damping;
+  const auto& mc = self.material_constants();
+
+  const double* x = p.x.data();
+  const double* y = p.y.data();
+  const double* vx = p.vx.data();
+  const double* vy = p.vy.data();
+  const double* rho = p.rho.data();
+  const double* mass = p.mass.data();
+  const double* pxx = w.pxx.data();
+  const double* pyy = w.pyy.data();
+  const double* pxy = w.pxy.data();
+  const double* vol = w.volume.data();
+  const double* snd = w.sound.data();
+  const double* rxx = w.rxx.data();
+  const double* ryy = w.ryy.data();
+  const double* rxy = w.rxy.data();
+
+  const Index ns = static_cast<Index>(w.soil.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < ns; ++k) {
+    const std::size_t i = w.soil[static_cast<std::size_t>(k)];
+    const double xi = x[i], yi = y[i], vxi = vx[i], vyi = vy[i], rhoi = rho[i], ci = snd[i];
+    const double pxxi = pxx[i], pyyi = pyy[i], pxyi = pxy[i];
+    double rxxi = 0, ryyi = 0, rxyi = 0;
+    if constexpr (kArtificialStress) {
+      rxxi = rxx[i]; ryyi = ryy[i]; rxyi = rxy[i];
+    }
+    double drho = 0, axi = 0, ayi = 0, lxx = 0, lxy = 0, lyx = 0, lyy = 0, xsx = 0, xsy = 0;
+    IndexRange ranges[3];
+    const int nr = w.cells.candidate_ranges(i, ranges);
+    for (int rr = 0; rr < nr; ++rr) {
+      for (std::uint32_t j = ranges[rr].begin; j < ranges[rr].end; ++j) {
+        const double dx = xi - x[j], dy = yi - y[j];
+        const double r2 = dx * dx + dy * dy;
+        if (r2 >= support2) continue;
+        const double r = std::sqrt(r2);
+        const double F = kernel.gradient_factor(r);
+        const double gwx = F * dx, gwy = F * dy;  // grad_i W_ij
+        const double dvx = vxi - vx[j], dvy = vyi - vy[j];  // v_i - v_j
+        const double mj = mass[j];
+        const double vj = vol[j];
+        drho += mj * (dvx * gwx + dvy * gwy);
+        // velocity gradient L_ab = sum V_j (v_j - v_i)_a dW/dx_b
+        lxx -= vj * dvx * gwx;
+        lxy -= vj * dvx * gwy;
+        lyx -= vj * dvy * gwx;
+        lyy -= vj * dvy * gwy;
+        // Monaghan artificial viscosity, approaching pairs only (v_ij . x_ij < 0)
+        const double vr = std::min(dvx * dx + dvy * dy, 0.0);
+        const double mu = h * vr / (r2 + eta2);
+        const double rho_bar = 0.5 * (rhoi + rho[j]);
+        const double pi_ij = (-alpha * 0.5 * (ci + snd[j]) * mu + beta * mu * mu) / rho_bar;
+        double txx = pxxi + pxx[j] - pi_ij;
+        double tyy = pyyi + pyy[j] - pi_ij;
+        double txy = pxyi + pxy[j];
+        if constexpr (kArtificialStress) {
+          const double f = kernel.value(r) * inv_w_dx;
+          const double fn = f > 0 ? std::exp(as_n * std::log(f)) : 0.0;
+          txx += fn * (rxxi + rxx[j]);
+          tyy += fn * (ryyi + ryy[j]);
+          txy += fn * (rxyi + rxy[j]);
+        }
+        axi += mj * (txx * gwx + txy * gwy);
+        ayi += mj * (txy * gwx + tyy * gwy);
+        if constexpr (kXsph) {
+          const double wv = mj / rho_bar * kernel.value(r);
+          xsx -= wv * dvx;
+          xsy -= wv * dvy;
+        }
+      }
+    }
+    p.drho[i] = drho;
+    p.ax[i] = axi + gx - damping * vxi;
+    p.ay[i] = ayi + gy - damping * vyi;
+    const Stress s{p.sxx[i], p.syy[i], p.szz[i], p.sxy[i]};
+    const StressRate sr = stress_rate(mc[p.material[i]], s, lxx, lyy, 0.5 * (lxy + lyx), 0.5 * (lxy - lyx));
+    p.dsxx[i] = sr.rate.xx;
+    p.dsyy[i] = sr.rate.yy;
+    p.dszz[i] = sr.rate.zz;
+    p.dsxy[i] = sr.rate.xy;
+    p.dplastic_strain[i] = sr.plastic_strain_rate;
+    p.dplastic_work[i] = sr.plastic_work_rate / rhoi;
+    if constexpr (kXsph) {
+      w.xsph_dx[i] = chi * xsx;
+      w.xsph_dy[i] = chi * xsy;
+    }
+  }
+}
+
+template <class Kernel>
+void (*pick_eval(bool as, bool xsph))(SoilStep&, Model&, SoilStep::Impl&) {
+  if (as) return xsph ? &evaluate_rates<Kernel, true, true> : &evaluate_rates<Kernel, true, false>;
+  return xsph ? &evaluate_rates<Kernel, false, true> : &evaluate_rates<Kernel, false, false>;
+}
+
+// Deterministic block reduction over soil particles: f(i) -> 3 sums.
+template <class F>
+void block_sums(const std::vector<std::uint32_t>& idx, std::vector<double>& a, std::vector<double>& b,
+                std::vector<double>& c, F&& f, double& sa, double& sb, double& sc) {
+  const std::size_t n = idx.size();
+  const std::size_t nb = (n + kBlock - 1) / kBlock;
+  a.assign(nb, 0.0);
+  b.assign(nb, 0.0);
+  c.assign(nb, 0.0);
+#pragma omp parallel for schedule(static)
+  for (Index bb = 0; bb < static_cast<Index>(nb); ++bb) {
+    const std::size_t lo = static_cast<std::size_t>(bb) * kBlock, hi = std::min(n, lo + kBlock);
+    double xa = 0, xb = 0, xc = 0;
+    for (std::size_t k = lo; k < hi; ++k) f(idx[k], xa, xb, xc);
+    a[static_cast<std::size_t>(bb)] = xa;
+    b[static_cast<std::size_t>(bb)] = xb;
+    c[static_cast<std::size_t>(bb)] = xc;
+  }
+  sa = sb = sc = 0;
+  for (std::size_t k = 0; k < nb; ++k) {
+    sa += a[k];
+    sb += b[k];
+    sc += c[k];
+  }
+}
+
+}  // namespace
+
+SoilStep::SoilStep(Model& model) : model_(model), impl_(std::make_unique<Impl>()) {
+  model_.validate();
+  const Settings& st = model_.settings;
+  if (st.gravity_mode == GravityMode::geostatic_k0 && (st.gravity_x != 0.0 || !(st.gravity_y < 0.0)))
+    throw std::invalid_argument("settings.gravity_mode geostatic_k0 needs gravity along -y (gravity_x = 0, gravity_y < 0)");
+  h_ = st.smoothing_length();
+  for (const auto& m : model_.materials) mc_.push_back(MaterialConstants::from(m));
+  c_max_ = 0;
+  for (const auto& c : mc_) c_max_ = std::max(c_max_, c.sound_speed);
+  artificial_stress_ = model_.uses_artificial_stress();
+  auto& w = *impl_;
+  const std::size_t n = model_.particles.size();
+  w.for_each_carried_array([n](std::vector<double>& a) { a.assign(n, 0.0); });
+  for (auto* a : {&w.pxx, &w.pyy, &w.pxy, &w.volume, &w.sound, &w.is_soil, &w.rxx, &w.ryy, &w.rxy, &w.xsph_dx,
+                  &w.xsph_dy, &w.tmp_d})
+    a->assign(n, 0.0);
+  w.tmp_u32.assign(n, 0);
+  w.tmp_u16.assign(n, 0);
+  w.tmp_u8.assign(n, 0);
+  w.soil.reserve(n);
+  w.walls.reserve(n);
+  const double dx = st.particle_spacing;
+  if (st.kernel == KernelType::cubic_spline) {
+    w.eval = pick_eval<CubicSplineKernel>(artificial_stress_, st.xsph.enabled);
+    w.w_dx = CubicSplineKernel(h_).value(dx);
+  } else {
+    w.eval = pick_eval<WendlandC2Kernel>(artificial_stress_, st.xsph.enabled);
+    w.w_dx = WendlandC2Kernel(h_).value(dx);
+  }
+  if (!(w.w_dx > 0)) throw std::invalid_argument("settings.h_over_dx too small: W(dx) = 0");
+}
+
+SoilStep::~SoilStep() = default;
+
+void SoilStep::apply_geostatic_stress() {
+  Particles& p = model_.particles;
+  const double g = -model_.settings.gravity_y;
+  const double dx = model_.settings.particle_spacing;
+  std::vector<std::uint32_t> soil;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil)) soil.push_back(static_cast<std::uint32_t>(i));
+  if (soil.empty()) return;
+  double xmin = p.x[soil[0]];
+  for (auto i : soil) xmin = std::min(xmin, p.x[i]);
+  auto column = [&](std::uint32_t i) { return static_cast<long long>(std::floor((p.x[i] - xmin) / dx + 0.5)); };
+  // sort by (column, y descending, id) so that the walk is deterministic
+  std::sort(soil.begin(), soil.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const auto ca = column(a), cb = column(b);
+    if (ca != cb) return ca < cb;
+    if (p.y[a] != p.y[b]) return p.y[a] > p.y[b];
+    return p.id[a] < p.id[b];
+  });
+  long long current = std::numeric_limits<long long>::min();
+  double above = 0;  // sum rho dx g of the particles above in this column
+  for (auto i : soil) {
+    const long long c = column(i);
+    if (c != current) {
+      current = c;
+      above = 0;
+    }
+    const double rho_g_dx = p.rho[i] * g * dx;
+    const double syy = -(above + 0.5 * rho_g_dx);
+    above += rho_g_dx;
+    const double k0 = mc_[p.material[i]].k0;
+    p.syy[i] = syy;
+    p.sxx[i] = k0 * syy;
+    p.szz[i] = k0 * syy;
+    p.sxy[i] = 0.0;
+    Stress s{p.sxx[i], p.syy[i], p.szz[i], p.sxy[i]};
+    return_to_yield_surface(mc_[p.material[i]], s);  // a K0 state may violate the yield criterion near faces
+    p.sxx[i] = s.xx; p.syy[i] = s.yy; p.szz[i] = s.zz; p.sxy[i] = s.xy;
+  }
+}
+
+void SoilStep::evaluate() { impl_->eval(*this, model_, *impl_); }
+
+void SoilStep::initialise() {
+  RunState& rs = model_.state;
+  if (model_.settings.gravity_mode == GravityMode::geostatic_k0 && !rs.initial_stress_applied && rs.step == 0) {
+    apply_geostatic_stress();
+    rs.initial_stress_applied = true;
+    rs.rates_valid = false;
+  }
+  if (!rs.rates_valid) {
+    evaluate();
+    rs.rates_valid = true;
+  } else {
+    // resumed state: keep the stored order (the next step sorts exactly as the uninterrupted run did)
+    index_kinds(model_.particles, *impl_);
+  }
+}
+
+double SoilStep::stable_time_step() const {
+  const Particles& p = model_.particles;
+  const auto& soil = impl_->soil;
+  const Index ns = static_cast<Index>(soil.size());
+  double a2max = 0, v2max = 0;
+#pragma omp parallel for schedule(static) reduction(max : a2max, v2max)
+  for (Index k = 0; k < ns; ++k) {
+    const std::size_t i = soil[static_cast<std::size_t>(k)];
+    a2max = std::max(a2max, p.ax[i] * p.ax[i] + p.ay[i] * p.ay[i]);
+    v2max = std::max(v2max, p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+  }
+  const Settings& st = model_.settings;
+  const double vmax = std::sqrt(v2max);
+  const double dt_c =
+      st.cfl * h_ / (c_max_ * (1.0 + 1.2 * st.viscosity.alpha) + vmax * (1.0 + 2.4 * st.viscosity.beta));
+  const double amax = std::sqrt(a2max);
+  const double dt_a = amax > 0 ? st.acceleration_safety * std::sqrt(h_ / amax) : std::numeric_limits<double>::infinity();
+  return std::min(dt_c, dt_a);
+}
+
+void SoilStep::advance(double dt) {
+  Particles& p = model_.particles;
+  auto& w = *impl_;
+  const double half = 0.5 * dt;
+  {
+    const Index ns = static_cast<Index>(w.soil.size());
+#pragma omp parallel for schedule(static)
+    for (Index k = 0; k < ns; ++k) {
+      const std::size_t i = w.soil[static_cast<std::size_t>(k)];
+      const double vxh = p.vx[i] + half * p.ax[i];
+      const double vyh = p.vy[i] + half * p.ay[i];
+      w.vxh[i] = vxh;
+      w.vyh[i] = vyh;
+      p.x[i] += dt * vxh;
+      p.y[i] += dt * vyh;
+      p.vx[i] += dt * p.ax[i];
+      p.vy[i] += dt * p.ay[i];
+      w.rhoh[i] = p.rho[i] + half * p.drho[i];
+      p.rho[i] += dt * p.drho[i];
+      w.sxxh[i] = p.sxx[i] + half * p.dsxx[i];
+      w.syyh[i] = p.syy[i] + half * p.dsyy[i];
+      w.szzh[i] = p.szz[i] + half * p.dszz[i];
+      w.sxyh[i] = p.sxy[i] + half * p.dsxy[i];
+      Stress s{p.sxx[i] + dt * p.dsxx[i], p.syy[i] + dt * p.dsyy[i], p.szz[i] + dt * p.dszz[i],
+               p.sxy[i] + dt * p.dsxy[i]};
+      return_to_yield_surface(mc_[p.material[i]], s);
+      p.sxx[i] = s.xx; p.syy[i] = s.yy; p.szz[i] = s.zz; p.sxy[i] = s.xy;
+      p.plastic_strain[i] += half * p.dplastic_strain[i];
+      p.plastic_work[i] += half * p.dplastic_work[i];
+    }
+  }
+  evaluate();  // sorts (index lists change), extrapolates walls, computes rates at the predicted state
+  {
+    const bool xsph = model_.settings.xsph.enabled;
+    const Index ns = static_cast<Index>(w.soil.size());
+#pragma omp parallel for schedule(static)
+    for (Index k = 0; k < ns; ++k) {
+      const std::size_t i = w.soil[static_cast<std::size_t>(k)];
+      p.vx[i] = w.vxh[i] + half * p.ax[i];
+      p.vy[i] = w.vyh[i] + half * p.ay[i];
+      p.rho[i] = w.rhoh[i] + half * p.drho[i];
+      Stress s{w.sxxh[i] + half * p.dsxx[i], w.syyh[i] + half * p.dsyy[i], w.szzh[i] + half * p.dszz[i],
+               w.sxyh[i] + half * p.dsxy[i]};
+      const ReturnResult rr = return_to_yield_surface(mc_[p.material[i]], s);
+      p.sxx[i] = s.xx; p.syy[i] = s.yy; p.szz[i] = s.zz; p.sxy[i] = s.xy;
+      p.plastic_strain[i] += half * p.dplastic_strain[i] + rr.plastic_strain;
+      p.plastic_work[i] += half * p.dplastic_work[i] + rr.plastic_work / p.rho[i];
+      if (xsph) {
+        p.x[i] += dt * w.xsph_dx[i];
+        p.y[i] += dt * w.xsph_dy[i];
+      }
+    }
+  }
+  model_.state.time += dt;
+  model_.state.step += 1;
+}
+
+Energies SoilStep::energies() const {
+  const Particles& p = model_.particles;
+  auto& w = *impl_;
+  const double gx = model_.settings.gravity_x, gy = model_.settings.gravity_y;
+  Energies e;
+  block_sums(
+      w.soil, w.block_a, w.block_b, w.block_c,
+      [&](std::size_t i, double& ke, double& pe, double& pw) {
+        ke += 0.5 * p.mass[i] * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+        pe -= p.mass[i] * (gx * p.x[i] + gy * p.y[i]);
+        pw += p.mass[i] * p.plastic_work[i];
+      },
+      e.kinetic, e.potential, e.plastic_dissipation);
+  double v2 = 0;
+  const Index ns = static_cast<Index>(w.soil.size());
+#pragma omp parallel for schedule(static) reduction(max : v2)
+  for (Index k = 0; k < ns; ++k) {
+    const std::size_t i = w.soil[static_cast<std::size_t>(k)];
+    v2 = std::max(v2, p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+  }
+  e.max_speed = std::sqrt(v2);
+  return e;
+}
+
+Health SoilStep::check_health() const {
+  const Particles& p = model_.particles;
+  const auto& soil = impl_->soil;
+  const Index ns = static_cast<Index>(soil.size());
+  const double vlimit = model_.settings.blow_up_speed_factor * c_max_;
+  const double v2lim = vlimit * vlimit;
+  Index first_bad = std::numeric_limits<Index>::max();
+#pragma omp parallel for schedule(static) reduction(min : first_bad)
+  for (Index k = 0; k < ns; ++k) {
+    const std::size_t i = soil[static_cast<std::size_t>(k)];
+    const double sum = p.x[i] + p.y[i] + p.vx[i] + p.vy[i] + p.rho[i] + p.sxx[i] + p.syy[i] + p.szz[i] + p.sxy[i] +
+                       p.plastic_strain[i];
+    const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
+    if (!std::isfinite(sum) || !(v2 <= v2lim) || !(p.rho[i] > 0)) first_bad = std::min(first_bad, k);
+  }
+  Health h;
+  if (first_bad == std::numeric_limits<Index>::max()) return h;
+  h.ok = false;
+  const std::size_t i = soil[static_cast<std::size_t>(first_bad)];
+  std::ostringstream os;
+  os.precision(6);
+  os << "blow-up at step " << model_.state.step << " (t = " << model_.state.time << " s): particle " << p.id[i]
+     << " (at x = " << p.x[i] << ", y = " << p.y[i] << ") ";
+  struct Field { const char* name; double v; };
+  const Field fields[] = {{"x", p.x[i]}, {"y", p.y[i]}, {"vx", p.vx[i]}, {"vy", p.vy[i]}, {"density", p.rho[i]},
+                          {"stress_xx", p.sxx[i]}, {"stress_yy", p.syy[i]}, {"stress_zz", p.szz[i]},
+                          {"stress_xy", p.sxy[i]}, {"plastic_strain", p.plastic_strain[i]}};
+  bool named = false;
+  for (const auto& f : fields)
+    if (!std::isfinite(f.v)) {
+      os << "has non-finite " << f.name;
+      named = true;
+      break;
+    }
+  if (!named) {
+    if (!(p.rho[i] > 0))
+      os << "has non-positive density " << p.rho[i];
+    else
+      os << "has speed " << std::sqrt(p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]) << " m/s in field velocity, above "
+         << vlimit << " m/s (blow_up_speed_factor x sound speed)";
+  }
+  h.diagnostic = os.str();
+  return h;
+}
+
+}  // namespace sph

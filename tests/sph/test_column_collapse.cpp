@@ -1,0 +1,73 @@
+// Granular column collapse of Bui, Fukagawa, Sako & Ohno (2008), IJNAMG 32:1537 (aluminium bars,
+// 0.2 m x 0.1 m, rho = 2650, E = 0.84 MPa, nu = 0.3, phi = 19.8 deg, c = 0, psi = 0), coarse (dx = 5 mm).
+//
+// References for the deposit (aspect ratio a = H0/L0 = 0.5):
+//  * final height: for a <= 0.65 the top of the column is not reached by the failure, h_inf = h0
+//    (Nguyen, Bui & Fukagawa 2015, arXiv:1512.05180, aluminium rods; Lube et al. 2005 PRE 72:041301: H_inf/L0 = a
+//    for a < 1.15). Tolerance: -8 % / +5 % (one particle spacing is 5 %).
+//  * run-out L_inf from the back wall: Lube et al. (2005), quasi-2-D channel: (L_inf - L0)/L0 = 1.2 a -> 0.32 m;
+//    Lajeunesse et al. (2005) Phys. Fluids 17:103302: 1.8 a -> 0.38 m; Nguyen, Bui & Fukagawa (2015), true-2-D
+//    aluminium rods (the material class of Bui 2008): (d_inf - d0)/d0 = 3.25 a^0.96, fitted for a >= 0.65,
+//    extrapolated to a = 0.5 -> 0.53 m. (These laws are secondary-source values, see docs/sph.md.) We accept
+//    0.32 m <= L_inf <= 0.56 m (from the Lube law to the rod law + 5 %); a broken solver (no friction: the mass
+//    reaches the far wall at 0.6 m; no flow: 0.2 m) fails. This solver gives 0.48 m (dx = 5 mm) and 0.50 m (2.5 mm).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "sph/benchmarks.hpp"
+#include "sph/integrator/run.hpp"
+
+TEST_CASE("granular column collapse (Bui et al. 2008) deposit matches the experiments' scaling laws",
+          "[sph][validation][collapse]") {
+  sph::ColumnCollapseCase c;
+  c.dx = 0.005;
+  c.end_time = 1.0;
+  sph::Model model = sph::make_column_collapse(c);
+  model.settings.output_interval = 0;
+  sph::RunOptions opt;
+  const auto sum = sph::run(model, opt);
+  REQUIRE(sum.stopped_because == "end_time");
+  const auto d = sph::measure_deposit(model);
+  std::printf("column collapse dx = %.4f m: run-out %.4f m, height %.4f m, KE_end %.3g J/m, %zu soil particles, "
+              "%llu steps, %.0f particle-steps/s\n",
+              c.dx, d.runout, d.height, sum.kinetic_energy, sum.soil_particles,
+              static_cast<unsigned long long>(sum.steps), sum.particle_steps_per_second);
+  CHECK(d.height >= 0.092);
+  CHECK(d.height <= 0.105);
+  CHECK(d.runout >= 0.32);
+  CHECK(d.runout <= 0.56);
+  // the deposit is at rest at t = 1 s: kinetic energy below 0.1 % of the potential energy released
+  CHECK(sum.kinetic_energy < 1e-3 * (model.state.initial_potential_energy - sum.potential_energy));
+  // energy: plastic dissipation must account for most of the released potential energy
+  CHECK(sum.plastic_dissipation > 0.3 * (model.state.initial_potential_energy - sum.potential_energy));
+}
+
+// Resolution study (not part of ctest: hidden tag). SPH_STUDY_DX selects dx [m].
+TEST_CASE("column collapse resolution study", "[.study]") {
+  sph::ColumnCollapseCase c;
+  if (const char* e = std::getenv("SPH_STUDY_DX")) c.dx = std::atof(e);
+  if (const char* e = std::getenv("SPH_STUDY_HDX")) c.h_over_dx = std::atof(e);
+  if (const char* e = std::getenv("SPH_STUDY_SLIP")) c.wall_slip = std::string(e) == "free" ? sph::WallSlip::free_slip : sph::WallSlip::no_slip;
+  c.end_time = 1.0;
+  sph::Model model = sph::make_column_collapse(c);
+  model.settings.output_interval = 0.05;
+  sph::RunOptions opt;
+  if (const char* e = std::getenv("SPH_STUDY_OUT")) opt.output_dir = e;
+  const auto sum = sph::run(model, opt);
+  const auto d = sph::measure_deposit(model);
+  std::printf("study dx = %.4f h/dx = %.2f: run-out %.4f m, height %.4f m, KE_end %.3g, %llu steps, %.3g s wall, %s\n",
+              c.dx, c.h_over_dx, d.runout, d.height, sum.kinetic_energy, static_cast<unsigned long long>(sum.steps),
+              sum.wall_seconds, sum.stopped_because.c_str());
+  // surface profile
+  for (double x = 0.0; x < d.runout + 0.01; x += 0.02) {
+    double top = 0;
+    for (std::size_t i = 0; i < model.particles.size(); ++i)
+      if (model.particles.kind[i] == 0 && std::fabs(model.particles.x[i] - x) < c.dx)
+        top = std::max(top, model.particles.y[i] + 0.5 * c.dx);
+    std::printf("  x = %.3f  surface %.4f\n", x, top);
+  }
+}

@@ -1,0 +1,126 @@
+// Constitutive update (Bui et al. 2008, IJNAMG 32:1537, section 3): Drucker-Prager return, tension cracking,
+// Jaumann objectivity and plane-strain Hooke's law.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "sph/material.hpp"
+
+using namespace sph;
+
+namespace {
+MaterialConstants soil(double c, double phi, double psi = 0.0) {
+  Material m;
+  m.youngs_modulus = 20e6;
+  m.poisson_ratio = 0.3;
+  m.cohesion = c;
+  m.friction_angle_deg = phi;
+  m.dilatancy_angle_deg = psi;
+  m.density = 2000;
+  return MaterialConstants::from(m);
+}
+double sqrt_j2(const Stress& s) { return std::sqrt(second_deviatoric_invariant(s)); }
+}  // namespace
+
+TEST_CASE("Drucker-Prager constants are the plane-strain Mohr-Coulomb match", "[sph][constitutive]") {
+  // seed-002 section 2.9: phi = 20 deg -> alpha = 0.11185, k = 0.92190 c
+  const auto mc = soil(10e3, 20.0);
+  CHECK(mc.alpha_phi == Approx(0.11185).epsilon(1e-4));
+  CHECK(mc.k_c == Approx(0.92190 * 10e3).epsilon(1e-4));
+  CHECK(mc.sound_speed == Approx(std::sqrt((mc.bulk_modulus + 4 * mc.shear_modulus / 3) / 2000)).epsilon(1e-12));
+}
+
+TEST_CASE("a trial stress outside the yield surface returns onto it", "[sph][constitutive]") {
+  const auto mc = soil(10e3, 30.0);
+  Stress s{-50e3, -150e3, -80e3, 60e3};
+  REQUIRE(yield_function(mc, s) > 0);
+  const double I1 = first_invariant(s);
+  const auto res = return_to_yield_surface(mc, s);
+  CHECK(res.scaled);
+  CHECK_FALSE(res.tension_cracked);
+  CHECK(std::fabs(yield_function(mc, s)) < 1e-9 * 1e5);
+  CHECK(first_invariant(s) == Approx(I1).epsilon(1e-14));  // scaling keeps the mean stress
+  CHECK(res.plastic_strain > 0);
+  CHECK(res.plastic_work > 0);
+  // a state inside is untouched
+  Stress in{-100e3, -100e3, -100e3, 1e3};
+  const Stress copy = in;
+  const auto r2 = return_to_yield_surface(mc, in);
+  CHECK_FALSE(r2.scaled);
+  CHECK(in.xx == copy.xx);
+  CHECK(in.xy == copy.xy);
+}
+
+TEST_CASE("tension beyond the apex is cracked back to I1 = k_c/alpha_phi (Bui 2008)", "[sph][constitutive]") {
+  const auto mc = soil(5e3, 25.0);
+  Stress s{80e3, 40e3, 30e3, 10e3};
+  REQUIRE(mc.alpha_phi * first_invariant(s) - mc.k_c > 0);
+  const auto res = return_to_yield_surface(mc, s);
+  CHECK(res.tension_cracked);
+  CHECK(first_invariant(s) == Approx(mc.k_c / mc.alpha_phi).epsilon(1e-12));
+  // at the apex the deviator must vanish (r = 0)
+  CHECK(sqrt_j2(s) < 1e-9);
+  // cohesionless soil: any tension goes to zero stress
+  const auto sand = soil(0.0, 30.0);
+  Stress t{100.0, -20.0, 0.0, 30.0};
+  return_to_yield_surface(sand, t);
+  CHECK(std::fabs(t.xx) < 1e-12);
+  CHECK(std::fabs(t.yy) < 1e-12);
+  CHECK(std::fabs(t.xy) < 1e-12);
+}
+
+TEST_CASE("elastic loading below yield gives plane-strain Hooke's law exactly", "[sph][constitutive]") {
+  const auto mc = soil(1e9, 30.0);  // far from yield
+  const Stress s{-100e3, -200e3, -90e3, 5e3};
+  const double exx = 1e-3, eyy = -2e-3, exy = 0.5e-3;
+  const auto r = stress_rate(mc, s, exx, eyy, exy, 0.0);
+  const double lam = mc.lame_lambda, G = mc.shear_modulus;
+  CHECK(r.rate.xx == Approx((lam + 2 * G) * exx + lam * eyy).epsilon(1e-13));
+  CHECK(r.rate.yy == Approx(lam * exx + (lam + 2 * G) * eyy).epsilon(1e-13));
+  CHECK(r.rate.zz == Approx(lam * (exx + eyy)).epsilon(1e-13));
+  CHECK(r.rate.xy == Approx(2 * G * exy).epsilon(1e-13));
+  CHECK(r.plastic_multiplier == 0.0);
+}
+
+TEST_CASE("plastic flow keeps the stress on the yield surface (consistency, Bui's lambda_dot)", "[sph][constitutive]") {
+  for (double psi : {0.0, 10.0, 30.0}) {
+    const auto mc = soil(10e3, 30.0, psi);
+    Stress s{-50e3, -150e3, -80e3, 60e3};
+    return_to_yield_surface(mc, s);
+    // shear loading on the surface: the rate must be tangent to f = 0 (df/dsigma : dsigma = 0)
+    const auto r = stress_rate(mc, s, 1e-4, -2e-4, 3e-4, 0.0);
+    REQUIRE(r.plastic_multiplier > 0);
+    const double dt = 1e-3;
+    Stress next{s.xx + dt * r.rate.xx, s.yy + dt * r.rate.yy, s.zz + dt * r.rate.zz, s.xy + dt * r.rate.xy};
+    // first-order consistency: |f(next)| << |elastic increment|
+    const double scale = mc.shear_modulus * 3e-4 * dt;
+    CHECK(std::fabs(yield_function(mc, next)) < 0.02 * scale);
+    CHECK(r.plastic_strain_rate == Approx(r.plastic_multiplier * std::sqrt(2 * mc.alpha_psi * mc.alpha_psi + 1.0 / 3)));
+  }
+}
+
+TEST_CASE("a rigid-body rotation leaves the stress invariants unchanged (Jaumann objectivity)", "[sph][constitutive]") {
+  const auto mc = soil(1e9, 30.0);
+  // rigid rotation v = Omega x r: dvx/dy = -Omega, dvy/dx = Omega -> no strain rate, spin w_xy = -Omega
+  const double omega = 2.0;  // rad/s
+  const double wxy = -omega;
+  Stress s{-100e3, -30e3, -50e3, 20e3};
+  const Stress s0 = s;
+  const double t_end = 3.14159265358979323846 / omega / 2;  // quarter turn
+  const int n = 20000;
+  const double dt = t_end / n;
+  for (int k = 0; k < n; ++k) {  // RK2 (midpoint)
+    const auto r1 = stress_rate(mc, s, 0, 0, 0, wxy);
+    Stress mid{s.xx + 0.5 * dt * r1.rate.xx, s.yy + 0.5 * dt * r1.rate.yy, s.zz, s.xy + 0.5 * dt * r1.rate.xy};
+    const auto r2 = stress_rate(mc, mid, 0, 0, 0, wxy);
+    s.xx += dt * r2.rate.xx;
+    s.yy += dt * r2.rate.yy;
+    s.xy += dt * r2.rate.xy;
+  }
+  CHECK(first_invariant(s) == Approx(first_invariant(s0)).epsilon(1e-9));
+  CHECK(second_deviatoric_invariant(s) == Approx(second_deviatoric_invariant(s0)).epsilon(1e-8));
+  // a quarter turn of the body swaps the in-plane normal stresses and flips the shear
+  CHECK(s.xx == Approx(s0.yy).epsilon(1e-7));
+  CHECK(s.yy == Approx(s0.xx).epsilon(1e-7));
+  CHECK(s.xy == Approx(-s0.xy).epsilon(1e-6));
+}
