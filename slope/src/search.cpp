@@ -500,8 +500,9 @@ SearchResult search_critical(const Section& section, const std::vector<Method>& 
     }
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return fs[a * n_methods + k] < fs[b * n_methods + k]; });
-    Circle best = trials[order.front()].circle;
-    double best_fs = fs[order.front() * n_methods + k];
+    // candidate critical circles: the best coarse trial and the result of every refinement
+    std::vector<std::pair<double, Circle>> candidates_found{{fs[order.front() * n_methods + k],
+                                                             trials[order.front()].circle}};
     if (options.refine) {
       // up to three distinct starting circles (entry or exit more than 5 % of the section width apart)
       std::vector<std::size_t> starts;
@@ -524,20 +525,29 @@ SearchResult search_critical(const Section& section, const std::vector<Method>& 
         r.best_fs = fs[s * n_methods + k];
         nelder_mead(r, trial.circle, 0.05 * chord, 1e-5 * chord);
         nelder_mead(r, r.best_circle, 0.01 * chord, 1e-6 * chord);
-        if (r.best_fs < best_fs) {
-          best_fs = r.best_fs;
-          best = r.best_circle;
-        }
+        candidates_found.emplace_back(r.best_fs, r.best_circle);
       }
     }
-    // The critical surface with its slices and forces (same code path as the trials).
-    std::string reason;
-    std::optional<SlipMass> mass = slice_circle(section, best, options.slicing, &reason);
-    if (mass) {
-      critical.result = factor_of_safety(*mass, methods[k], true);
+    std::sort(candidates_found.begin(), candidates_found.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    // The critical surface with its slices and forces, through the public path (same code as the trials; a
+    // candidate that does not reproduce there, which only happens on ill-conditioned slivers, gives way to the
+    // next one).
+    for (const auto& [value, circle] : candidates_found) {
+      std::string reason;
+      std::optional<SlipMass> mass = slice_circle(section, circle, options.slicing, &reason);
+      if (!mass) {
+        if (critical.result.error.empty()) critical.result.error = std::string(method_key(methods[k])) + ": " + reason;
+        continue;
+      }
+      FsResult fs_result = factor_of_safety(*mass, methods[k], true);
+      if (!fs_result.factor_of_safety) {
+        if (critical.result.error.empty()) critical.result.error = fs_result.error;
+        continue;
+      }
+      critical.result = std::move(fs_result);
       critical.mass = std::move(mass);
-    } else {
-      critical.result.error = std::string(method_key(methods[k])) + ": " + reason;
+      break;
     }
     result.methods.push_back(std::move(critical));
   }
