@@ -27,9 +27,11 @@ namespace slope::detail {
 namespace {
 
 struct Sweep {
-  double end_force = 0.0;  // E after the last slice
+  double end_force = 0.0;         // E after the last slice
   double resisting_moment = 0.0;  // sum d (c' l + N' tan phi')
   bool finite = true;
+  int weakest_slice = -1;         // slice with the least available shear strength (relative to its scale)
+  double weakest_strength = 0.0;  // (c' l + N' tan phi') / (c' l + |N'| tan phi') there: < 0 is impossible
 };
 
 // One pass over the slices. f[k]: interslice function at the downslope boundary of the k-th slice from the entry.
@@ -56,6 +58,14 @@ Sweep sweep(const SliceTable& t, const double* f, double F, double lambda, Slice
     const double effective_normal = (a0 - x_right) * inv_m;
     const double available = cl + effective_normal * tp;
     moment += t.shear_arm[i] * available;
+    if (forces != nullptr) {
+      const double scale = cl + std::fabs(effective_normal) * tp;
+      const double relative = scale > 0.0 ? available / scale : 0.0;
+      if (out.weakest_slice < 0 || relative < out.weakest_strength) {
+        out.weakest_slice = i;
+        out.weakest_strength = relative;
+      }
+    }
     if (forces != nullptr) {
       SliceForces& sf = forces[i];
       sf.normal = effective_normal + U;
@@ -204,6 +214,17 @@ Outcome general_limit_equilibrium(const SliceTable& t, MethodWorkspace& ws, bool
       out.slice = i;
       return out;
     }
+  }
+  // Acceptability: no slice base may need a negative shear strength (an effective normal tension beyond the
+  // Mohr-Coulomb apex, N' < -c' l / tan phi'). Roots on steep slopes with cohesion can balance the equations
+  // that way, with interslice tensions many times the slice weights; they are not physical.
+  ws.forces.resize(static_cast<std::size_t>(n));
+  const Sweep check = sweep(t, ws.interface_function.data(), F, lambda, ws.forces.data());
+  if (check.weakest_slice >= 0 && check.weakest_strength < -1e-9) {
+    out.failure = Failure::negative_strength;
+    out.slice = check.weakest_slice;
+    out.value = lambda;
+    return out;
   }
   out.factor_of_safety = F;
   out.lambda = lambda;

@@ -19,6 +19,7 @@ enum class Failure {
   not_positive,        // the solution is not a positive finite number
   singular_recursion,  // Spencer / Morgenstern-Price: the interslice force recursion broke down
   lambda_out_of_range, // Spencer / Morgenstern-Price: |lambda| > maximum_lambda (non-physical root)
+  negative_strength,   // Spencer / Morgenstern-Price: a slice base would need c' l + N' tan phi' < 0
 };
 
 struct Outcome {
@@ -46,6 +47,7 @@ class MethodWorkspace {
   MethodWorkspace& operator=(const MethodWorkspace&) = delete;
 
   std::vector<double> numerator, friction_term, interface_function;
+  std::vector<SliceForces> forces;
   gsl_multiroot_fsolver* solver = nullptr;
   gsl_vector* start = nullptr;
 };

@@ -131,6 +131,11 @@ std::string describe_failure(const Outcome& outcome, const SliceTable& table) {
           << ", beyond |lambda| <= " << maximum_lambda << " (an interslice force steeper than about 72 degrees): "
           << "no physical solution";
       break;
+    case Failure::negative_strength:
+      out << "the (F, lambda = " << outcome.value << ") root needs a negative shear strength c' l + N' tan(phi')";
+      slice_text(outcome.slice);
+      out << " (effective normal tension beyond the Mohr-Coulomb limit): not a physical solution";
+      break;
     case Failure::singular_recursion:
       out << "the interslice force recursion breaks down (1 + lambda f k / m_a <= 0 or non-finite forces)";
       slice_text(outcome.slice);

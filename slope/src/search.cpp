@@ -37,7 +37,7 @@ using detail::Rejection;
 constexpr double penalty_value = 1e6;
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t rejection_kinds = 8;
-constexpr std::size_t failure_kinds = 8;
+constexpr std::size_t failure_kinds = 9;
 
 std::vector<double> linspace(double a, double b, int n) {
   std::vector<double> v;
@@ -122,7 +122,7 @@ class Engine {
   enum class Admit { ok, rejected, outside_limits, too_shallow };
 
   Engine(const Section& section, const std::vector<Method>& methods, const SearchOptions& options)
-      : section_(section), methods_(methods), options_(options), slicer_(section) {
+      : methods_(methods), options_(options), slicer_(section) {
     const detail::PreparedSection& ps = slicer_.prepared();
     relief_ = ps.ground_y_max - ps.ground_y_min;
     width_ = ps.x_max - ps.x_min;
@@ -296,7 +296,6 @@ class Engine {
     if (failures_[method_index][kind]++ == 0) failure_text_[method_index][kind] = detail::describe_failure(o, table_);
   }
 
-  const Section& section_;
   const std::vector<Method>& methods_;
   const SearchOptions& options_;
   detail::Slicer slicer_;
