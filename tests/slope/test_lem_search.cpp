@@ -26,7 +26,9 @@ double critical_fs(const slope::SearchResult& r, slope::Method m) {
   return *c.result.factor_of_safety;
 }
 
-// Taylor's stability number N = c / (gamma H F) of the critical circle for a phi = 0 slope.
+// Taylor's stability number N = c / (gamma H F) of the critical circle for a phi = 0 slope. With phi = 0,
+// moment equilibrium alone fixes F on a circle, so any factor of safety Spencer or Morgenstern-Price report on the
+// critical circle must be Bishop's; where no (F, lambda) exists they must say so instead (steep toe circles).
 double taylor_number(double beta_deg, double depth_factor, bool firm_base_at_toe) {
   const double H = 10.0, c = 20e3, gamma = 20e3;
   const double toe_y = firm_base_at_toe ? 0.0 : (depth_factor - 1.0) * H;
@@ -35,7 +37,14 @@ double taylor_number(double beta_deg, double depth_factor, bool firm_base_at_toe
   const double run = firm_base_at_toe ? 40.0 : 8.0 * depth_factor * H;
   const slope::Section s = simple_slope(H, angle, run, run + face, toe_y, material("clay", 20.0, 20.0, 0.0));
   const slope::SearchResult r = slope::search_critical(s, {slope::Method::bishop}, slope::SearchOptions{});
-  return c / (gamma * H * critical_fs(r, slope::Method::bishop));
+  const double bishop = critical_fs(r, slope::Method::bishop);
+  for (slope::Method m : {slope::Method::spencer, slope::Method::morgenstern_price}) {
+    const slope::FsResult other = slope::factor_of_safety(*r.methods[0].mass, m);
+    INFO(slope::method_key(m) << " on Bishop's critical circle, beta = " << beta_deg << ": " << other.error);
+    if (other.factor_of_safety) CHECK(*other.factor_of_safety == Approx(bishop).epsilon(1e-8));
+    else CHECK_FALSE(other.error.empty());
+  }
+  return c / (gamma * H * bishop);
 }
 
 }  // namespace
