@@ -25,11 +25,9 @@ struct SoilStep::Impl {
   std::vector<double> pxx, pyy, pxy, volume, sound, is_soil;  // sigma/rho^2, m/rho, c, 0/1
   std::vector<double> rxx, ryy, rxy;                           // artificial stress R/rho^2 terms
   std::vector<double> xsph_dx, xsph_dy;                        // XSPH velocity corrections
-  // reorder scratch
-  std::vector<double> tmp_d;
-  std::vector<std::uint32_t> tmp_u32;
-  std::vector<std::uint16_t> tmp_u16;
-  std::vector<std::uint8_t> tmp_u8;
+  // reorder back buffers (same layout as the particles and the carried arrays)
+  Particles back;
+  std::vector<double> back_carried[7];
   std::vector<double> block_a, block_b, block_c;
   void (*eval)(SoilStep&, Model&, Impl&) = nullptr;
   double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
@@ -41,15 +39,6 @@ struct SoilStep::Impl {
 };
 
 namespace {
-
-template <class T>
-void permute(std::vector<T>& a, const std::vector<std::uint32_t>& order, std::vector<T>& tmp) {
-  const Index n = static_cast<Index>(order.size());
-  tmp.resize(order.size());
-#pragma omp parallel for schedule(static)
-  for (Index k = 0; k < n; ++k) tmp[static_cast<std::size_t>(k)] = a[order[static_cast<std::size_t>(k)]];
-  a.swap(tmp);
-}
 
 void index_kinds(const Particles& p, SoilStep::Impl& w) {
   w.soil.clear();
@@ -65,12 +54,44 @@ void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
   Particles& p = model.particles;
   const std::size_t n = p.size();
   w.cells.build(p.x.data(), p.y.data(), n, cell_size);
-  const auto& order = w.cells.order();
-  p.for_each_double_array([&](std::vector<double>& a) { permute(a, order, w.tmp_d); });
-  permute(p.id, order, w.tmp_u32);
-  permute(p.material, order, w.tmp_u16);
-  permute(p.kind, order, w.tmp_u8);
-  w.for_each_carried_array([&](std::vector<double>& a) { permute(a, order, w.tmp_d); });
+  const std::uint32_t* order = w.cells.order().data();
+  // Gather every per-particle array into its back buffer in one parallel pass, then swap buffers.
+  constexpr int kCarried = 7;
+  constexpr int kDoubles = Particles::double_array_count + kCarried;
+  std::vector<double>* front[kDoubles];
+  std::vector<double>* back[kDoubles];
+  int f = 0;
+  p.for_each_double_array([&](std::vector<double>& a) { front[f++] = &a; });
+  w.for_each_carried_array([&](std::vector<double>& a) { front[f++] = &a; });
+  f = 0;
+  w.back.for_each_double_array([&](std::vector<double>& a) { back[f++] = &a; });
+  for (auto& a : w.back_carried) back[f++] = &a;
+  const double* src[kDoubles];
+  double* dst[kDoubles];
+  for (int k = 0; k < kDoubles; ++k) {
+    src[k] = front[k]->data();
+    dst[k] = back[k]->data();
+  }
+  const std::uint32_t* src_id = p.id.data();
+  const std::uint16_t* src_mat = p.material.data();
+  const std::uint8_t* src_kind = p.kind.data();
+  std::uint32_t* dst_id = w.back.id.data();
+  std::uint16_t* dst_mat = w.back.material.data();
+  std::uint8_t* dst_kind = w.back.kind.data();
+  const Index nn = static_cast<Index>(n);
+#pragma omp parallel for schedule(static)
+  for (Index kk = 0; kk < nn; ++kk) {
+    const auto k = static_cast<std::size_t>(kk);
+    const std::uint32_t o = order[k];
+    for (int a = 0; a < kDoubles; ++a) dst[a][k] = src[a][o];
+    dst_id[k] = src_id[o];
+    dst_mat[k] = src_mat[o];
+    dst_kind[k] = src_kind[o];
+  }
+  for (int k = 0; k < kDoubles; ++k) front[k]->swap(*back[k]);
+  p.id.swap(w.back.id);
+  p.material.swap(w.back.material);
+  p.kind.swap(w.back.kind);
   index_kinds(p, w);
 }
 
@@ -329,11 +350,10 @@ SoilStep::SoilStep(Model& model) : model_(model), impl_(std::make_unique<Impl>()
   const std::size_t n = model_.particles.size();
   w.for_each_carried_array([n](std::vector<double>& a) { a.assign(n, 0.0); });
   for (auto* a : {&w.pxx, &w.pyy, &w.pxy, &w.volume, &w.sound, &w.is_soil, &w.rxx, &w.ryy, &w.rxy, &w.xsph_dx,
-                  &w.xsph_dy, &w.tmp_d})
+                  &w.xsph_dy})
     a->assign(n, 0.0);
-  w.tmp_u32.assign(n, 0);
-  w.tmp_u16.assign(n, 0);
-  w.tmp_u8.assign(n, 0);
+  w.back.for_each_array([n](auto& a) { a.assign(n, {}); });
+  for (auto& a : w.back_carried) a.assign(n, 0.0);
   w.soil.reserve(n);
   w.walls.reserve(n);
   const double dx = st.particle_spacing;

@@ -2,6 +2,8 @@
 // deterministic: gathered pair sums in a fixed order, stable counting sort, fixed-block reductions).
 #include <catch2/catch.hpp>
 
+#include <omp.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -93,4 +95,25 @@ TEST_CASE("a blow-up stops the run with a diagnostic naming particle, field and 
   CHECK(s.diagnostic.find("particle") != std::string::npos);
   CHECK(s.diagnostic.find("step") != std::string::npos);
   CHECK(s.diagnostic.find("velocity") != std::string::npos);
+}
+
+TEST_CASE("the step gives the same state for 1 and 2 threads (no order-dependent reductions)", "[sph][checkpoint]") {
+  auto run_with = [](int threads) {
+    omp_set_num_threads(threads);
+    auto m = small_collapse();
+    m.settings.output_interval = 0;
+    sph::RunOptions o;
+    o.max_steps = 300;
+    sph::run(m, o);
+    return m;
+  };
+  const int before = omp_get_max_threads();
+  const auto a = run_with(1);
+  const auto b = run_with(2);
+  omp_set_num_threads(before);
+  std::size_t mismatches = 0;
+  for (std::size_t i = 0; i < a.particles.size(); ++i)
+    mismatches += (a.particles.x[i] != b.particles.x[i]) + (a.particles.sxx[i] != b.particles.sxx[i]) +
+                  (a.particles.vy[i] != b.particles.vy[i]) + (a.particles.id[i] != b.particles.id[i]);
+  CHECK(mismatches == 0);
 }
