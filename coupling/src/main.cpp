@@ -62,16 +62,19 @@ int main(int argc, char** argv) {
   std::string output_dir;
 
   CLI::App* check = app.add_subcommand("check", "Validate a scene file and explain every error.");
-  check->add_option("SCENE", scene_file, "Scene file (JSON, \"format\": \"sphslope-scene/1\")")->required();
+  check->add_option("SCENE", scene_file, "Scene file (JSON, \"format\": \"sphslope-scene/1\")")
+      ->required()
+      ->type_name("FILE");
 
   CLI::App* lem = app.add_subcommand(
       "lem", "Limit equilibrium only: critical circle and factor of safety per method, as a table on stdout.");
-  lem->add_option("SCENE", scene_file, "Scene file with a \"section\"")->required();
-  lem->add_option("-o,--output", output_dir, "Also write DIR/report.json (default: print only, write nothing)");
+  lem->add_option("SCENE", scene_file, "Scene file with a \"section\"")->required()->type_name("FILE");
+  lem->add_option("-o,--output", output_dir, "Also write DIR/report.json (default: print only, write nothing)")
+      ->type_name("DIR");
 
   CLI::App* run = app.add_subcommand("run", "Run every analysis the scene asks for and write DIR/report.json.");
-  run->add_option("SCENE", scene_file, "Scene file")->required();
-  run->add_option("-o,--output", output_dir, "Output folder (default: runs/<scene file stem>)");
+  run->add_option("SCENE", scene_file, "Scene file")->required()->type_name("FILE");
+  run->add_option("-o,--output", output_dir, "Output folder (default: runs/<scene file stem>)")->type_name("DIR");
 
   try {
     app.parse(argc, argv);
