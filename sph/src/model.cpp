@@ -76,10 +76,12 @@ bool Model::uses_artificial_stress() const {
 }
 
 std::size_t estimate_memory_bytes(std::size_t n) {
-  const std::size_t particle_state = n * (Particles::double_array_count * sizeof(double) + 4 + 2 + 1);
-  const std::size_t workspace = n * (16 * sizeof(double) + 2 * sizeof(std::uint32_t));  // half-step, R, reorder scratch
-  const std::size_t output = n * 40 * sizeof(double) / 4;  // VTU writer buffers (one field at a time)
-  return particle_state + workspace + CellList::estimate_bytes(n) + output + (1u << 20);
+  const std::size_t per_particle_state = Particles::double_array_count * sizeof(double) + 4 + 2 + 1;
+  const std::size_t state = 2 * n * per_particle_state;                    // particles + reorder back buffer
+  const std::size_t workspace = n * (2 * 7 + 11) * sizeof(double)           // half-step values (+ back), scratch
+                                + n * 2 * sizeof(std::uint32_t);            // index lists, moved list
+  const std::size_t output = n * (per_particle_state + 200);               // checkpoint buffer, VTU buffer
+  return state + workspace + CellList::estimate_bytes(n) + output + (std::size_t{1} << 20);
 }
 
 }  // namespace sph

@@ -28,6 +28,7 @@ struct SoilStep::Impl {
   // reorder back buffers (same layout as the particles and the carried arrays)
   Particles back;
   std::vector<double> back_carried[7];
+  std::vector<std::uint32_t> moved;  // sorted positions whose particle changes in this sort
   std::vector<double> block_a, block_b, block_c;
   void (*eval)(SoilStep&, Model&, Impl&) = nullptr;
   double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
@@ -55,7 +56,7 @@ void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
   const std::size_t n = p.size();
   w.cells.build(p.x.data(), p.y.data(), n, cell_size);
   const std::uint32_t* order = w.cells.order().data();
-  // Gather every per-particle array into its back buffer in one parallel pass, then swap buffers.
+  // Reorder every per-particle array (state and carried half-step values) by the sort permutation.
   constexpr int kCarried = 7;
   constexpr int kDoubles = Particles::double_array_count + kCarried;
   std::vector<double>* front[kDoubles];
@@ -66,19 +67,57 @@ void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
   f = 0;
   w.back.for_each_double_array([&](std::vector<double>& a) { back[f++] = &a; });
   for (auto& a : w.back_carried) back[f++] = &a;
-  const double* src[kDoubles];
+  double* src[kDoubles];
   double* dst[kDoubles];
   for (int k = 0; k < kDoubles; ++k) {
     src[k] = front[k]->data();
     dst[k] = back[k]->data();
   }
+  const Index nn = static_cast<Index>(n);
+  // Only the entries whose position changes need moving: the stable sort of a state sorted at the previous step
+  // is mostly the identity, and the set of moved indices is closed under the permutation.
+  w.moved.clear();
+  for (std::size_t k = 0; k < n; ++k)
+    if (order[k] != k) w.moved.push_back(static_cast<std::uint32_t>(k));
+  const Index nm = static_cast<Index>(w.moved.size());
+  const std::uint32_t* moved = w.moved.data();
+  if (nm == 0) {
+    index_kinds(p, w);
+    return;
+  }
+  if (2 * nm < nn) {
+    // sparse: gather the moved entries into the back buffers (compact), then scatter them back in place
+#pragma omp parallel
+    {
+#pragma omp for schedule(static)
+      for (Index jj = 0; jj < nm; ++jj) {
+        const auto j = static_cast<std::size_t>(jj);
+        const std::uint32_t o = order[moved[j]];
+        for (int a = 0; a < kDoubles; ++a) dst[a][j] = src[a][o];
+        w.back.id[j] = p.id[o];
+        w.back.material[j] = p.material[o];
+        w.back.kind[j] = p.kind[o];
+      }
+#pragma omp for schedule(static)
+      for (Index jj = 0; jj < nm; ++jj) {
+        const auto j = static_cast<std::size_t>(jj);
+        const std::uint32_t k = moved[j];
+        for (int a = 0; a < kDoubles; ++a) src[a][k] = dst[a][j];
+        p.id[k] = w.back.id[j];
+        p.material[k] = w.back.material[j];
+        p.kind[k] = w.back.kind[j];
+      }
+    }
+    index_kinds(p, w);
+    return;
+  }
+  // dense: gather everything into the back buffers, then swap
   const std::uint32_t* src_id = p.id.data();
   const std::uint16_t* src_mat = p.material.data();
   const std::uint8_t* src_kind = p.kind.data();
   std::uint32_t* dst_id = w.back.id.data();
   std::uint16_t* dst_mat = w.back.material.data();
   std::uint8_t* dst_kind = w.back.kind.data();
-  const Index nn = static_cast<Index>(n);
 #pragma omp parallel for schedule(static)
   for (Index kk = 0; kk < nn; ++kk) {
     const auto k = static_cast<std::size_t>(kk);
@@ -354,6 +393,7 @@ SoilStep::SoilStep(Model& model) : model_(model), impl_(std::make_unique<Impl>()
     a->assign(n, 0.0);
   w.back.for_each_array([n](auto& a) { a.assign(n, {}); });
   for (auto& a : w.back_carried) a.assign(n, 0.0);
+  w.moved.reserve(n);
   w.soil.reserve(n);
   w.walls.reserve(n);
   const double dx = st.particle_spacing;
