@@ -14,6 +14,7 @@
 
 #include "coupling/report.hpp"
 #include "coupling/scene.hpp"
+#include "coupling/sph_workflow.hpp"
 #include "coupling/workflow.hpp"
 
 namespace {
@@ -75,6 +76,10 @@ int main(int argc, char** argv) {
   CLI::App* run = app.add_subcommand("run", "Run every analysis the scene asks for and write DIR/report.json.");
   run->add_option("SCENE", scene_file, "Scene file")->required()->type_name("FILE");
   run->add_option("-o,--output", output_dir, "Output folder (default: runs/<scene file stem>)")->type_name("DIR");
+  bool resume = false;
+  run->add_flag("--resume", resume,
+                "Continue an interrupted SPH run from DIR/checkpoint.bin (same scene, same DIR); the result is the "
+                "same as an uninterrupted run");
 
   try {
     app.parse(argc, argv);
@@ -92,6 +97,8 @@ int main(int argc, char** argv) {
     if (!output_dir.empty()) options.output_dir = output_dir;
   } else {
     options.mode = coupling::Mode::run;
+    options.resume = resume;
+    coupling::install_interrupt_handler();  // Ctrl-C: checkpoint, report "interrupted", exit 1; --resume continues
     options.output_dir = output_dir.empty() ? coupling::default_output_dir(scene_file)
                                             : std::filesystem::path(output_dir);
   }

@@ -6,6 +6,8 @@
 
 #include "coupling/json_reader.hpp"
 #include "coupling/scene.hpp"
+#include "coupling/comparison.hpp"
+#include "coupling/sph_setup.hpp"
 #include "scene_internal.hpp"
 
 namespace coupling {
@@ -228,6 +230,8 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
 
   read_analyses(top, scene, has_section, diagnostics);
   top.finish();
+  check_sph_scene(scene, diagnostics);
+  if (scene.analyses.compare) read_comparison_options(*scene.analyses.compare, diagnostics);
 
   if (!diagnostics.empty()) throw SceneError(diagnostics.messages());
   return scene;

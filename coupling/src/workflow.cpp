@@ -8,7 +8,10 @@
 #include <system_error>
 
 #include "coupling/atomic_write.hpp"
+#include "coupling/comparison.hpp"
+#include "coupling/figures.hpp"
 #include "coupling/report.hpp"
+#include "coupling/sph_workflow.hpp"
 
 namespace coupling {
 
@@ -69,23 +72,110 @@ StageOutcome run_lem_stage(const Scene& scene, const LemAnalysis& analysis, Work
   return outcome;
 }
 
-// The SPH stage. Not part of this build yet: the SPH helper plugs the particle model in here (scene.section or
-// scene.bodies/walls -> sph::Model -> sph::run -> report["sph"]).
-StageOutcome run_sph_stage(const Scene& /*scene*/, WorkflowResult& out) {
+StageOutcome run_sph(const Scene& scene, const WorkflowOptions& options, WorkflowResult& out,
+                     std::optional<ParticleSnapshot>& final_state) {
   StageOutcome outcome;
-  outcome.status = ExitStatus::failed;
-  outcome.errors.push_back("sph: the SPH analysis is not implemented in this build of sphslope");
-  out.report["sph"] = {{"error", outcome.errors.back()}, {"stopped_because", "not_implemented"}};
+  const Clock::time_point start = Clock::now();
+  SphStageOptions sph_options;
+  sph_options.output_dir = options.output_dir;
+  sph_options.resume = options.resume;
+  sph_options.log = options.log;
+  SphStageResult result;
+  try {
+    result = run_sph_stage(scene, sph_options);
+  } catch (const SceneError& error) {
+    // Refused before it started (memory, particle or step limits; nothing to resume): a fault of the input.
+    outcome.status = ExitStatus::invalid_input;
+    outcome.errors = error.messages();
+    return outcome;
+  } catch (const std::exception& error) {
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back(std::string("sph: ") + error.what());
+    out.report["sph"] = {{"error", outcome.errors.back()}, {"stopped_because", "error"}};
+    out.report["timing_s"]["sph"] = seconds_since(start);
+    return outcome;
+  }
+  out.report["sph"] = result.report;
+  out.report["timing_s"]["sph"] = seconds_since(start);
+  if (!result.ok) {
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back("sph: " + result.error);
+  }
+  final_state = std::move(result.final_state);
   return outcome;
 }
 
-// The surface comparison stage (needs both LEM and SPH results). Not part of this build yet.
-StageOutcome run_compare_stage(const Scene& /*scene*/, WorkflowResult& out) {
+StageOutcome run_compare(const Scene& scene, WorkflowResult& out, const std::optional<ParticleSnapshot>& final_state,
+                         std::optional<SphFailure>& failure) {
   StageOutcome outcome;
-  outcome.status = ExitStatus::failed;
-  outcome.errors.push_back("compare: the comparison of SPH and LEM surfaces is not implemented in this build");
-  out.report["comparison"] = {{"error", outcome.errors.back()}};
+  const Clock::time_point start = Clock::now();
+  if (!final_state || !out.lem || !scene.section) {
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back("compare: needs both a finished SPH run and a limit-equilibrium result");
+    out.report["comparison"] = {{"error", outcome.errors.back()}};
+    return outcome;
+  }
+  Diagnostics diagnostics;
+  const ComparisonOptions options = *read_comparison_options(*scene.analyses.compare, diagnostics);
+  const slope::Section& section = scene.section->section;
+  failure = extract_sph_failure(*final_state, section.profile_lines.front().points, options);
+  out.report["comparison"] = comparison_report(section, *failure, *out.lem, options);
+  out.report["timing_s"]["compare"] = seconds_since(start);
   return outcome;
+}
+
+// figures/section.svg (and figures/fs_map.svg after a limit-equilibrium search) in the output folder.
+void write_figures(const Scene& scene, const WorkflowResult& out, const std::optional<ParticleSnapshot>& final_state,
+                   const std::optional<SphFailure>& failure, const std::filesystem::path& dir,
+                   nlohmann::json& report) {
+  const slope::Section* section = scene.section ? &scene.section->section : nullptr;
+  if (!section && !final_state) return;
+  const std::filesystem::path figures = dir / "figures";
+  std::filesystem::create_directories(figures);
+  nlohmann::json written = nlohmann::json::array();
+
+  SectionFigureData data;
+  data.title = scene.name;
+  data.section = section;
+  if (final_state && !final_state->x.empty()) data.particles = &*final_state;
+  if (out.lem) {
+    for (const auto& critical : out.lem->methods) {
+      if (!critical.mass || !critical.result.factor_of_safety) continue;
+      char label[96];
+      std::snprintf(label, sizeof label, "%s FS = %.3f", std::string(slope::method_key(critical.method)).c_str(),
+                    *critical.result.factor_of_safety);
+      data.lem_surfaces.push_back({label, lem_surface_polyline(*critical.mass)});
+    }
+  }
+  if (failure) {
+    data.final_ground = failure->final_ground;
+    if (failure->band.points.size() >= 2) {
+      char label[96];
+      std::snprintf(label, sizeof label, "SPH surface (plastic strain >= %g)", failure->band.plastic_strain_threshold);
+      data.sph_surface = NamedSurface{label, failure->band.points};
+    }
+    if (failure->fitted_circle && failure->band.points.size() >= 2)
+      data.sph_fitted_circle = NamedSurface{
+          "circle fitted to the SPH surface",
+          circle_arc(failure->fitted_circle->circle, failure->band.points.front().x, failure->band.points.back().x)};
+  }
+  atomic_write(figures / "section.svg", section_figure_svg(data));
+  written.push_back("figures/section.svg");
+
+  if (out.lem && section && !out.lem->fs_map.empty()) {
+    std::optional<slope::Circle> critical;
+    for (const auto& c : out.lem->methods)
+      if (c.mass && c.result.factor_of_safety) {
+        critical = c.mass->circle;
+        break;
+      }
+    const std::string method =
+        out.lem->methods.empty() ? std::string() : std::string(slope::method_key(out.lem->methods.front().method));
+    atomic_write(figures / "fs_map.svg",
+                 fs_map_svg(*section, out.lem->fs_map, critical, "Factor-of-safety map of the search (" + method + ")"));
+    written.push_back("figures/fs_map.svg");
+  }
+  report["figures"] = written;
 }
 
 }  // namespace
@@ -141,10 +231,25 @@ WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options) {
     out.report = nullptr;
     return out;
   }
+  std::optional<ParticleSnapshot> final_state;
+  std::optional<SphFailure> failure;
   if (options.mode == Mode::run) {
-    if (scene.analyses.sph) absorb(run_sph_stage(scene, out));
-    if (scene.analyses.compare) absorb(run_compare_stage(scene, out));
+    if (scene.analyses.sph && !absorb(run_sph(scene, options, out, final_state))) {
+      out.report = nullptr;
+      return out;
+    }
+    if (scene.analyses.compare) absorb(run_compare(scene, out, final_state, failure));
   }
+  if (options.output_dir && options.mode != Mode::check) {
+    try {
+      write_figures(scene, out, final_state, failure, *options.output_dir, out.report);
+    } catch (const std::exception& error) {
+      failures.push_back(std::string("cannot write the figures: ") + error.what());
+      out.status = ExitStatus::failed;
+    }
+  }
+  if (out.report.contains("comparison") && out.report["comparison"].contains("verdict") && options.log)
+    *options.log << "comparison: " << out.report["comparison"]["verdict"].get<std::string>() << "\n";
 
   out.report["status"] = failures.empty() ? "ok" : "failed";
   out.report["errors"] = failures;

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/failure_surface.hpp"
+#include "coupling/json_reader.hpp"
 #include "coupling/surface_comparison.hpp"
 #include "slope/search.hpp"
 
@@ -30,6 +31,10 @@ struct SphFailure {
   double farthest_toe_advance = 0.0;        // m, run-out of debris beyond the initial toe (0: none)
   double initial_toe_x = 0.0;               // m
 };
+
+// Reads analyses.compare (errors at "analyses.compare.<key>"): plastic_strain_threshold, bin_width_m,
+// configuration ("initial" | "current"), displacement_threshold_m.
+std::optional<ComparisonOptions> read_comparison_options(const nlohmann::json& block, Diagnostics& diagnostics);
 
 // Reads the failure surface out of the particle state. `initial_ground` is the section's ground surface.
 SphFailure extract_sph_failure(const ParticleSnapshot& particles, const Polyline& initial_ground,

@@ -29,6 +29,7 @@ struct WorkflowOptions {
   Mode mode = Mode::run;
   std::optional<std::filesystem::path> output_dir;  // report.json goes here; none: nothing is written
   std::ostream* log = nullptr;                      // progress and notes (stderr in the program); may be null
+  bool resume = false;                              // SPH: continue from output_dir/checkpoint.bin
 };
 
 struct WorkflowResult {

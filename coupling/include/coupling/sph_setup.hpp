@@ -1,0 +1,75 @@
+#pragma once
+// From a validated scene to an SPH particle model: the analyses.sph settings, the particle bodies (a slope
+// section filled on a lattice, or the polygons of a particle scene) and the walls. Every fault names its JSON
+// path; see docs/scene-format.md for the keys.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "coupling/json_reader.hpp"
+#include "coupling/scene.hpp"
+#include "sph/model.hpp"
+
+namespace coupling {
+
+struct WallSides {
+  bool left = true, right = true, bottom = true;
+};
+
+// A body of a particle scene: a polygon of one material.
+struct ParticleBody {
+  std::string name;
+  std::vector<slope::Point> polygon;  // m
+  SoilMaterial material;
+};
+
+// A particle scene's wall box: the inner box [x_min, x_max] x [bottom_y, bottom_y + height], walls on `sides`.
+struct WallBox {
+  double x_min = 0.0, x_max = 0.0, bottom_y = 0.0, height = 0.0;  // m
+  WallSides sides;
+};
+
+struct SphAnalysis {
+  sph::Settings settings;               // SI
+  WallSides section_walls;              // slope scenes: which sides of the section box carry walls
+  double quasi_static_speed = 0.0;      // m/s; stop once every particle is slower (0: run to end_time_s)
+  double quasi_static_min_time = 0.0;   // s; not before this simulated time
+  double memory_limit_bytes = 0.0;      // refuse a case whose estimate exceeds it
+  std::size_t max_particles = 0;        // refuse more soil + wall particles than this
+  double max_steps = 0.0;               // refuse a run that needs more time steps than this
+};
+
+// Reads analyses.sph (errors at "analyses.sph.<key>").
+std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagnostics& diagnostics);
+
+// Reads "bodies" and "walls" of a particle scene.
+std::optional<std::vector<ParticleBody>> read_particle_bodies(const nlohmann::json& bodies, Diagnostics& diagnostics);
+std::optional<WallBox> read_wall_box(const nlohmann::json& walls, Diagnostics& diagnostics);
+
+// Validates everything SPH needs from the scene (analysis block, bodies/walls or section materials). Called by
+// the scene loader so that "sphslope check" reports SPH faults too.
+void check_sph_scene(const Scene& scene, Diagnostics& diagnostics);
+
+// The particle count and memory a scene's SPH model would need, without building it.
+struct SphSize {
+  std::size_t soil_particles = 0;
+  std::size_t wall_particles = 0;
+  std::size_t memory_bytes = 0;
+};
+
+// Builds the particle model of a validated scene. Throws SceneError (path "analyses.sph.particle_spacing_m")
+// when the case would exceed the memory limit or the particle limit, before allocating particles.
+sph::Model build_sph_model(const Scene& scene, SphSize* size = nullptr);
+
+// Soil particle positions of a slope section on the cell-centred lattice of spacing dx anchored at the
+// section's lower-left corner, with the material of each (the profile line that is the top of its layer).
+struct SectionFill {
+  std::vector<slope::Point> points;
+  std::vector<std::size_t> materials;
+};
+SectionFill fill_section(const slope::Section& section, double dx);
+
+}  // namespace coupling

@@ -1,0 +1,153 @@
+#include "coupling/sph_workflow.hpp"
+
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <ostream>
+
+#include "coupling/json_reader.hpp"
+#include "coupling/sph_setup.hpp"
+#include "sph/checkpoint.hpp"
+#include "sph/integrator/run.hpp"
+
+namespace coupling {
+
+namespace {
+
+volatile std::sig_atomic_t interrupt_requested = 0;
+
+extern "C" void on_interrupt(int) { interrupt_requested = 1; }
+
+std::string duration_text(double seconds) {
+  char buffer[64];
+  if (!std::isfinite(seconds)) return "?";
+  if (seconds < 120.0) {
+    std::snprintf(buffer, sizeof buffer, "%.0f s", seconds);
+  } else if (seconds < 7200.0) {
+    std::snprintf(buffer, sizeof buffer, "%.1f min", seconds / 60.0);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%.1f h", seconds / 3600.0);
+  }
+  return buffer;
+}
+
+const char* kernel_key(sph::KernelType kernel) {
+  return kernel == sph::KernelType::cubic_spline ? "cubic_spline" : "wendland_c2";
+}
+
+}  // namespace
+
+void install_interrupt_handler() {
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+}
+
+SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options) {
+  SphSize size;
+  sph::Model model = build_sph_model(scene, &size);
+  Diagnostics unused;
+  const SphAnalysis analysis = *read_sph_analysis(*scene.analyses.sph, unused);
+
+  // Plan: the explicit step is bounded by the P-wave speed; say how many steps the run takes.
+  double fastest_wave = 0.0;
+  for (const auto& m : model.materials) fastest_wave = std::max(fastest_wave, sph::MaterialConstants::from(m).sound_speed);
+  const double h = model.settings.smoothing_length();
+  const double time_step = model.settings.cfl * h / fastest_wave;
+  const double planned_steps = model.settings.end_time / time_step;
+
+  if (planned_steps > analysis.max_steps) {
+    throw SceneError({"analyses.sph: the run needs about " + format_number(std::round(planned_steps)) +
+                      " time steps (P-wave speed " + format_number(fastest_wave) + " m/s, time step " +
+                      format_number(time_step) + " s for " + format_number(model.settings.end_time) +
+                      " s), more than analyses.sph.max_steps = " + format_number(analysis.max_steps) +
+                      "; the explicit step is bounded by the wave speed: use a smaller youngs_modulus_MPa "
+                      "(quasi-static runs tolerate a softer soil), a shorter end_time_s, or raise max_steps"});
+  }
+
+  SphStageResult result;
+  nlohmann::json& report = result.report;
+  report["particles"] = model.particles.size();
+  report["soil_particles"] = size.soil_particles;
+  report["wall_particles"] = size.wall_particles;
+  report["particle_spacing_m"] = model.settings.particle_spacing;
+  report["smoothing_length_m"] = h;
+  report["kernel"] = kernel_key(model.settings.kernel);
+  report["p_wave_speed_m_s"] = fastest_wave;
+  report["time_step_estimate_s"] = time_step;
+  report["planned_steps"] = std::llround(planned_steps);
+  report["memory_estimate_MiB"] = static_cast<double>(size.memory_bytes) / (1024.0 * 1024.0);
+
+  if (options.log) {
+    *options.log << "sph: " << size.soil_particles << " soil + " << size.wall_particles << " wall particles, dx = "
+                 << model.settings.particle_spacing << " m, h = " << h << " m, P-wave speed " << fastest_wave
+                 << " m/s, time step about " << time_step << " s: about " << std::llround(planned_steps)
+                 << " steps for " << model.settings.end_time << " s\n";
+  }
+
+  sph::RunOptions run_options;
+  if (options.output_dir) run_options.output_dir = options.output_dir->string();
+  run_options.quasi_static_speed = analysis.quasi_static_speed;
+  run_options.quasi_static_min_time = analysis.quasi_static_min_time;
+  run_options.progress_interval_wall_s = 2.0;
+  if (options.resume) {
+    if (!options.output_dir) throw SceneError({"--resume needs the run folder (-o DIR) that holds checkpoint.bin"});
+    const auto checkpoint = *options.output_dir / "checkpoint.bin";
+    if (!std::filesystem::exists(checkpoint))
+      throw SceneError({"--resume: no checkpoint at " + checkpoint.string() + " (start the run without --resume)"});
+    sph::read_checkpoint(checkpoint.string(), model);
+    if (options.log)
+      *options.log << "sph: resuming at t = " << model.state.time << " s (step " << model.state.step << ")\n";
+  }
+
+  sph::RunCallbacks callbacks;
+  if (options.log) {
+    std::ostream* log = options.log;
+    callbacks.progress = [log](const sph::Progress& p) {
+      char line[200];
+      std::snprintf(line, sizeof line, "sph: t = %.4g / %.4g s, step %llu, %.0f steps/s, dt %.3g s, max speed %.3g m/s, %s left\n",
+                    p.time, p.end_time, static_cast<unsigned long long>(p.step), p.steps_per_second, p.time_step,
+                    p.max_speed, duration_text(p.eta_seconds).c_str());
+      *log << line << std::flush;
+    };
+  }
+  interrupt_requested = 0;
+  callbacks.interrupt = [] { return interrupt_requested != 0; };
+
+  const sph::RunSummary summary = sph::run(model, run_options, callbacks);
+  report["steps"] = summary.total_steps;
+  report["steps_this_session"] = summary.steps;
+  report["simulated_time_s"] = summary.simulated_time;
+  report["seconds"] = summary.wall_seconds;
+  report["particle_steps_per_second"] = summary.particle_steps_per_second;
+  report["stopped_because"] = summary.stopped_because;
+  report["frames"] = summary.frames_written;
+  report["final_energy_J_m"] = {{"kinetic", summary.kinetic_energy},
+                                {"potential", summary.potential_energy},
+                                {"plastic_dissipation", summary.plastic_dissipation}};
+  if (options.output_dir)
+    report["files"] = {{"frames", "frames.pvd"}, {"energy_history", "energy.csv"}, {"checkpoint", "checkpoint.bin"}};
+  result.ok = summary.stopped_because == "end_time" || summary.stopped_because == "quasi_static";
+  if (!result.ok) {
+    result.error = summary.stopped_because == "interrupted"
+                       ? "the SPH run was interrupted at t = " + format_number(summary.simulated_time) +
+                             " s; continue it with --resume"
+                       : "the SPH run stopped (" + summary.stopped_because + "): " + summary.diagnostic;
+    report["error"] = result.error;
+  }
+
+  const auto& p = model.particles;
+  auto& snapshot = result.final_state;
+  snapshot.spacing = model.settings.particle_spacing;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::soil)) continue;
+    snapshot.x.push_back(p.x[i]);
+    snapshot.y.push_back(p.y[i]);
+    snapshot.x0.push_back(p.x0[i]);
+    snapshot.y0.push_back(p.y0[i]);
+    snapshot.plastic_strain.push_back(p.plastic_strain[i]);
+  }
+  return result;
+}
+
+}  // namespace coupling
