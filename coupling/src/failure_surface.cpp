@@ -28,6 +28,8 @@ FailureSurface plastic_band_surface(const ParticleSnapshot& particles, const Ban
   }
   const double gap = 1.5 * particles.spacing;
   std::vector<std::size_t> band;  // particles of the deepest runs that made a point
+  std::vector<int> point_bin;      // bin of each point
+  std::vector<std::size_t> point_band_start;  // first entry of `band` that belongs to each point
   for (int b = 0; b < bins; ++b) {
     auto& column = members[static_cast<std::size_t>(b)];
     std::sort(column.begin(), column.end(), [&](std::size_t a, std::size_t c) { return ys[a] < ys[c]; });
@@ -54,6 +56,27 @@ FailureSurface plastic_band_surface(const ParticleSnapshot& particles, const Ban
       continue;
     }
     surface.points.push_back({weighted_x / weight, weighted_y / weight});
+    point_bin.push_back(b);
+    point_band_start.push_back(band_start);
+  }
+  // Keep the longest chain of bins without a gap wider than one bin: isolated plastic spots (a wall corner,
+  // say) are not part of the slip surface.
+  if (!surface.points.empty()) {
+    std::size_t best_first = 0, best_last = 0, first = 0;
+    for (std::size_t k = 1; k <= surface.points.size(); ++k) {
+      if (k == surface.points.size() || point_bin[k] - point_bin[k - 1] > 2) {
+        if (k - 1 - first > best_last - best_first) {
+          best_first = first;
+          best_last = k - 1;
+        }
+        first = k;
+      }
+    }
+    const std::size_t band_end = best_last + 1 < point_band_start.size() ? point_band_start[best_last + 1] : band.size();
+    band = std::vector<std::size_t>(band.begin() + static_cast<std::ptrdiff_t>(point_band_start[best_first]),
+                                    band.begin() + static_cast<std::ptrdiff_t>(band_end));
+    surface.points = std::vector<slope::Point>(surface.points.begin() + static_cast<std::ptrdiff_t>(best_first),
+                                               surface.points.begin() + static_cast<std::ptrdiff_t>(best_last + 1));
   }
   surface.band_particles = band.size();
 

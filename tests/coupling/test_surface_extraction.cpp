@@ -121,3 +121,17 @@ TEST_CASE("sliding-mass polygons and their overlap: squares and a half-disc", "[
   const auto disc = coupling::sliding_mass_polygon(ground, coupling::circle_arc({0, 0, 5}, -5, 5, 2000));
   CHECK_THAT(coupling::polygon_area(disc), WithinRel(M_PI * 12.5, 1e-4));
 }
+
+TEST_CASE("band extraction drops an isolated plastic spot away from the band", "[extraction]") {
+  const slope::Circle truth{22.0, 24.0, 16.0};
+  auto particles = block_with_circular_band(truth, 0.6);
+  // A plastic corner 3 m left of the band's end (as soil rubbing on a wall can give).
+  for (std::size_t i = 0; i < particles.x0.size(); ++i)
+    if (particles.x0[i] < 1.0 && particles.y0[i] < 1.0) particles.plastic_strain[i] = 0.8;
+  const auto surface = coupling::plastic_band_surface(particles, {});
+  REQUIRE_FALSE(surface.points.empty());
+  CHECK(surface.points.front().x > 5.0);  // the band's left end is at x = 22 - sqrt(16^2 - 4^2) = 6.5 m
+  const auto fit = coupling::fit_circle(surface.points);
+  REQUIRE(fit.has_value());
+  CHECK_THAT(fit->circle.radius, WithinAbs(truth.radius, 0.0625));
+}
