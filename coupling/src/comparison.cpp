@@ -167,13 +167,30 @@ nlohmann::json comparison_report(const slope::Section& section, const SphFailure
   // Evaluate every method on the SPH fitted circle.
   std::optional<slope::SlipMass> sph_mass;
   std::string sph_mass_reason;
-  if (sph.fitted_circle) {
+  double circle_raised = 0.0;
+  if (sph.fitted_circle && sph.entry && sph.exit) {
+    // A band lying on the rigid base gives a fitted circle that dips a little below it, which no slip circle
+    // may do. Raise the circle by the dip when it is within one particle spacing (half a bin).
+    slope::Circle circle = sph.fitted_circle->circle;
+    const double from = std::min(sph.entry->x, sph.exit->x), to = std::max(sph.entry->x, sph.exit->x);
+    const double lowest_x = std::clamp(circle.xc, from, to);
+    const double lowest_y = circle.yc - std::sqrt(std::max(0.0, circle.radius * circle.radius -
+                                                               (lowest_x - circle.xc) * (lowest_x - circle.xc)));
+    const double dip = section.bottom_y - lowest_y;
+    if (dip > 0.0 && dip <= 0.5 * sph.band.bin_width) {
+      circle_raised = dip + 1e-6;
+      circle.yc += circle_raised;
+    }
     slope::SliceOptions slicing;
-    sph_mass = slope::slice_circle(section, sph.fitted_circle->circle, slicing, &sph_mass_reason);
+    sph_mass = slope::slice_circle(section, circle, slicing, &sph_mass_reason);
   }
+  report["sph_surface"]["circle_raised_for_lem_m"] = circle_raised;
   const Polyline sph_polygon = sliding_mass_polygon(ground, sph.band.points);
 
   nlohmann::json methods = nlohmann::json::object();
+  bool has_bishop = false;
+  for (const auto& critical : lem.methods)
+    has_bishop = has_bishop || (critical.method == slope::Method::bishop && critical.mass.has_value());
   std::ostringstream verdict;
   bool verdict_done = false;
   for (const auto& critical : lem.methods) {
@@ -215,8 +232,9 @@ nlohmann::json comparison_report(const slope::Section& section, const SphFailure
     m["intersection_over_union"] = overlap.intersection_over_union;
     methods[key] = m;
 
-    // The verdict is told against the first method asked for that has a surface.
-    if (!verdict_done && sph.entry) {
+    // The verdict is told against Bishop's circle when Bishop was asked for, else the first method with a surface.
+    const bool verdict_method = critical.method == slope::Method::bishop || !has_bishop;
+    if (!verdict_done && verdict_method && sph.entry) {
       verdict_done = true;
       const double mid_x = 0.5 * (distances.common_from_x + distances.common_to_x);
       const double depth_difference = polyline_height(lem_line, mid_x) - polyline_height(sph.band.points, mid_x);

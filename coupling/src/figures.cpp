@@ -104,23 +104,37 @@ std::string fs_map_svg(const slope::Section& section, const std::vector<slope::F
   Bounds bounds;
   for (const auto& line : section.profile_lines) bounds.add(line.points);
   bounds.add(section.x_min(), section.bottom_y);
+  // Centres of nearly flat circles lie far above the section; the map shows the window around the section
+  // (a quarter of its width on each side, three quarters above) and says how many centres it leaves out.
+  const double span = bounds.x_max - bounds.x_min;
+  const double window_x_min = bounds.x_min - 0.25 * span, window_x_max = bounds.x_max + 0.25 * span;
+  const double window_y_min = bounds.y_min, window_y_max = bounds.y_max + 0.75 * span;
+  std::vector<const slope::FsMapEntry*> shown;
+  for (const auto& entry : fs_map)
+    if (entry.circle.xc >= window_x_min && entry.circle.xc <= window_x_max && entry.circle.yc >= window_y_min &&
+        entry.circle.yc <= window_y_max)
+      shown.push_back(&entry);
   double fs_min = std::numeric_limits<double>::infinity(), fs_max = 0.0;
   for (const auto& entry : fs_map) {
-    bounds.add(entry.circle.xc, entry.circle.yc);
     fs_min = std::min(fs_min, entry.factor_of_safety);
     fs_max = std::max(fs_max, entry.factor_of_safety);
   }
+  for (const auto* entry : shown) {
+    bounds.add(entry->circle.xc, entry->circle.yc);
+  }
+  if (critical) bounds.add(critical->xc, critical->yc);
   bounds.pad(0.03);
   // Colour up to twice the minimum: the interesting range; higher values saturate.
   const double fs_top = std::isfinite(fs_min) ? std::min(fs_max, 2.0 * fs_min) : 1.0;
   if (!std::isfinite(fs_min)) fs_min = 0.0;
 
   SvgCanvas canvas(bounds.x_min, bounds.x_max, bounds.y_min, bounds.y_max);
-  canvas.title(title);
+  const std::size_t hidden = fs_map.size() - shown.size();
+  canvas.title(title + " - " + std::to_string(fs_map.size()) + " trial circles" +
+               (hidden > 0 ? ", " + std::to_string(hidden) + " centres far above the section not shown" : ""));
   draw_section(canvas, section);
   // Highest factors first so the low (critical) ones are drawn on top.
-  std::vector<const slope::FsMapEntry*> order;
-  for (const auto& entry : fs_map) order.push_back(&entry);
+  std::vector<const slope::FsMapEntry*> order = shown;
   std::sort(order.begin(), order.end(),
             [](const auto* a, const auto* b) { return a->factor_of_safety > b->factor_of_safety; });
   for (const auto* entry : order) {

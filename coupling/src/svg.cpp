@@ -148,30 +148,36 @@ void SvgCanvas::colour_bar(double value_min, double value_max, const std::string
 }
 
 void SvgCanvas::legend(const std::vector<std::tuple<std::string, std::string, std::string>>& entries) {
-  const double x = px(x_max_) - 230, y = py(y_max_) + 12;
-  rect_px(x - 8, y - 6, 232, 20.0 * static_cast<double>(entries.size()) + 8, "white", "#999");
-  double row = y + 8;
-  for (const auto& [colour, dash, label] : entries) {
-    body_ << "<line x1=\"" << number(x) << "\" y1=\"" << number(row) << "\" x2=\"" << number(x + 30) << "\" y2=\""
-          << number(row) << "\" stroke=\"" << colour << "\" stroke-width=\"3\"";
-    if (!dash.empty()) body_ << " stroke-dasharray=\"" << dash << "\"";
-    body_ << "/>\n";
-    text(x + 38, row + 4, label, 12);
-    row += 20;
-  }
+  legend_ = entries;
 }
 
 void SvgCanvas::title(const std::string& content) { text(left_, 24, content, 15); }
 
 std::string SvgCanvas::str() const {
   std::ostringstream out;
-  const double width = left_ + plot_w_ + right_, height = top_ + plot_h_ + bottom_;
+  const double width = left_ + plot_w_ + right_;
+  constexpr double row_height = 20.0, column_width = 330.0;
+  const auto columns = static_cast<std::size_t>(std::max(1.0, std::floor(plot_w_ / column_width)));
+  const std::size_t rows = (legend_.size() + columns - 1) / columns;
+  const double legend_top = top_ + plot_h_ + bottom_;
+  const double height = legend_top + static_cast<double>(rows) * row_height + (rows > 0 ? 10.0 : 0.0);
+  std::ostringstream legend;
+  for (std::size_t k = 0; k < legend_.size(); ++k) {
+    const auto& [colour, dash, label] = legend_[k];
+    const double x = left_ + static_cast<double>(k % columns) * column_width;
+    const double y = legend_top + static_cast<double>(k / columns) * row_height + 8.0;
+    legend << "<line x1=\"" << number(x) << "\" y1=\"" << number(y) << "\" x2=\"" << number(x + 30) << "\" y2=\""
+           << number(y) << "\" stroke=\"" << colour << "\" stroke-width=\"3\"";
+    if (!dash.empty()) legend << " stroke-dasharray=\"" << dash << "\"";
+    legend << "/>\n<text x=\"" << number(x + 38) << "\" y=\"" << number(y + 4) << "\" font-size=\"12\" fill=\"#222\">"
+           << escape(label) << "</text>\n";
+  }
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(width) << "\" height=\"" << number(height)
       << "\" viewBox=\"0 0 " << number(width) << ' ' << number(height)
       << "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << body_.str() << "</svg>\n";
+      << body_.str() << legend.str() << "</svg>\n";
   return out.str();
 }
 

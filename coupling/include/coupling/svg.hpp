@@ -2,6 +2,7 @@
 // A small SVG canvas in world coordinates (m, y up) with equal scales on both axes, for report figures.
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "slope/section.hpp"
@@ -36,7 +37,7 @@ class SvgCanvas {
   void axes(const std::string& x_label = "x (m)", const std::string& y_label = "y (m)");
   // Vertical colour bar at the right margin, labelled with its quantity and unit.
   void colour_bar(double value_min, double value_max, const std::string& label);
-  // Legend entries (colour, dash, label) stacked at the top-right inside the plot.
+  // Legend entries (colour, dash, label), laid out in columns below the plot.
   void legend(const std::vector<std::tuple<std::string, std::string, std::string>>& entries);
   void title(const std::string& content);
 
@@ -48,6 +49,7 @@ class SvgCanvas {
   double left_ = 70.0, right_ = 140.0, top_ = 40.0, bottom_ = 55.0;
   double plot_w_, plot_h_;
   std::ostringstream body_;
+  std::vector<std::tuple<std::string, std::string, std::string>> legend_;
 };
 
 }  // namespace coupling
