@@ -81,11 +81,12 @@ void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
     if (order[k] != k) w.moved.push_back(static_cast<std::uint32_t>(k));
   const Index nm = static_cast<Index>(w.moved.size());
   const std::uint32_t* moved = w.moved.data();
-  if (nm == 0) {
-    index_kinds(p, w);
-    return;
-  }
+  if (nm == 0) return;  // same order: particle arrays and index lists are unchanged
   if (2 * nm < nn) {
+    // the soil/wall index lists only change if a moved position changes kind
+    bool kinds_change = false;
+    for (Index jj = 0; jj < nm && !kinds_change; ++jj)
+      kinds_change = p.kind[moved[jj]] != p.kind[order[moved[jj]]];
     // sparse: gather the moved entries into the back buffers (compact), then scatter them back in place
 #pragma omp parallel
     {
@@ -108,7 +109,7 @@ void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
         p.kind[k] = w.back.kind[j];
       }
     }
-    index_kinds(p, w);
+    if (kinds_change) index_kinds(p, w);
     return;
   }
   // dense: gather everything into the back buffers, then swap
@@ -394,6 +395,7 @@ SoilStep::SoilStep(Model& model) : model_(model), impl_(std::make_unique<Impl>()
   w.back.for_each_array([n](auto& a) { a.assign(n, {}); });
   for (auto& a : w.back_carried) a.assign(n, 0.0);
   w.moved.reserve(n);
+  index_kinds(model_.particles, w);  // valid for the current order; sorts keep them up to date
   w.soil.reserve(n);
   w.walls.reserve(n);
   const double dx = st.particle_spacing;

@@ -6,26 +6,28 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "sph/fill.hpp"
 #include "sph/integrator/run.hpp"
 
 namespace {
 
-double max_displacement_after(double cohesion, double t_end) {
+double max_displacement_after(double cohesion, double t_end, sph::GravityMode mode = sph::GravityMode::geostatic_k0,
+                               double youngs = 100e6, double dx = 0.5, double phi = 20) {
   sph::Model m;
   sph::Material soil;
   soil.name = "slope soil";
   soil.density = 2100;
-  soil.youngs_modulus = 100e6;
+  soil.youngs_modulus = youngs;
   soil.poisson_ratio = 0.3;
   soil.cohesion = cohesion;
-  soil.friction_angle_deg = 20;
+  soil.friction_angle_deg = phi;
   m.materials.push_back(soil);
   auto& s = m.settings;
-  s.particle_spacing = 0.5;
+  s.particle_spacing = dx;
   s.h_over_dx = 1.2;
-  s.gravity_mode = sph::GravityMode::geostatic_k0;
+  s.gravity_mode = mode;
   s.end_time = t_end;
   s.output_interval = 0;
   const std::vector<sph::Point> section{{0, 0}, {20, 0}, {10, 10}, {0, 10}};
@@ -38,6 +40,7 @@ double max_displacement_after(double cohesion, double t_end) {
   box.right = false;
   sph::add_box_walls(m.particles, box, s.particle_spacing, s.smoothing_length(), 0, soil.density);
   const auto sum = sph::run(m, {});
+  INFO(sum.diagnostic);
   REQUIRE(sum.stopped_because == "end_time");
   double umax = 0;
   for (std::size_t i = 0; i < m.particles.size(); ++i)
@@ -56,4 +59,10 @@ TEST_CASE("a slope of very high cohesion stays put", "[sph][validation][slope]")
 
 TEST_CASE("the same slope with low cohesion fails", "[sph][validation][slope]") {
   CHECK(max_displacement_after(2e3, 2.0) > 0.5);
+}
+
+// Thesis slope 2 (seed-002 section 4.2): c = 11 kPa, phi = 20 deg, E = 15 MPa, sudden gravity, 8 s (hidden study).
+TEST_CASE("thesis slope 2 study", "[.study]") {
+  const double dx = std::getenv("SPH_STUDY_DX") ? std::atof(std::getenv("SPH_STUDY_DX")) : 0.5;
+  max_displacement_after(11e3, 8.0, sph::GravityMode::sudden, 15e6, dx);
 }
