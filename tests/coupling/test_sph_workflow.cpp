@@ -1,0 +1,153 @@
+// End-to-end SPH runs through the sphslope program: the comparison on thesis slope 2 at a coarse resolution,
+// and resuming a killed run.
+#include <catch2/catch.hpp>
+
+#include <signal.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+void write_json(const fs::path& file, const nlohmann::json& value) {
+  std::ofstream out(file);
+  out << value.dump(2);
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("sphslope_test_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+int run_program(const std::string& arguments) {
+  const std::string command = std::string("\"") + SPHSLOPE_BINARY + "\" " + arguments + " > /dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string file_bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+bool finite_numbers(const nlohmann::json& value) {
+  if (value.is_number()) return std::isfinite(value.get<double>());
+  if (value.is_array() || value.is_object()) {
+    for (const auto& item : value)
+      if (!finite_numbers(item)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("thesis slope 2, coarse: the SPH failure surface runs from behind the crest to the toe, close to the LEM "
+          "circle",
+          "[sph][compare]") {
+  // Source: shared/seeds/seed-002 section 4.2 (thesis slope 2, 45 deg, H = 10 m, c = 11 kPa, phi = 20 deg); the
+  // thesis finds (Fig. 5-24 b) that its SPH surface and the Geo-Studio critical surface start and end at the same
+  // points. Here at dx = 0.5 m (20 particles over the height) and 3 s of collapse.
+  const fs::path dir = fresh_dir("slope2");
+  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/thesis_slope2.json");
+  scene["analyses"]["sph"]["particle_spacing_m"] = 0.5;
+  scene["analyses"]["sph"]["end_time_s"] = 3.0;
+  scene["analyses"]["lem"]["methods"] = {"bishop", "spencer"};
+  scene["analyses"]["compare"] = nlohmann::json::object();
+  write_json(dir / "scene.json", scene);
+
+  REQUIRE(run_program("run \"" + (dir / "scene.json").string() + "\" -o \"" + (dir / "out").string() + "\"") == 0);
+  const nlohmann::json report = read_json(dir / "out/report.json");
+  CHECK(report["format"] == "sphslope-report/1");
+  CHECK(report["status"] == "ok");
+  CHECK(report["sph"]["stopped_because"] == "end_time");
+  CHECK(finite_numbers(report));
+
+  const auto& surface = report["comparison"]["sph_surface"];
+  const double entry_x = surface["entry_m"][0], exit_x = surface["exit_m"][0], exit_y = surface["exit_m"][1];
+  CHECK(entry_x < 10.0);  // behind the crest edge (10, 10)
+  CHECK(entry_x > 0.0);
+  CHECK(std::abs(exit_x - 20.0) <= 2.0);  // at the toe (20, 0), within 4 spacings
+  CHECK(exit_y <= 2.0);
+
+  const auto& bishop = report["comparison"]["methods"]["bishop"];
+  CHECK(bishop["lem_factor_of_safety"].get<double>() < 1.0);  // the slope fails: LEM agrees
+  CHECK(bishop["mean_normal_distance_m"].get<double>() < 1.0);  // two particle spacings
+  CHECK(bishop["intersection_over_union"].get<double>() > 0.5);
+  CHECK(std::abs(bishop["exit_offset_m"][0].get<double>()) <= 2.0);
+  CHECK(report["comparison"]["verdict"].get<std::string>().find("bishop") != std::string::npos);
+
+  for (const char* figure : {"figures/section.svg", "figures/fs_map.svg", "frames.pvd", "energy.csv"})
+    CHECK(fs::file_size(dir / "out" / figure) > 100);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("an SPH run killed mid-way and resumed ends in the same state as an uninterrupted run", "[sph][resume]") {
+  // The column collapse of Bui et al. (2008) at dx = 5 mm (800 particles), 0.4 s, checkpoints every 0.1 s of
+  // wall time. The killed run is stopped with SIGKILL (no chance to write anything more) once its first
+  // checkpoint exists; `--resume` must then reach bitwise the same final checkpoint as the uninterrupted run.
+  const fs::path dir = fresh_dir("resume");
+  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/bui2008_column_collapse.json");
+  scene["analyses"]["sph"]["particle_spacing_m"] = 0.005;
+  scene["analyses"]["sph"]["end_time_s"] = 0.4;
+  scene["analyses"]["sph"]["output_interval_s"] = 0.1;
+  scene["analyses"]["sph"]["checkpoint_interval_s"] = 0.1;
+  write_json(dir / "scene.json", scene);
+  const std::string scene_file = (dir / "scene.json").string();
+
+  REQUIRE(run_program("run \"" + scene_file + "\" -o \"" + (dir / "whole").string() + "\"") == 0);
+
+  // Start the run to be killed.
+  const fs::path killed = dir / "killed";
+  const std::string output = killed.string();
+  std::vector<std::string> args{SPHSLOPE_BINARY, "run", scene_file, "-o", output};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  REQUIRE(posix_spawn(&pid, SPHSLOPE_BINARY, &actions, nullptr, argv.data(), environ) == 0);
+  posix_spawn_file_actions_destroy(&actions);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(killed / "checkpoint.bin") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  REQUIRE(WIFSIGNALED(status));  // it was killed mid-run, not finished
+  REQUIRE_FALSE(fs::exists(killed / "report.json"));
+
+  REQUIRE(run_program("run \"" + scene_file + "\" -o \"" + output + "\" --resume") == 0);
+  const nlohmann::json whole = read_json(dir / "whole/report.json");
+  const nlohmann::json resumed = read_json(killed / "report.json");
+  CHECK(resumed["sph"]["steps"] == whole["sph"]["steps"]);
+  CHECK(resumed["sph"]["steps_this_session"].get<long>() < whole["sph"]["steps"].get<long>());
+  CHECK(file_bytes(killed / "checkpoint.bin") == file_bytes(dir / "whole/checkpoint.bin"));
+  CHECK(file_bytes(killed / "energy.csv") == file_bytes(dir / "whole/energy.csv"));
+  fs::remove_all(dir);
+}
