@@ -1,6 +1,8 @@
 #include "coupling/sph_workflow.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <functional>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -34,6 +36,30 @@ std::string duration_text(double seconds) {
 
 const char* kernel_key(sph::KernelType kernel) {
   return kernel == sph::KernelType::cubic_spline ? "cubic_spline" : "wendland_c2";
+}
+
+// Extent of the soil before and after, for particle scenes (column collapse): the front is the farthest particle
+// still in contact with the deposit (a gap wider than 1.5 spacings separates stray particles).
+nlohmann::json deposit_report(const ParticleSnapshot& p) {
+  auto front = [&](const std::vector<double>& xs) {
+    std::vector<double> sorted(xs);
+    std::sort(sorted.begin(), sorted.end(), std::greater<>());
+    for (std::size_t k = 0; k + 1 < sorted.size(); ++k)
+      if (sorted[k] - sorted[k + 1] <= 1.5 * p.spacing) return sorted[k];
+    return sorted.back();
+  };
+  const double x_min0 = *std::min_element(p.x0.begin(), p.x0.end());
+  const double y_min0 = *std::min_element(p.y0.begin(), p.y0.end());
+  const double length0 = front(p.x0) - x_min0 + p.spacing, height0 = *std::max_element(p.y0.begin(), p.y0.end()) - y_min0 + p.spacing;
+  const double length = front(p.x) - x_min0 + p.spacing, height = *std::max_element(p.y.begin(), p.y.end()) - y_min0 + p.spacing;
+  return {{"initial_length_m", length0},
+          {"initial_height_m", height0},
+          {"final_length_m", length},
+          {"final_height_m", height},
+          {"runout_ratio", (length - length0) / length0},
+          {"final_height_ratio", height / height0},
+          {"note", "lengths from the leftmost initial particle edge to the front of the deposit (stray particles "
+                   "beyond a 1.5-spacing gap excluded); heights from the lowest initial particle edge to the top"}};
 }
 
 }  // namespace
@@ -147,6 +173,7 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
     snapshot.y0.push_back(p.y0[i]);
     snapshot.plastic_strain.push_back(p.plastic_strain[i]);
   }
+  if (scene.bodies && !snapshot.x.empty()) report["deposit"] = deposit_report(snapshot);
   return result;
 }
 
