@@ -271,7 +271,7 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   const double* rxy = w.rxy.data();
 
   const Index ns = static_cast<Index>(w.soil.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 256)  // gather per particle: results do not depend on the schedule
   for (Index k = 0; k < ns; ++k) {
     const std::size_t i = w.soil[static_cast<std::size_t>(k)];
     const double xi = x[i], yi = y[i], vxi = vx[i], vyi = vy[i], rhoi = rho[i], ci = snd[i];
