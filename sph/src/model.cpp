@@ -1,5 +1,6 @@
 #include "sph/model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -73,6 +74,14 @@ bool Model::uses_artificial_stress() const {
       return false;
   }
   return false;
+}
+
+double time_step_estimate(const Model& model) {
+  double c_max = 0;
+  for (const auto& m : model.materials) c_max = std::max(c_max, MaterialConstants::from(m).sound_speed);
+  if (!(c_max > 0)) throw std::invalid_argument("model: no materials");
+  const Settings& s = model.settings;
+  return s.cfl * s.smoothing_length() / (c_max * (1.0 + 1.2 * s.viscosity.alpha));
 }
 
 std::size_t estimate_memory_bytes(std::size_t n) {

@@ -49,3 +49,13 @@ TEST_CASE("polygon fill is cell-centred and walls cover the kernel support", "[s
     CHECK(p.mass[i] == Approx(2000 * dx * dx));
   }
 }
+
+TEST_CASE("time-step estimate equals the stepper's bound at rest", "[sph][settings]") {
+  sph::Model m;
+  m.materials.push_back(sph::Material{});
+  m.settings.particle_spacing = 0.1;
+  sph::add_soil(m.particles, sph::lattice_points_in_region(0, 0, 1, 1, 0.1, [](double, double) { return true; }), 0.1, 0,
+                m.materials[0].density);
+  const double c = sph::MaterialConstants::from(m.materials[0]).sound_speed;
+  CHECK(sph::time_step_estimate(m) == Approx(0.2 * 0.12 / (c * 1.12)).epsilon(1e-12));
+}

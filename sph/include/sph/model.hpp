@@ -89,6 +89,10 @@ struct Model {
   bool uses_artificial_stress() const;
 };
 
+// Time step of the model at rest (the CFL bound of SoilStep::stable_time_step with |v| = 0, |a| = 0):
+// cfl h / (c_max (1 + 1.2 alpha)), c_max the largest P-wave speed of the materials. Use it to plan runs.
+double time_step_estimate(const Model& model);
+
 // Upper estimate of the memory (bytes) needed to simulate n particles (particles, step workspace,
 // neighbour search, output buffers). Use it to refuse a case before allocating.
 std::size_t estimate_memory_bytes(std::size_t n_particles);
