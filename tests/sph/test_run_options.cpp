@@ -85,3 +85,18 @@ TEST_CASE("step variants (Wendland C2, XSPH, free-slip walls) run the collapse s
   CHECK(d.runout > 0.3);
   CHECK(d.height > 0.05);  // a frictionless back wall lets the top-left corner slide down too
 }
+
+TEST_CASE("a run stops as quasi-static when every particle is slower than the threshold", "[sph][run]") {
+  sph::ColumnCollapseCase c;
+  c.dx = 0.01;
+  c.end_time = 5.0;
+  auto m = sph::make_column_collapse(c);
+  m.settings.output_interval = 0;
+  sph::RunOptions o;
+  o.quasi_static_speed = 1e-3;    // m/s
+  o.quasi_static_min_time = 0.3;  // s: after the collapse has started and stopped
+  const auto s = sph::run(m, o);
+  CHECK(s.stopped_because == "quasi_static");
+  CHECK(s.simulated_time < 5.0);
+  CHECK(s.simulated_time >= 0.3);
+}
