@@ -13,6 +13,7 @@
 //    reaches the far wall at 0.6 m; no flow: 0.2 m) fails. This solver gives 0.48 m (dx = 5 mm) and 0.50 m (2.5 mm).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -36,6 +37,16 @@ TEST_CASE("granular column collapse (Bui et al. 2008) deposit matches the experi
               "%llu steps, %.0f particle-steps/s\n",
               c.dx, d.runout, d.height, sum.kinetic_energy, sum.soil_particles,
               static_cast<unsigned long long>(sum.steps), sum.particle_steps_per_second);
+  // the walls hold the soil: no particle centre has leaked through the floor or the back wall
+  double ymin = 1, xmin = 1;
+  for (std::size_t i = 0; i < model.particles.size(); ++i)
+    if (model.particles.kind[i] == 0) {
+      ymin = std::min(ymin, model.particles.y[i]);
+      xmin = std::min(xmin, model.particles.x[i]);
+    }
+  std::printf("lowest soil particle centre y = %.5f m, leftmost x = %.5f m\n", ymin, xmin);
+  CHECK(ymin > 0.0);
+  CHECK(xmin > 0.0);
   CHECK(d.height >= 0.092);
   CHECK(d.height <= 0.105);
   CHECK(d.runout >= 0.32);
