@@ -79,7 +79,7 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   double fastest_wave = 0.0;
   for (const auto& m : model.materials) fastest_wave = std::max(fastest_wave, sph::MaterialConstants::from(m).sound_speed);
   const double h = model.settings.smoothing_length();
-  const double time_step = model.settings.cfl * h / fastest_wave;
+  const double time_step = sph::time_step_estimate(model);
   const double planned_steps = model.settings.end_time / time_step;
 
   if (planned_steps > analysis.max_steps) {
