@@ -13,6 +13,7 @@
 #include <limits>
 #include <map>
 
+#include "coupling/sliding_mass.hpp"
 #include "scene_internal.hpp"
 #include "sph/fill.hpp"
 #include "sph/kernel.hpp"
@@ -65,16 +66,6 @@ double section_area(const slope::Section& section) {
   for (std::size_t k = 0; k + 1 < ground.size(); ++k)
     area += 0.5 * (ground[k].y + ground[k + 1].y - 2.0 * section.bottom_y) * (ground[k + 1].x - ground[k].x);
   return area;
-}
-
-double polygon_area(const std::vector<slope::Point>& polygon) {
-  double twice = 0.0;
-  for (std::size_t k = 0; k < polygon.size(); ++k) {
-    const auto& p = polygon[k];
-    const auto& q = polygon[(k + 1) % polygon.size()];
-    twice += p.x * q.y - q.x * p.y;
-  }
-  return 0.5 * std::abs(twice);
 }
 
 // Wall particles of a box, counted as add_box_walls lays them (layers of the kernel support around the box).
