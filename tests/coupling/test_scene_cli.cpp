@@ -294,21 +294,3 @@ TEST_CASE("sphslope run writes runs/<scene stem>/report.json by default; pore pr
   CHECK_FALSE(report["lem"]["methods"].contains("morgenstern_price_constant"));  // not asked for in this scene
 }
 
-TEST_CASE("sphslope run: status 1 and a report with the reason when an analysis is not available", "[cli][run]") {
-  // thesis_slope2 asks for lem and sph; until the SPH stage is wired in, the run fails with the reason written.
-  TemporaryFolder folder("run");
-  const fs::path scene = source_path("cases/thesis_slope2.json");
-  const ProgramOutput result = run_program("run " + quoted(scene.string()) + " -o " + quoted(folder.path.string()));
-  INFO(result.output);
-  REQUIRE(fs::exists(folder.path / "report.json"));
-  const nlohmann::json report = read_json(folder.path / "report.json");
-  CHECK(report["format"] == "sphslope-report/1");
-  CHECK(report["lem"]["methods"].is_object());
-  if (result.status == 1) {
-    CHECK(report["status"] == "failed");
-    CHECK_FALSE(report["errors"].empty());
-  } else {
-    CHECK(result.status == 0);
-    CHECK(report["status"] == "ok");
-  }
-}

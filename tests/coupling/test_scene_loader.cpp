@@ -215,17 +215,22 @@ TEST_CASE("scene: what is accepted", "[scene]") {
     document["section"]["profile_lines"][1]["points_m"] = json::parse("[[0, 8], [40, 10], [50, 0], [60, 0]]");
     CHECK_NOTHROW(load(document));
   }
-  SECTION("a particle scene: bodies and walls are kept raw") {
-    json document = json::parse(R"({"format": "sphslope-scene/1", "name": "dam break",
-        "bodies": [{"kind": "water", "anything": 1}], "walls": {"box_m": [[0, 0], [4, 3]]},
-        "analyses": {"sph": {"end_time_s": 1}}})");
+  SECTION("a particle scene: bodies and walls instead of a section") {
+    json document = json::parse(R"({"format": "sphslope-scene/1", "name": "column",
+        "bodies": [{"name": "column", "polygon_m": [[0, 0], [0.2, 0], [0.2, 0.1], [0, 0.1]],
+                    "material": {"name": "bars", "unit_weight_kN_m3": 26, "cohesion_kPa": 0,
+                                 "friction_angle_deg": 19.8, "youngs_modulus_MPa": 0.84, "poisson_ratio": 0.3}}],
+        "walls": {"x_range_m": [0, 0.6], "bottom_y_m": 0, "height_m": 0.12, "sides": ["left", "bottom"]},
+        "analyses": {"sph": {"particle_spacing_m": 0.005, "end_time_s": 1}}})");
     const Scene scene = load(document);
     CHECK_FALSE(scene.section);
     REQUIRE(scene.bodies);
-    CHECK((*scene.bodies)[0]["kind"] == "water");
     REQUIRE(scene.walls);
     REQUIRE(scene.analyses.sph);
     CHECK((*scene.analyses.sph)["end_time_s"] == 1);
+    // The SPH stage validates the bodies and walls at load time: a body kind it does not know is an error.
+    document["bodies"][0]["kind"] = "water";
+    CHECK_THROWS_AS(load(document), SceneError);
   }
   SECTION("an sph block with the elastic constants, and compare kept raw") {
     json document = valid_example();

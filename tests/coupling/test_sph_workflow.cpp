@@ -151,3 +151,39 @@ TEST_CASE("an SPH run killed mid-way and resumed ends in the same state as an un
   CHECK(file_bytes(killed / "energy.csv") == file_bytes(dir / "whole/energy.csv"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted, and a checkpoint", "[sph][resume]") {
+  const fs::path dir = fresh_dir("interrupt");
+  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/bui2008_column_collapse.json");
+  scene["analyses"]["sph"]["particle_spacing_m"] = 0.005;
+  scene["analyses"]["sph"]["end_time_s"] = 5.0;  // long: it is interrupted well before
+  write_json(dir / "scene.json", scene);
+  std::vector<std::string> args{SPHSLOPE_BINARY, "run", (dir / "scene.json").string(), "-o", (dir / "out").string()};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  REQUIRE(posix_spawn(&pid, SPHSLOPE_BINARY, &actions, nullptr, argv.data(), environ) == 0);
+  posix_spawn_file_actions_destroy(&actions);
+  // Wait until the run has written its first frame (it is stepping), then interrupt it.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(dir / "out/frames.pvd") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 1);
+  const nlohmann::json report = read_json(dir / "out/report.json");
+  CHECK(report["status"] == "failed");
+  CHECK(report["sph"]["stopped_because"] == "interrupted");
+  CHECK(report["sph"]["simulated_time_s"].get<double>() < 5.0);
+  REQUIRE_FALSE(report["errors"].empty());
+  CHECK(report["errors"][0].get<std::string>().find("--resume") != std::string::npos);
+  CHECK(fs::exists(dir / "out/checkpoint.bin"));
+  fs::remove_all(dir);
+}
