@@ -8,6 +8,7 @@
 #include "coupling/scene.hpp"
 #include "coupling/comparison.hpp"
 #include "coupling/sph_setup.hpp"
+#include "coupling/strength_reduction.hpp"
 #include "scene_internal.hpp"
 
 namespace coupling {
@@ -171,7 +172,14 @@ void read_analyses(JsonReader& top, Scene& scene, bool has_section, Diagnostics&
       }
     }
   }
-  if (!analyses->has("lem") && !analyses->has("sph") && !analyses->has("compare")) {
+  if (const nlohmann::json* srm = analyses->raw("srm", Need::optional)) {
+    if (!srm->is_object()) {
+      diagnostics.error(analyses->path_of("srm"), "expected an object, got " + json_type_name(*srm));
+    } else {
+      scene.analyses.srm = *srm;
+    }
+  }
+  if (!analyses->has("lem") && !analyses->has("sph") && !analyses->has("compare") && !analyses->has("srm")) {
     diagnostics.error(analyses->path(), "no analysis requested (add at least one of: \"lem\": {}, \"sph\": {...})");
   }
   analyses->finish();
@@ -232,6 +240,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
   top.finish();
   check_sph_scene(scene, diagnostics);
   if (scene.analyses.compare) read_comparison_options(*scene.analyses.compare, diagnostics);
+  check_srm_scene(scene, diagnostics);
 
   if (!diagnostics.empty()) throw SceneError(diagnostics.messages());
   return scene;
@@ -297,6 +306,7 @@ std::string summarize(const Scene& scene) {
   }
   if (scene.analyses.sph) analyses.emplace_back("sph");
   if (scene.analyses.compare) analyses.emplace_back("compare");
+  if (scene.analyses.srm) analyses.emplace_back("srm");
   out << "; analyses: " << join(analyses);
   return out.str();
 }

@@ -12,6 +12,7 @@
 #include "coupling/figures.hpp"
 #include "coupling/report.hpp"
 #include "coupling/sph_workflow.hpp"
+#include "coupling/strength_reduction.hpp"
 
 namespace coupling {
 
@@ -124,6 +125,51 @@ StageOutcome run_compare(const Scene& scene, WorkflowResult& out, const std::opt
   return outcome;
 }
 
+// SPH factor of safety by strength reduction (analyses.srm), next to the LEM factors.
+StageOutcome run_srm(const Scene& scene, const WorkflowOptions& options, WorkflowResult& out) {
+  StageOutcome outcome;
+  const Clock::time_point start = Clock::now();
+  std::optional<double> bishop;
+  nlohmann::json lem_fs = nlohmann::json::object();
+  if (out.lem)
+    for (const auto& critical : out.lem->methods)
+      if (critical.mass && critical.result.factor_of_safety && std::isfinite(*critical.result.factor_of_safety)) {
+        const std::string key(slope::method_key(critical.method));
+        lem_fs[key] = *critical.result.factor_of_safety;
+        if (key == "bishop") bishop = *critical.result.factor_of_safety;
+      }
+  try {
+    Diagnostics diagnostics;
+    const SrmOptions srm = *read_srm_options(*scene.analyses.srm, diagnostics);
+    const SrmResult result = run_strength_reduction(scene, srm, bishop, lem_fs, options.log);
+    out.report["srm"] = result.report;
+    if (!result.ok) {
+      outcome.status = ExitStatus::failed;
+      outcome.errors.push_back(result.report.value("error", std::string("srm: no factor of safety")));
+    }
+    if (options.log) {
+      char line[200];
+      const std::string lem_text = bishop ? format_number(*bishop) : std::string("-");
+      if (result.bisection.bracketed)
+        std::snprintf(line, sizeof line, "srm: FS_SPH = %.3f in [%.3f, %.3f]; LEM Bishop = %s\n",
+                      result.bisection.factor_of_safety, result.bisection.lo, result.bisection.hi, lem_text.c_str());
+      else
+        std::snprintf(line, sizeof line, "srm: FS_SPH not bracketed; LEM Bishop = %s\n", lem_text.c_str());
+      *options.log << line;
+    }
+  } catch (const SceneError& error) {
+    outcome.status = ExitStatus::invalid_input;
+    outcome.errors = error.messages();
+    return outcome;
+  } catch (const std::exception& error) {
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back(std::string("srm: ") + error.what());
+    out.report["srm"] = {{"error", outcome.errors.back()}};
+  }
+  out.report["timing_s"]["srm"] = seconds_since(start);
+  return outcome;
+}
+
 // figures/section.svg (and figures/fs_map.svg after a limit-equilibrium search) in the output folder.
 void write_figures(const Scene& scene, const WorkflowResult& out, const std::optional<ParticleSnapshot>& final_state,
                    const std::optional<SphFailure>& failure, const std::filesystem::path& dir,
@@ -208,6 +254,7 @@ WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options) {
     if (lem) requested.push_back("lem");
     if (scene.analyses.sph) requested.push_back("sph");
     if (scene.analyses.compare) requested.push_back("compare");
+    if (scene.analyses.srm) requested.push_back("srm");
   }
   out.report["analyses"] = requested;
 
@@ -239,6 +286,10 @@ WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options) {
       return out;
     }
     if (scene.analyses.compare) absorb(run_compare(scene, out, final_state, failure));
+    if (scene.analyses.srm && !absorb(run_srm(scene, options, out))) {
+      out.report = nullptr;
+      return out;
+    }
   }
   if (options.output_dir && options.mode != Mode::check) {
     try {

@@ -56,7 +56,8 @@ struct Analyses {
   std::optional<LemAnalysis> lem;
   std::optional<nlohmann::json> sph;      // raw; validated by the SPH stage
   std::optional<nlohmann::json> compare;  // raw; validated by the comparison stage
-  bool empty() const { return !lem && !sph && !compare; }
+  std::optional<nlohmann::json> srm;      // raw; validated by the strength-reduction stage
+  bool empty() const { return !lem && !sph && !compare && !srm; }
 };
 
 struct Scene {
