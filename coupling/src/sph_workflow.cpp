@@ -69,6 +69,8 @@ void install_interrupt_handler() {
   std::signal(SIGTERM, on_interrupt);
 }
 
+bool interrupt_pending() { return interrupt_requested != 0; }
+
 SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options) {
   SphSize size;
   sph::Model model = build_sph_model(scene, &size);

@@ -6,8 +6,10 @@
 #include <cstdio>
 #include <limits>
 #include <ostream>
+#include <stdexcept>
 
 #include "coupling/sph_setup.hpp"
+#include "coupling/sph_workflow.hpp"
 #include "sph/integrator/run.hpp"
 
 namespace coupling {
@@ -198,12 +200,17 @@ SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, 
     sph::RunCallbacks callbacks;
     bool displaced = false;
     std::uint64_t polls = 0;
+    bool interrupted = false;
     callbacks.interrupt = [&] {
+      if (interrupt_pending()) return interrupted = true;
       if (++polls % 10 != 0) return false;
       displaced = max_displacement() > failure_displacement;
       return displaced;
     };
     const sph::RunSummary summary = sph::run(model, run_options, callbacks);
+    if (interrupted)
+      throw std::runtime_error("interrupted during the trial at F = " + format_number(factor) +
+                               " (strength reduction cannot be resumed; run it again)");
     SrmTrial trial;
     trial.factor = factor;
     trial.max_displacement_m = max_displacement();

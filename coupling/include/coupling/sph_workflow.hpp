@@ -33,4 +33,7 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
 // (a checkpoint is written, so the run can be resumed).
 void install_interrupt_handler();
 
+// Whether SIGINT/SIGTERM arrived since the last SPH stage started (for other stages that run SPH, e.g. srm).
+bool interrupt_pending();
+
 }  // namespace coupling
