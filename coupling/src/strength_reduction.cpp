@@ -65,7 +65,8 @@ std::optional<SrmOptions> read_srm_options(const nlohmann::json& block, Diagnost
   o.max_time_s = r.number("max_time_s", Need::optional, Bounds::positive());
   o.damping_per_s = r.number("damping_per_s", Need::optional, Bounds::non_negative());
   o.rest_speed_m_s = r.number("rest_speed_m_s", Need::optional, Bounds::positive());
-  o.max_trials = static_cast<int>(r.number_or("max_trials", o.max_trials, Bounds::closed(2.0, 200.0)));
+  if (const auto trials = r.integer("max_trials", Need::optional, Bounds::closed(2.0, 200.0)))
+    o.max_trials = static_cast<int>(*trials);
   r.finish();
   if (diagnostics.size() != errors_before) return std::nullopt;
   return o;

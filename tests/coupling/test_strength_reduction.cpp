@@ -114,6 +114,7 @@ TEST_CASE("srm: scene keys are validated with their JSON paths", "[srm]") {
   CHECK(mentions(errors_of({{"sph", sph}, {"srm", {{"tolerance", -1}}}}), "analyses.srm.tolerance"));
   CHECK(mentions(errors_of({{"sph", sph}, {"srm", {{"bracket", {2.0, 1.0}}}}}), "analyses.srm.bracket"));
   CHECK(mentions(errors_of({{"sph", sph}, {"srm", {{"tolerence", 0.1}}}}), "analyses.srm.tolerence"));
+  CHECK(mentions(errors_of({{"sph", sph}, {"srm", {{"max_trials", 2.5}}}}), "analyses.srm.max_trials"));
   CHECK(mentions(errors_of({{"sph", sph}, {"srm", 3}}), "analyses.srm"));
 }
 
