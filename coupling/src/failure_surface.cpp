@@ -104,10 +104,18 @@ FailureSurface plastic_band_surface(const ParticleSnapshot& particles, const Ban
         weight += particles.plastic_strain[i];
         offset += particles.plastic_strain[i] * normal;
       }
-      if (weight > 0.0) moved[k] = {surface.points[k].x + nx * offset / weight, surface.points[k].y + ny * offset / weight};
+      if (weight <= 0.0) continue;
+      // At most one bin per pass: the correction is a centring, not a jump to another part of the band.
+      const double shift = std::clamp(offset / weight, -surface.bin_width, surface.bin_width);
+      moved[k] = {surface.points[k].x + nx * shift, surface.points[k].y + ny * shift};
     }
     surface.points = std::move(moved);
   }
+  // The surface is a graph y(x): drop points that fall back in x behind their predecessor.
+  std::vector<slope::Point> monotone;
+  for (const auto& p : surface.points)
+    if (monotone.empty() || p.x > monotone.back().x) monotone.push_back(p);
+  surface.points = std::move(monotone);
   return surface;
 }
 

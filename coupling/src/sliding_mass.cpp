@@ -63,7 +63,11 @@ double polygon_area(const Polyline& polygon) {
 MassOverlap mass_overlap(const Polyline& a, const Polyline& b) {
   MassOverlap overlap;
   const Polygon pa = to_cgal(a), pb = to_cgal(b);
-  if (pa.size() < 3 || pb.size() < 3 || !pa.is_simple() || !pb.is_simple()) return overlap;
+  if (pa.size() < 3 || pb.size() < 3 || !pa.is_simple() || !pb.is_simple()) {
+    // Not a region: say so (NaN is written as null in the report) rather than report no overlap.
+    overlap.intersection_over_union = overlap.intersection_area = overlap.union_area = std::nan("");
+    return overlap;
+  }
   overlap.area_a = std::abs(CGAL::to_double(pa.area()));
   overlap.area_b = std::abs(CGAL::to_double(pb.area()));
   std::list<PolygonWithHoles> pieces;

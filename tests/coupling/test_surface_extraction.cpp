@@ -135,3 +135,16 @@ TEST_CASE("band extraction drops an isolated plastic spot away from the band", "
   REQUIRE(fit.has_value());
   CHECK_THAT(fit->circle.radius, WithinAbs(truth.radius, 0.0625));
 }
+
+TEST_CASE("a self-crossing polygon gives no overlap figure rather than zero", "[comparison]") {
+  const coupling::Polyline bow_tie{{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+  const coupling::Polyline square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  CHECK(std::isnan(coupling::mass_overlap(bow_tie, square).intersection_over_union));
+}
+
+TEST_CASE("the extracted band line is a graph y(x): x increases along it", "[extraction]") {
+  const slope::Circle truth{20.0, 21.0, 18.0};  // steep near both ends
+  const auto surface = coupling::plastic_band_surface(block_with_circular_band(truth, 1.2), {});
+  REQUIRE(surface.points.size() > 10);
+  for (std::size_t k = 1; k < surface.points.size(); ++k) CHECK(surface.points[k].x > surface.points[k - 1].x);
+}

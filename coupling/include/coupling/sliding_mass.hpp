@@ -23,7 +23,8 @@ struct MassOverlap {
   double intersection_over_union = 0.0;
 };
 
-// Overlap of two polygons (each simple, any orientation) by exact boolean operations.
+// Overlap of two polygons (each simple, any orientation) by exact boolean operations. When either is not a
+// simple polygon, the intersection, union and their ratio are NaN.
 MassOverlap mass_overlap(const Polyline& a, const Polyline& b);
 
 }  // namespace coupling
