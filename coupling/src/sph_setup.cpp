@@ -292,7 +292,7 @@ SectionFill fill_section(const slope::Section& section, double dx) {
     const double ground = section.ground_y(x);
     for (long j = 0; j < ny; ++j) {
       const double y = section.bottom_y + (static_cast<double>(j) + 0.5) * dx;
-      if (y >= ground) break;
+      if (y >= ground - 1e-9 * dx) break;  // strictly inside: a particle on the ground line is left out
       // The material is that of the lowest profile line at or above the point: the top of its layer.
       std::size_t material = section.profile_lines.front().material;
       double best = std::numeric_limits<double>::infinity();

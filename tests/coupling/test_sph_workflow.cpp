@@ -187,3 +187,19 @@ TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted
   CHECK(fs::exists(dir / "out/checkpoint.bin"));
   fs::remove_all(dir);
 }
+
+#include "coupling/scene.hpp"
+#include "coupling/sph_setup.hpp"
+
+TEST_CASE("the thesis slopes fill with the thesis's particle counts", "[sph][fill]") {
+  // Source: shared/seeds/seed-002 section 4 (Tables 5-1, 5-3, 5-5): 3200, 3725 and 7100 soil particles at
+  // 0.025, 0.2 and 0.25 m. The geometry of slopes 2 and 3 was inferred from these counts (see the cases' notes).
+  const std::pair<const char*, std::size_t> cases[] = {
+      {"cases/thesis_slope1.json", 3200}, {"cases/thesis_slope2.json", 3725}, {"cases/thesis_slope3.json", 7100}};
+  for (const auto& [file, expected] : cases) {
+    const coupling::Scene scene = coupling::load_scene(fs::path(SPHSLOPE_SOURCE_DIR) / file);
+    const double dx = (*scene.analyses.sph)["particle_spacing_m"];
+    INFO(file);
+    CHECK(coupling::fill_section(scene.section->section, dx).points.size() == expected);
+  }
+}
