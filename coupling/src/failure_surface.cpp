@@ -27,34 +27,57 @@ FailureSurface plastic_band_surface(const ParticleSnapshot& particles, const Ban
     members[static_cast<std::size_t>(b)].push_back(i);
   }
   const double gap = 1.5 * particles.spacing;
-  std::vector<std::size_t> band;  // particles of the deepest runs that made a point
+  std::vector<std::size_t> band;  // particles of the chosen runs that made a point
   std::vector<int> point_bin;      // bin of each point
   std::vector<std::size_t> point_band_start;  // first entry of `band` that belongs to each point
   for (int b = 0; b < bins; ++b) {
     auto& column = members[static_cast<std::size_t>(b)];
     std::sort(column.begin(), column.end(), [&](std::size_t a, std::size_t c) { return ys[a] < ys[c]; });
-    // Deepest connected run of band particles.
-    double weight = 0.0, weighted_x = 0.0, weighted_y = 0.0, last_band_y = 0.0;
-    int count = 0;
-    bool in_run = false;
+    // Connected runs of band particles up the column (a gap wider than 1.5 spacings ends a run). The band is
+    // the run with the most plastic strain, preferring runs below the free surface: a zone at the surface (a
+    // crest tension zone) is not the slip surface unless the column has nothing else.
+    struct Run {
+      std::size_t first = 0, last = 0;  // range in `band`
+      double weight = 0.0, weighted_x = 0.0, weighted_y = 0.0, top_y = 0.0;
+      int count = 0;
+    };
+    std::vector<Run> runs;
     const std::size_t band_start = band.size();
     for (std::size_t i : column) {
-      const bool in_band = particles.plastic_strain[i] >= options.plastic_strain_threshold;
-      if (in_run && ys[i] - last_band_y > gap) break;  // the run ended
-      if (!in_band) continue;
-      in_run = true;
-      last_band_y = ys[i];
+      if (particles.plastic_strain[i] < options.plastic_strain_threshold) continue;
+      if (runs.empty() || ys[i] - runs.back().top_y > gap) runs.push_back(Run{band.size(), band.size(), 0, 0, 0, 0, 0});
+      Run& run = runs.back();
       const double w = particles.plastic_strain[i];
-      weight += w;
-      weighted_x += w * xs[i];
-      weighted_y += w * ys[i];
+      run.weight += w;
+      run.weighted_x += w * xs[i];
+      run.weighted_y += w * ys[i];
+      run.top_y = ys[i];
+      run.last = band.size() + 1;
+      ++run.count;
       band.push_back(i);
-      ++count;
     }
-    if (count < options.min_particles_per_bin || weight <= 0.0) {
+    const double column_top = column.empty() ? 0.0 : ys[column.back()];
+    const Run* chosen = nullptr;
+    bool chosen_at_surface = true;
+    for (const Run& run : runs) {
+      if (run.count < options.min_particles_per_bin) continue;
+      const bool at_surface = column_top - run.top_y <= gap;
+      if (!chosen || (chosen_at_surface && !at_surface) ||
+          (chosen_at_surface == at_surface && run.weight > chosen->weight)) {
+        chosen = &run;
+        chosen_at_surface = at_surface;
+      }
+    }
+    if (!chosen || chosen->weight <= 0.0) {
       band.resize(band_start);
       continue;
     }
+    const double weight = chosen->weight, weighted_x = chosen->weighted_x, weighted_y = chosen->weighted_y;
+    // Keep only the chosen run's particles.
+    std::vector<std::size_t> kept(band.begin() + static_cast<std::ptrdiff_t>(chosen->first),
+                                  band.begin() + static_cast<std::ptrdiff_t>(chosen->last));
+    band.resize(band_start);
+    band.insert(band.end(), kept.begin(), kept.end());
     surface.points.push_back({weighted_x / weight, weighted_y / weight});
     point_bin.push_back(b);
     point_band_start.push_back(band_start);

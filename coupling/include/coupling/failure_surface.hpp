@@ -31,9 +31,10 @@ struct FailureSurface {
   std::size_t band_particles = 0;    // particles in the band
 };
 
-// Band centre per x-bin: in each bin the deepest connected run of particles at or above the threshold
-// (scanning up from the bottom; a gap larger than 1.5 spacings ends a run) and its plastic-strain-weighted
-// mean height. Bins without a band are skipped.
+// Band centre per x-bin: in each bin the connected run of particles at or above the threshold (a gap larger
+// than 1.5 spacings ends a run) with the most plastic strain, preferring runs that do not reach the free
+// surface, and its plastic-strain-weighted mean position, then centred along the band's normal. Bins without
+// a band are skipped; the longest chain of bins without a gap is kept.
 FailureSurface plastic_band_surface(const ParticleSnapshot& particles, const BandOptions& options);
 
 struct CircleFit {
