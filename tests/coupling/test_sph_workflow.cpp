@@ -62,6 +62,22 @@ bool finite_numbers(const nlohmann::json& value) {
   return true;
 }
 
+// Starts the program with stdout and stderr sent to /dev/null; returns its process id.
+pid_t spawn_program(std::vector<std::string> args) {
+  args.insert(args.begin(), SPHSLOPE_BINARY);
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int error = posix_spawn(&pid, SPHSLOPE_BINARY, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return error == 0 ? pid : -1;
+}
+
 }  // namespace
 
 TEST_CASE("thesis slope 2, coarse: the SPH failure surface runs from behind the crest to the toe, close to the LEM "
@@ -122,17 +138,8 @@ TEST_CASE("an SPH run killed mid-way and resumed ends in the same state as an un
   // Start the run to be killed.
   const fs::path killed = dir / "killed";
   const std::string output = killed.string();
-  std::vector<std::string> args{SPHSLOPE_BINARY, "run", scene_file, "-o", output};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  REQUIRE(posix_spawn(&pid, SPHSLOPE_BINARY, &actions, nullptr, argv.data(), environ) == 0);
-  posix_spawn_file_actions_destroy(&actions);
+  const pid_t pid = spawn_program({"run", scene_file, "-o", output});
+  REQUIRE(pid > 0);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   while (!fs::exists(killed / "checkpoint.bin") && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -158,17 +165,8 @@ TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted
   scene["analyses"]["sph"]["particle_spacing_m"] = 0.005;
   scene["analyses"]["sph"]["end_time_s"] = 5.0;  // long: it is interrupted well before
   write_json(dir / "scene.json", scene);
-  std::vector<std::string> args{SPHSLOPE_BINARY, "run", (dir / "scene.json").string(), "-o", (dir / "out").string()};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  REQUIRE(posix_spawn(&pid, SPHSLOPE_BINARY, &actions, nullptr, argv.data(), environ) == 0);
-  posix_spawn_file_actions_destroy(&actions);
+  const pid_t pid = spawn_program({"run", (dir / "scene.json").string(), "-o", (dir / "out").string()});
+  REQUIRE(pid > 0);
   // Wait until the run has written its first frame (it is stepping), then interrupt it.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   while (!fs::exists(dir / "out/frames.pvd") && std::chrono::steady_clock::now() < deadline)
