@@ -48,6 +48,14 @@ class MethodWorkspace {
 
   std::vector<double> numerator, friction_term, interface_function;
   std::vector<SliceForces> forces;
+
+  // Grows the per-slice buffers of the ratio equations (Bishop, Janbu) to hold n slices (with room to spare).
+  void reserve_ratio_terms(int n) {
+    if (numerator.size() < static_cast<std::size_t>(n)) {
+      numerator.resize(static_cast<std::size_t>(n) * 2);
+      friction_term.resize(static_cast<std::size_t>(n) * 2);
+    }
+  }
   gsl_multiroot_fsolver* solver = nullptr;
   gsl_vector* start = nullptr;
 };

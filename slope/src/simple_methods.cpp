@@ -169,10 +169,7 @@ Outcome bishop_method(const SliceTable& t, MethodWorkspace& ws) {
     return out;
   }
   const int n = t.count;
-  if (ws.numerator.size() < static_cast<std::size_t>(n)) {
-    ws.numerator.resize(static_cast<std::size_t>(n) * 2);
-    ws.friction_term.resize(static_cast<std::size_t>(n) * 2);
-  }
+  ws.reserve_ratio_terms(n);
   double* w = ws.numerator.data();
   double* p = ws.friction_term.data();
   double ordinary = 0.0;
@@ -196,10 +193,7 @@ Outcome bishop_method(const SliceTable& t, MethodWorkspace& ws) {
 Outcome janbu_method(const SliceTable& t, MethodWorkspace& ws) {
   Outcome out;
   const int n = t.count;
-  if (ws.numerator.size() < static_cast<std::size_t>(n)) {
-    ws.numerator.resize(static_cast<std::size_t>(n) * 2);
-    ws.friction_term.resize(static_cast<std::size_t>(n) * 2);
-  }
+  ws.reserve_ratio_terms(n);
   double* w = ws.numerator.data();
   double* p = ws.friction_term.data();
   double driving = 0.0, driving_scale = 0.0, ordinary = 0.0;
