@@ -8,6 +8,7 @@
 // (nothing written; the message names the JSON path of the fault). Errors go to stderr.
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -15,6 +16,7 @@
 #include "coupling/report.hpp"
 #include "coupling/scene.hpp"
 #include "coupling/sph_workflow.hpp"
+#include "coupling/study.hpp"
 #include "coupling/workflow.hpp"
 
 namespace {
@@ -46,6 +48,50 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
     std::cerr << "report: " << result.report_file->string()
               << (result.status == ExitStatus::ok ? "" : " (status: failed; the reasons are in the report)") << "\n";
   }
+  return static_cast<int>(result.status);
+}
+
+// The study's table on stdout: one row per spacing with the error of each quantity.
+int print_study(const std::filesystem::path& scene_file, const std::filesystem::path& output_dir,
+                const coupling::StudyResult& result) {
+  using coupling::ExitStatus;
+  if (result.status == ExitStatus::invalid_input) {
+    for (const std::string& message : result.errors)
+      std::cerr << "error: " << scene_file.string() << ": " << message << "\n";
+    std::cerr << "sphslope: invalid input; nothing was run\n";
+    return static_cast<int>(ExitStatus::invalid_input);
+  }
+  const auto& study = result.study;
+  std::cout << "study: " << study["scene"]["name"].get<std::string>() << " (reference: "
+            << study["reference_case"].get<std::string>() << ")\n";
+  std::printf("%10s %10s %10s %10s", "dx (m)", "particles", "steps", "wall (s)");
+  for (const auto& q : study["quantities"]) std::printf(" %18s", q["key"].get<std::string>().c_str());
+  std::printf("\n");
+  for (const auto& run : study["runs"]) {
+    std::printf("%10.4g %10s %10s %10.1f", run["particle_spacing_m"].get<double>(),
+                run.contains("soil_particles") ? run["soil_particles"].dump().c_str() : "-",
+                run.contains("steps") ? run["steps"].dump().c_str() : "-", run.value("wall_seconds", 0.0));
+    for (std::size_t q = 0; q < study["quantities"].size(); ++q) {
+      const auto& e = run["errors_vs_reference"][q];
+      if (e.is_number())
+        std::printf(" %17.3g%%", 100.0 * e.get<double>());
+      else
+        std::printf(" %18s", "-");
+    }
+    std::printf("\n");
+  }
+  std::printf("%43s", "observed order:");
+  for (const auto& q : study["quantities"]) {
+    if (q["observed_order"].is_number())
+      std::printf(" %18.2f", q["observed_order"].get<double>());
+    else
+      std::printf(" %18s", "-");
+  }
+  std::printf("\n");
+  std::fflush(stdout);
+  for (const std::string& message : result.errors) std::cerr << "error: " << message << "\n";
+  std::cerr << "study: " << (output_dir / "study.json").string() << ", "
+            << (output_dir / "figures" / "error_vs_runtime.svg").string() << "\n";
   return static_cast<int>(result.status);
 }
 
@@ -81,11 +127,47 @@ int main(int argc, char** argv) {
                 "Continue an interrupted SPH run from DIR/checkpoint.bin (same scene, same DIR); the result is the "
                 "same as an uninterrupted run");
 
+  CLI::App* study = app.add_subcommand(
+      "study", "Error against run time: run the scene at several particle spacings and measure each monitored "
+               "quantity against its reference (DIR/study.json, DIR/figures/error_vs_runtime.svg).");
+  study->add_option("SCENE", scene_file, "Scene file with analyses.sph (a slope section, or one column body)")
+      ->required()
+      ->type_name("FILE");
+  std::vector<double> spacings;
+  study->add_option("--spacings", spacings, "Particle spacings in metres, comma-separated, e.g. 0.4,0.2,0.1")
+      ->required()
+      ->delimiter(',')
+      ->type_name("DX,...");
+  study->add_option("-o,--output", output_dir, "Output folder (default: runs/<scene file stem>_study)")
+      ->type_name("DIR");
+  bool study_resume = false;
+  study->add_flag("--resume", study_resume,
+                  "Reuse the spacings already finished in DIR and continue an interrupted one from its checkpoint");
+  bool no_lem_search = false;
+  study->add_flag("--no-lem-search", no_lem_search, "Slope sections: skip the study of the limit-equilibrium search");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     const int code = app.exit(error);  // prints help, the version or the usage error
     return code == 0 ? 0 : static_cast<int>(coupling::ExitStatus::invalid_input);
+  }
+
+  if (study->parsed()) {
+    coupling::StudyOptions study_options;
+    study_options.spacings = spacings;
+    study_options.resume = study_resume;
+    study_options.lem_search = !no_lem_search;
+    study_options.log = &std::cerr;
+    study_options.output_dir = output_dir.empty()
+                                   ? std::filesystem::path("runs") / (std::filesystem::path(scene_file).stem().string() + "_study")
+                                   : std::filesystem::path(output_dir);
+    try {
+      return print_study(scene_file, study_options.output_dir, coupling::run_study(scene_file, study_options));
+    } catch (const std::exception& error) {
+      std::cerr << "sphslope: unexpected failure: " << error.what() << "\n";
+      return static_cast<int>(coupling::ExitStatus::failed);
+    }
   }
 
   coupling::WorkflowOptions options;

@@ -262,7 +262,13 @@ std::optional<SoilMaterial> read_material(JsonReader& m) {
   const auto dilatancy = m.number("dilatancy_angle_deg", Need::optional, Bounds::half_open(0.0, 90.0));
   const auto youngs = m.number("youngs_modulus_MPa", Need::optional, Bounds::positive());
   const auto poisson = m.number("poisson_ratio", Need::optional, Bounds::open(-1.0, 0.5));
+  const auto model = m.string("constitutive_model", Need::optional);
   m.finish();
+  if (model && *model != "drucker_prager" && *model != "elastic") {
+    m.diagnostics().error(m.path_of("constitutive_model"),
+                          "unknown model \"" + *model + "\" (allowed: drucker_prager, elastic)");
+    return std::nullopt;
+  }
   if (dilatancy && friction && *dilatancy > *friction) {
     m.diagnostics().error(m.path_of("dilatancy_angle_deg"),
                           "must not exceed friction_angle_deg = " + format_number(*friction) + " (got " +
@@ -280,6 +286,7 @@ std::optional<SoilMaterial> read_material(JsonReader& m) {
   if (dilatancy) material.dilatancy_angle = *dilatancy * degree;
   if (youngs) material.youngs_modulus = *youngs * mega;
   material.poisson_ratio = poisson;
+  material.elastic = model && *model == "elastic";
   return material;
 }
 

@@ -57,6 +57,7 @@ sph::Material to_sph_material(const SoilMaterial& m) {
   out.cohesion = m.cohesion;
   out.friction_angle_deg = m.friction_angle * 180.0 / M_PI;
   out.dilatancy_angle_deg = m.dilatancy_angle.value_or(0.0) * 180.0 / M_PI;
+  out.plastic = !m.elastic;
   return out;
 }
 

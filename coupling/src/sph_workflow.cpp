@@ -174,6 +174,8 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
     snapshot.x0.push_back(p.x0[i]);
     snapshot.y0.push_back(p.y0[i]);
     snapshot.plastic_strain.push_back(p.plastic_strain[i]);
+    snapshot.stress_xx.push_back(p.sxx[i]);
+    snapshot.stress_yy.push_back(p.syy[i]);
   }
   if (scene.bodies && !snapshot.x.empty()) report["deposit"] = deposit_report(snapshot);
   return result;

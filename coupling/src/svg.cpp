@@ -31,8 +31,7 @@ Rgb colour_map(double t) {
   return {mix(0), mix(1), mix(2)};
 }
 
-namespace {
-std::string escape(const std::string& s) {
+std::string xml_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
@@ -45,6 +44,8 @@ std::string escape(const std::string& s) {
   }
   return out;
 }
+
+namespace {
 
 double nice_step(double span, int target_ticks) {
   const double raw = span / std::max(1, target_ticks);
@@ -98,7 +99,7 @@ void SvgCanvas::dot(double x, double y, double radius_px, const std::string& fil
 void SvgCanvas::text(double x_px, double y_px, const std::string& content, double size, const std::string& anchor,
                      const std::string& colour) {
   body_ << "<text x=\"" << number(x_px) << "\" y=\"" << number(y_px) << "\" font-size=\"" << size
-        << "\" text-anchor=\"" << anchor << "\" fill=\"" << colour << "\">" << escape(content) << "</text>\n";
+        << "\" text-anchor=\"" << anchor << "\" fill=\"" << colour << "\">" << xml_escape(content) << "</text>\n";
 }
 
 void SvgCanvas::rect_px(double x, double y, double w, double h, const std::string& fill, const std::string& stroke) {
@@ -126,7 +127,7 @@ void SvgCanvas::axes(const std::string& x_label, const std::string& y_label) {
   }
   text(0.5 * (x0 + x1), y0 + 38, x_label, 13, "middle");
   body_ << "<text x=\"18\" y=\"" << number(0.5 * (y0 + y1)) << "\" font-size=\"13\" text-anchor=\"middle\" "
-        << "transform=\"rotate(-90 18 " << number(0.5 * (y0 + y1)) << ")\">" << escape(y_label) << "</text>\n";
+        << "transform=\"rotate(-90 18 " << number(0.5 * (y0 + y1)) << ")\">" << xml_escape(y_label) << "</text>\n";
 }
 
 void SvgCanvas::colour_bar(double value_min, double value_max, const std::string& label) {
@@ -144,7 +145,7 @@ void SvgCanvas::colour_bar(double value_min, double value_max, const std::string
     text(x + 24, y_top + height * (1.0 - k / 4.0) + 4, buffer, 11);
   }
   body_ << "<text x=\"" << number(x + 9) << "\" y=\"" << number(y_top - 10)
-        << "\" font-size=\"12\" text-anchor=\"middle\">" << escape(label) << "</text>\n";
+        << "\" font-size=\"12\" text-anchor=\"middle\">" << xml_escape(label) << "</text>\n";
 }
 
 void SvgCanvas::legend(const std::vector<std::tuple<std::string, std::string, std::string>>& entries) {
@@ -170,7 +171,7 @@ std::string SvgCanvas::str() const {
            << number(y) << "\" stroke=\"" << colour << "\" stroke-width=\"3\"";
     if (!dash.empty()) legend << " stroke-dasharray=\"" << dash << "\"";
     legend << "/>\n<text x=\"" << number(x + 38) << "\" y=\"" << number(y + 4) << "\" font-size=\"12\" fill=\"#222\">"
-           << escape(label) << "</text>\n";
+           << xml_escape(label) << "</text>\n";
   }
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(width) << "\" height=\"" << number(height)

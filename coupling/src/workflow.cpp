@@ -318,6 +318,7 @@ WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options) {
       out.errors.push_back(std::string("cannot write the report: ") + error.what());
     }
   }
+  out.sph_final_state = std::move(final_state);
   return out;
 }
 

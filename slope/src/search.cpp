@@ -328,11 +328,12 @@ std::vector<double> ground_samples(const detail::PreparedSection& ps, std::optio
   return xs;
 }
 
-std::vector<Circle> entry_exit_circles(const detail::PreparedSection& ps, const SearchLimits& limits) {
+std::vector<Circle> entry_exit_circles(const detail::PreparedSection& ps, const SearchLimits& limits, int samples) {
   std::vector<Circle> circles;
-  const int samples = 41;
-  const std::vector<double> entries = ground_samples(ps, limits.entry_x, limits.entry_x ? 17 : samples);
-  const std::vector<double> exits = ground_samples(ps, limits.exit_x, limits.exit_x ? 17 : samples);
+  // A user range is narrower than the whole ground line: it gets 17 of the default 41 points, in proportion.
+  const int limited = std::max(3, (samples * 17 + 20) / 41);
+  const std::vector<double> entries = ground_samples(ps, limits.entry_x, limits.entry_x ? limited : samples);
+  const std::vector<double> exits = ground_samples(ps, limits.exit_x, limits.exit_x ? limited : samples);
   const double relief = ps.ground_y_max - ps.ground_y_min;
   const double tol_y = 1e-3 * relief + 1e-12;
   const double min_chord = 1e-3 * (ps.x_max - ps.x_min);
@@ -456,7 +457,8 @@ SearchResult search_critical(const Section& section, const std::vector<Method>& 
 
   // 1. Coarse search.
   const std::vector<Circle> candidates =
-      limits.centre_grid ? grid_circles(ps, *limits.centre_grid, limits.radius) : entry_exit_circles(ps, limits);
+      limits.centre_grid ? grid_circles(ps, *limits.centre_grid, limits.radius)
+                         : entry_exit_circles(ps, limits, std::max(3, options.entry_exit_samples));
   const std::size_t n_methods = methods.size();
   std::vector<Trial> trials;
   std::vector<double> fs;  // trials x methods

@@ -14,6 +14,7 @@ struct ParticleSnapshot {
   std::vector<double> x, y;            // m, current positions
   std::vector<double> x0, y0;          // m, initial positions
   std::vector<double> plastic_strain;  // accumulated equivalent plastic strain (-)
+  std::vector<double> stress_xx, stress_yy;  // Pa, tension positive (empty when not recorded)
   double spacing = 0.0;                // m, initial particle spacing
 };
 

@@ -36,6 +36,7 @@ struct SoilMaterial {
   std::optional<double> dilatancy_angle;   // rad; absent: SPH uses 0 (non-associated flow)
   std::optional<double> youngs_modulus;    // Pa; needed by SPH only
   std::optional<double> poisson_ratio;     // -; needed by SPH only
+  bool elastic = false;                    // SPH: linear elastic, no yield (constitutive_model "elastic")
 
   double density() const { return unit_weight / standard_gravity; }  // kg/m^3
 };

@@ -13,6 +13,8 @@ struct Rgb {
   int r = 0, g = 0, b = 0;
 };
 std::string to_hex(Rgb colour);
+// Text with &, <, > and " escaped for SVG/XML.
+std::string xml_escape(const std::string& text);
 // Perceptually ordered colour map (dark blue → green → yellow) for t in [0, 1].
 Rgb colour_map(double t);
 

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/failure_surface.hpp"
 #include "coupling/scene.hpp"
 #include "slope/search.hpp"
 
@@ -39,6 +40,7 @@ struct WorkflowResult {
   nlohmann::json report;                          // null when the input was invalid or in check mode
   std::optional<slope::SearchResult> lem;         // the limit-equilibrium result, for the table
   std::optional<std::filesystem::path> report_file;  // where report.json was written
+  std::optional<ParticleSnapshot> sph_final_state;   // soil particles at the end of the SPH analysis
 };
 
 // Loads and validates the scene file, then runs what `options.mode` asks for.

@@ -36,6 +36,9 @@ struct SearchOptions {
   // Added: smallest admissible slip mass, as its largest vertical thickness (m). Negative: automatic, 2 % of the
   // ground surface relief (keeps cohesionless slopes from converging to vanishing surface ravelling).
   double minimum_depth = -1.0;
+  // Points along the whole ground line at which the automatic search lets circles enter and exit (plus every
+  // vertex); a user entry/exit range gets 17/41 of them. More points: a finer and slower coarse search.
+  int entry_exit_samples = 41;
 };
 
 // One trial surface of the coarse search, for the factor-of-safety map.
