@@ -163,13 +163,30 @@ TEST_CASE("a missing scene file and a bad command line are invalid input", "[cli
   CHECK(run_program("lem").status == 2);                 // SCENE is required
   CHECK(run_program("frobnicate x.json").status == 2);   // unknown subcommand
   CHECK(run_program("").status == 2);                    // a subcommand is required
+  const std::string column = quoted(source_path("cases/elastic_column.json").string());
+  CHECK(run_program("study " + column).status == 2);     // --spacings is required
+  const ProgramOutput bad_spacing = run_program("study " + column + " --spacings 0.1,0 -o /nonexistent/study");
+  CHECK(bad_spacing.status == 2);
+  CHECK(bad_spacing.output.find("--spacings: 0 is not a positive spacing") != std::string::npos);
+}
+
+TEST_CASE("sphslope study prints a table of errors and writes study.json", "[cli][study][e2e]") {
+  TemporaryFolder folder("study");
+  const ProgramOutput result = run_program("study " + quoted(source_path("cases/elastic_column.json").string()) +
+                                           " --spacings 0.1,0.05 -o " + quoted(folder.path.string()));
+  INFO(result.output);
+  REQUIRE(result.status == 0);
+  CHECK(result.output.find("sigma_yy_error") != std::string::npos);
+  CHECK(result.output.find("observed order:") != std::string::npos);
+  CHECK(fs::exists(folder.path / "study.json"));
+  CHECK(fs::exists(folder.path / "figures" / "error_vs_runtime.svg"));
 }
 
 TEST_CASE("--help on every subcommand and --version exit 0", "[cli]") {
   const ProgramOutput version = run_program("--version");
   CHECK(version.status == 0);
   CHECK(version.output.find("sphslope 0.") != std::string::npos);
-  for (const char* command : {"--help", "check --help", "lem --help", "run --help"}) {
+  for (const char* command : {"--help", "check --help", "lem --help", "run --help", "study --help"}) {
     const ProgramOutput help = run_program(command);
     INFO(command << ":\n" << help.output);
     CHECK(help.status == 0);
