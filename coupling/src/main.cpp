@@ -13,6 +13,8 @@
 #include <iostream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "coupling/report.hpp"
 #include "coupling/scene.hpp"
 #include "coupling/sph_workflow.hpp"
@@ -20,6 +22,22 @@
 #include "coupling/workflow.hpp"
 
 namespace {
+
+// The strength-reduction factor of safety next to the limit-equilibrium ones, on stdout.
+void print_srm(const nlohmann::json& srm) {
+  if (!srm.contains("factor_of_safety") || !srm["factor_of_safety"].is_number()) {
+    std::cout << "strength reduction (SPH): no factor of safety"
+              << (srm.contains("error") ? " (" + srm["error"].get<std::string>() + ")" : std::string()) << "\n";
+    return;
+  }
+  std::printf("strength reduction (SPH, dx = %g m): FS_SPH = %.3f in [%.3f, %.3f]\n",
+              srm.value("particle_spacing_m", 0.0), srm["factor_of_safety"].get<double>(),
+              srm["bracket"][0].get<double>(), srm["bracket"][1].get<double>());
+  if (srm.contains("lem_factor_of_safety"))
+    for (const auto& [method, fs] : srm["lem_factor_of_safety"].items())
+      if (fs.is_number()) std::printf("  limit equilibrium %-26s FS = %.3f\n", method.c_str(), fs.get<double>());
+  std::fflush(stdout);
+}
 
 int print_outcome(const std::filesystem::path& scene_file, const coupling::WorkflowResult& result,
                   coupling::Mode mode) {
@@ -43,6 +61,7 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
     std::cout << "limit equilibrium: " << result.scene->name << " (" << scene_file.string() << ")\n"
               << coupling::lem_table(analysis, *result.lem);
   }
+  if (result.report.is_object() && result.report.contains("srm")) print_srm(result.report["srm"]);
   for (const std::string& message : result.errors) std::cerr << "error: " << message << "\n";
   if (result.report_file) {
     std::cerr << "report: " << result.report_file->string()

@@ -311,3 +311,26 @@ TEST_CASE("sphslope run writes runs/<scene stem>/report.json by default; pore pr
   CHECK_FALSE(report["lem"]["methods"].contains("morgenstern_price_constant"));  // not asked for in this scene
 }
 
+
+TEST_CASE("sphslope run prints the strength-reduction FS next to the LEM ones on stdout", "[cli][srm][e2e]") {
+  TemporaryFolder folder("srm");
+  std::ifstream in(source_path("cases/griffiths_lane_1999_srm.json"));
+  nlohmann::json scene = nlohmann::json::parse(in);
+  scene["analyses"]["sph"]["particle_spacing_m"] = 1.0;  // coarse: a few seconds
+  scene["analyses"]["srm"] = {{"tolerance", 0.2}};
+  scene["analyses"]["lem"] = {{"methods", {"bishop", "spencer"}}};
+  const fs::path file = folder.path / "gl_srm.json";
+  std::ofstream(file) << scene.dump();
+  const ProgramOutput result =
+      run_program("run " + quoted(file.string()) + " -o " + quoted((folder.path / "out").string()));
+  INFO(result.output);
+  REQUIRE(result.status == 0);
+  const std::string line = "strength reduction (SPH, dx = 1 m): FS_SPH = ";
+  const auto at = result.output.find(line);
+  REQUIRE(at != std::string::npos);
+  const double fs_sph = std::stod(result.output.substr(at + line.size(), 5));
+  CHECK(fs_sph > 1.1);  // Griffiths & Lane: about 1.4 (FE strength reduction); 1.32 at this spacing
+  CHECK(fs_sph < 1.6);
+  CHECK(result.output.find("limit equilibrium bishop") != std::string::npos);
+  CHECK(result.output.find("limit equilibrium spencer") != std::string::npos);
+}
