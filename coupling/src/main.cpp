@@ -107,6 +107,29 @@ int print_study(const std::filesystem::path& scene_file, const std::filesystem::
       std::printf(" %18s", "-");
   }
   std::printf("\n");
+  if (study.contains("lem_search")) {
+    std::printf("limit-equilibrium search against the finest (%s):\n",
+                study["lem_search"]["reference"].get<std::string>().c_str());
+    std::printf("%10s %8s %7s %10s %10s", "entry/exit", "slices", "refine", "trials", "time (s)");
+    const auto& levels = study["lem_search"]["levels"];
+    for (const auto& [method, fs] : levels[0]["factor_of_safety"].items()) std::printf(" %26s", (method + " FS").c_str());
+    std::printf("\n");
+    for (const auto& level : levels) {
+      std::printf("%10d %8d %7s %10ld %10.3f", level["entry_exit_samples"].get<int>(), level["slices"].get<int>(),
+                  level["refine"].get<bool>() ? "yes" : "no", level["trial_surfaces"].get<long>(),
+                  level["seconds"].get<double>());
+      for (const auto& [method, fs] : level["factor_of_safety"].items()) {
+        const auto& error = level["relative_error"][method];
+        if (!fs.is_number())
+          std::printf(" %26s", "-");
+        else if (error.is_number())
+          std::printf(" %17.4f (%5.2f%%)", fs.get<double>(), 100.0 * error.get<double>());
+        else
+          std::printf(" %17.4f (  ref )", fs.get<double>());
+      }
+      std::printf("\n");
+    }
+  }
   std::fflush(stdout);
   for (const std::string& message : result.errors) std::cerr << "error: " << message << "\n";
   std::cerr << "study: " << (output_dir / "study.json").string() << ", "

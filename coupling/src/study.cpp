@@ -278,9 +278,14 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
     if (f.size() >= 3) {
       const std::size_t n = f.size();
       if (auto sc = self_convergence(h[n - 3], f[n - 3], h[n - 2], f[n - 2], h[n - 1], f[n - 1]))
+      {
         jq["self_convergence"] = {{"order", sc->order},
                                   {"extrapolated_value", sc->extrapolated},
                                   {"from_spacings_m", {h[n - 3], h[n - 2], h[n - 1]}}};
+        if (sc->order < 0.5)
+          jq["self_convergence"]["note"] = "order below 0.5: the runs converge too slowly for Richardson "
+                                           "extrapolation, the extrapolated value is not reliable";
+      }
       else
         jq["self_convergence"] = {{"order", nullptr},
                                   {"note", "the three finest runs are not monotone in dx (not yet in the asymptotic "
