@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <ostream>
 #include <set>
 #include <sstream>
@@ -169,7 +170,9 @@ RunRecord run_one_spacing(const Scene& scene, const CaseSetup& setup, double spa
       if (sph.contains(key)) entry[key] = sph[key];
     if (sph.contains("seconds")) entry["sph_seconds"] = sph["seconds"];
   }
-  record.values = read_values(setup, run);
+  // A run that did not finish (interrupted, blown up) measures nothing: its state is not the case's result.
+  record.values = record.ok ? read_values(setup, run)
+                            : std::vector<std::optional<double>>(setup.quantities.size());
   entry["values"] = nlohmann::json::array();
   for (const auto& v : record.values) entry["values"].push_back(optional_number(v));
   return record;
@@ -225,6 +228,17 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
   std::filesystem::create_directories(options.output_dir / "figures");
   install_interrupt_handler();
 
+  // Wall time already spent on unfinished spacings, from the study.json of an interrupted study.
+  std::map<double, double> earlier_seconds;
+  if (options.resume && std::filesystem::exists(options.output_dir / "study.json")) {
+    std::ifstream in(options.output_dir / "study.json");
+    const nlohmann::json earlier = nlohmann::json::parse(in, nullptr, false);
+    if (earlier.is_object() && earlier.contains("runs") && earlier["runs"].is_array())
+      for (const auto& run : earlier["runs"])
+        if (run.value("status", std::string()) == "failed" && run.contains("wall_seconds"))
+          earlier_seconds[run["particle_spacing_m"].get<double>()] = run["wall_seconds"].get<double>();
+  }
+
   std::vector<RunRecord> runs;
   bool interrupted = false;
   for (std::size_t k = 0; k < spacings.size(); ++k) {
@@ -242,6 +256,13 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
                    << folder.string() << "\n";
     std::filesystem::create_directories(folder);
     RunRecord record = run_one_spacing(scene, setup, dx, folder, options);
+    // A resumed run also cost the wall time of the sessions before the interruption (from the last study.json).
+    if (const auto before = earlier_seconds.find(dx); before != earlier_seconds.end() && options.resume &&
+                                                      record.entry.contains("wall_seconds")) {
+      record.seconds += before->second;
+      record.entry["wall_seconds"] = record.seconds;
+      record.entry["wall_seconds_before_resume"] = before->second;
+    }
     if (interrupt_pending()) {
       interrupted = true;
       runs.push_back(std::move(record));
