@@ -304,6 +304,26 @@ void check_sph_scene(const Scene& scene, Diagnostics& diagnostics) {
     const auto bodies = read_particle_bodies(*scene.bodies, diagnostics);
     std::optional<WallBox> box;
     if (scene.walls) box = read_wall_box(*scene.walls, diagnostics);
+    // As for a section: a body needs at least 4 particles across (its bounding box's smaller side).
+    if (bodies && analysis) {
+      const double dx = analysis->settings.particle_spacing;
+      for (std::size_t i = 0; i < bodies->size(); ++i) {
+        const auto& polygon = (*bodies)[i].polygon;
+        double x0 = polygon.front().x, x1 = x0, y0 = polygon.front().y, y1 = y0;
+        for (const auto& p : polygon) {
+          x0 = std::min(x0, p.x);
+          x1 = std::max(x1, p.x);
+          y0 = std::min(y0, p.y);
+          y1 = std::max(y1, p.y);
+        }
+        const double across = std::min(x1 - x0, y1 - y0);
+        if (across / dx < 4.0)
+          diagnostics.error("analyses.sph.particle_spacing_m",
+                            "spacing " + format_number(dx) + " m leaves fewer than 4 particles across bodies[" +
+                                std::to_string(i) + "] (\"" + (*bodies)[i].name + "\", " + format_number(across) +
+                                " m across); use a spacing of at most " + format_number(across / 4.0) + " m");
+      }
+    }
     if (bodies && box) {
       for (std::size_t i = 0; i < bodies->size(); ++i)
         for (std::size_t k = 0; k < (*bodies)[i].polygon.size(); ++k) {

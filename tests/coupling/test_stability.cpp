@@ -505,3 +505,21 @@ TEST_CASE("stability: gravity ramp and wall layers are read and validated with t
   scene["analyses"]["sph"]["cfl"] = 0.8;  // the step accepts (0, 0.5]: refused at the scene, not at run time
   CHECK(errors_of(scene).find("analyses.sph.cfl") != std::string::npos);
 }
+
+TEST_CASE("stability: a particle body with fewer than 4 particles across is refused like a section",
+          "[stability][scene]") {
+  // The column of Bui et al. (2008) is 0.1 m high: 0.03 m leaves 3.3 particles across.
+  json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/bui2008_column_collapse.json");
+  scene["analyses"]["sph"]["particle_spacing_m"] = 0.03;
+  std::string message;
+  try {
+    coupling::parse_scene(scene.dump(), "column.json");
+  } catch (const coupling::SceneError& error) {
+    message = error.messages().front();
+  }
+  CHECK(message.find("analyses.sph.particle_spacing_m: spacing 0.03 m leaves fewer than 4 particles across "
+                     "bodies[0]") != std::string::npos);
+  CHECK(message.find("at most 0.025 m") != std::string::npos);
+  scene["analyses"]["sph"]["particle_spacing_m"] = 0.025;  // exactly 4 across: accepted
+  CHECK_NOTHROW(coupling::parse_scene(scene.dump(), "column.json"));
+}
