@@ -70,8 +70,8 @@ double section_area(const slope::Section& section) {
 }
 
 // Wall particles of a box, counted as add_box_walls lays them (layers of the kernel support around the box).
-std::size_t wall_estimate(double width, double height, const WallSides& sides, double dx, double h) {
-  const double layers = sph::wall_layers_for(dx, h);
+std::size_t wall_estimate(double width, double height, const WallSides& sides, double dx, int wall_layers) {
+  const double layers = wall_layers;
   double count = 0.0;
   if (sides.bottom) count += (width / dx + 2.0 * layers) * layers;
   if (sides.left) count += (height / dx) * layers;
@@ -79,20 +79,37 @@ std::size_t wall_estimate(double width, double height, const WallSides& sides, d
   return static_cast<std::size_t>(std::ceil(count));
 }
 
-void refuse_if_too_large(const SphAnalysis& analysis, std::size_t particles) {
+// Why a case of this many particles must be refused (particle or memory limit), or nothing.
+std::optional<std::string> size_refusal(const SphAnalysis& analysis, std::size_t particles) {
   const std::size_t bytes = sph::estimate_memory_bytes(particles);
   if (analysis.max_particles > 0 && particles > analysis.max_particles) {
-    throw SceneError({"analyses.sph.particle_spacing_m: the case would need about " + std::to_string(particles) +
-                      " particles, more than analyses.sph.max_particles = " + std::to_string(analysis.max_particles) +
-                      " (use a larger spacing or raise max_particles)"});
+    return "analyses.sph.particle_spacing_m: the case would need about " + std::to_string(particles) +
+           " particles, more than analyses.sph.max_particles = " + std::to_string(analysis.max_particles) +
+           " (use a larger spacing or raise max_particles)";
   }
   if (static_cast<double>(bytes) > analysis.memory_limit_bytes) {
-    throw SceneError({"analyses.sph.particle_spacing_m: the case would need about " +
-                      format_number(static_cast<double>(bytes) / gibibyte) + " GiB for " + std::to_string(particles) +
-                      " particles, more than analyses.sph.max_memory_GiB = " +
-                      format_number(analysis.memory_limit_bytes / gibibyte) +
-                      " (use a larger spacing or raise max_memory_GiB)"});
+    return "analyses.sph.particle_spacing_m: the case would need about " +
+           format_number(static_cast<double>(bytes) / gibibyte) + " GiB for " + std::to_string(particles) +
+           " particles, more than analyses.sph.max_memory_GiB = " + format_number(analysis.memory_limit_bytes / gibibyte) +
+           " (use a larger spacing or raise max_memory_GiB)";
   }
+  return std::nullopt;
+}
+
+void refuse_if_too_large(const SphAnalysis& analysis, std::size_t particles) {
+  if (auto why = size_refusal(analysis, particles)) throw SceneError({*why});
+}
+
+// Time step and planned step count from the materials and settings alone (no particles needed).
+void plan_steps(const std::vector<sph::Material>& materials, const sph::Settings& settings, SphPlan& plan) {
+  sph::Model model;
+  model.materials = materials;
+  model.settings = settings;
+  plan.p_wave_speed = 0.0;
+  for (const auto& m : materials)
+    plan.p_wave_speed = std::max(plan.p_wave_speed, sph::MaterialConstants::from(m).sound_speed);
+  plan.time_step = sph::time_step_estimate(model);
+  plan.planned_steps = settings.end_time / plan.time_step;
 }
 
 }  // namespace
@@ -119,11 +136,14 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
       s.gravity_mode = sph::GravityMode::sudden;
     } else if (*gravity == "geostatic_k0") {
       s.gravity_mode = sph::GravityMode::geostatic_k0;
+    } else if (*gravity == "ramped") {
+      s.gravity_mode = sph::GravityMode::ramped;
     } else {
       diagnostics.error(r.path_of("gravity"),
-                        "unknown gravity mode \"" + *gravity + "\" (allowed: sudden, geostatic_k0)");
+                        "unknown gravity mode \"" + *gravity + "\" (allowed: sudden, geostatic_k0, ramped)");
     }
   }
+  const auto ramp = r.number("gravity_ramp_s", Need::optional, Bounds::positive());
   if (auto viscosity = r.object("artificial_viscosity", Need::optional)) {
     s.viscosity.alpha = viscosity->number_or("alpha", s.viscosity.alpha, Bounds::non_negative());
     s.viscosity.beta = viscosity->number_or("beta", s.viscosity.beta, Bounds::non_negative());
@@ -148,8 +168,10 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   const double chi = r.number_or("xsph", 0.0, Bounds::closed(0.0, 1.0));
   s.xsph.enabled = chi > 0.0;
   if (chi > 0.0) s.xsph.chi = chi;
+  std::optional<long> wall_layers;
   if (auto walls = r.object("walls", Need::optional)) {
     if (auto sides = read_sides(*walls, "sides", a.section_walls)) a.section_walls = *sides;
+    wall_layers = walls->integer("layers", Need::optional, Bounds::closed(1, 50));
     if (const auto slip = walls->string("slip", Need::optional)) {
       if (*slip == "no_slip") {
         s.wall_slip = sph::WallSlip::no_slip;
@@ -161,7 +183,7 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
     }
     walls->finish();
   }
-  s.cfl = r.number_or("cfl", s.cfl, Bounds::open(0.0, 1.0));
+  s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, 0.5, true});  // sph::Settings accepts (0, 0.5]
   s.damping = r.number_or("damping_per_s", 0.0, Bounds::non_negative());
   s.checkpoint_interval_wall_s = r.number_or("checkpoint_interval_s", 300.0, Bounds::non_negative());
   a.quasi_static_speed = r.number_or("stop_below_speed_m_s", 0.0, Bounds::non_negative());
@@ -175,6 +197,39 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   s.particle_spacing = *spacing;
   s.end_time = *end_time;
   s.output_interval = output_interval.value_or(*end_time / 20.0);
+  // Gravity ramp: only with "ramped"; default 10 % of the simulated time; full gravity must be reached.
+  if (ramp && s.gravity_mode != sph::GravityMode::ramped) {
+    diagnostics.error(r.path_of("gravity_ramp_s"), "is only used with \"gravity\": \"ramped\" (remove it, or set "
+                                                   "gravity to \"ramped\")");
+    return std::nullopt;
+  }
+  if (s.gravity_mode == sph::GravityMode::ramped) {
+    s.gravity_ramp_time = ramp.value_or(0.1 * *end_time);
+    if (s.gravity_ramp_time > *end_time) {
+      diagnostics.error(r.path_of("gravity_ramp_s"),
+                        format_number(s.gravity_ramp_time) + " s is longer than end_time_s = " +
+                            format_number(*end_time) + " s: full gravity would never be reached (use a ramp of "
+                            "at most end_time_s, e.g. a few times the slope's first shear-mode period)");
+      return std::nullopt;
+    }
+  }
+  // Wall thickness: the kernel support 2h must be covered, or soil beside a wall misses part of its neighbourhood.
+  const int layers_needed = sph::wall_layers_for(s.particle_spacing, s.smoothing_length());
+  if (wall_layers) {
+    if (*wall_layers < layers_needed) {
+      diagnostics.error("analyses.sph.walls.layers",
+                        std::to_string(*wall_layers) + " wall layer" + (*wall_layers == 1 ? "" : "s") + " of " +
+                            format_number(s.particle_spacing) + " m do not cover the kernel support 2h = " +
+                            format_number(2.0 * s.smoothing_length()) + " m (h = " + format_number(s.h_over_dx) +
+                            " x particle_spacing_m): at least " + std::to_string(layers_needed) +
+                            " layers are needed, or soil particles next to the wall miss part of their "
+                            "neighbourhood (too little wall pressure) and can leak through it");
+      return std::nullopt;
+    }
+    a.wall_layers = static_cast<int>(*wall_layers);
+  } else {
+    a.wall_layers = layers_needed;
+  }
   s.gravity_x = 0.0;
   s.gravity_y = -standard_gravity;
   return a;
@@ -250,6 +305,26 @@ void check_sph_scene(const Scene& scene, Diagnostics& diagnostics) {
     const auto bodies = read_particle_bodies(*scene.bodies, diagnostics);
     std::optional<WallBox> box;
     if (scene.walls) box = read_wall_box(*scene.walls, diagnostics);
+    // As for a section: a body needs at least 4 particles across (its bounding box's smaller side).
+    if (bodies && analysis) {
+      const double dx = analysis->settings.particle_spacing;
+      for (std::size_t i = 0; i < bodies->size(); ++i) {
+        const auto& polygon = (*bodies)[i].polygon;
+        double x0 = polygon.front().x, x1 = x0, y0 = polygon.front().y, y1 = y0;
+        for (const auto& p : polygon) {
+          x0 = std::min(x0, p.x);
+          x1 = std::max(x1, p.x);
+          y0 = std::min(y0, p.y);
+          y1 = std::max(y1, p.y);
+        }
+        const double across = std::min(x1 - x0, y1 - y0);
+        if (across / dx < 4.0)
+          diagnostics.error("analyses.sph.particle_spacing_m",
+                            "spacing " + format_number(dx) + " m leaves fewer than 4 particles across bodies[" +
+                                std::to_string(i) + "] (\"" + (*bodies)[i].name + "\", " + format_number(across) +
+                                " m across); use a spacing of at most " + format_number(across / 4.0) + " m");
+      }
+    }
     if (bodies && box) {
       for (std::size_t i = 0; i < bodies->size(); ++i)
         for (std::size_t k = 0; k < (*bodies)[i].polygon.size(); ++k) {
@@ -276,7 +351,7 @@ void check_sph_scene(const Scene& scene, Diagnostics& diagnostics) {
     if ((top - section.bottom_y) / dx < 4.0 || (section.x_max() - section.x_min()) / dx < 4.0)
       diagnostics.error("analyses.sph.particle_spacing_m",
                         "spacing " + format_number(dx) + " m leaves fewer than 4 particles across the section (" +
-                            format_number(top - section.bottom_y) + " m high); use a spacing below " +
+                            format_number(top - section.bottom_y) + " m high); use a spacing of at most " +
                             format_number((top - section.bottom_y) / 4.0) + " m");
   }
 }
@@ -311,6 +386,61 @@ SectionFill fill_section(const slope::Section& section, double dx) {
   return fill;
 }
 
+std::optional<SphPlan> plan_sph(const Scene& scene, const SphAnalysis& analysis) {
+  SphPlan plan;
+  const double dx = analysis.settings.particle_spacing;
+  std::vector<sph::Material> materials;
+  if (scene.section) {
+    const auto& section = scene.section->section;
+    for (const auto& m : scene.section->materials) {
+      if (!m.youngs_modulus || !m.poisson_ratio) return std::nullopt;
+      materials.push_back(to_sph_material(m));
+    }
+    double top = section.bottom_y;
+    for (const auto& p : section.profile_lines.front().points) top = std::max(top, p.y);
+    plan.soil_particles = static_cast<std::size_t>(std::ceil(section_area(section) / (dx * dx)));
+    plan.wall_particles = wall_estimate(section.x_max() - section.x_min(), top - section.bottom_y,
+                                        analysis.section_walls, dx, analysis.wall_layers);
+  } else if (scene.bodies) {
+    Diagnostics ignored;
+    const auto bodies = read_particle_bodies(*scene.bodies, ignored);
+    if (!bodies) return std::nullopt;
+    double area = 0.0;
+    for (const auto& body : *bodies) {
+      area += polygon_area(body.polygon);
+      materials.push_back(to_sph_material(body.material));
+    }
+    plan.soil_particles = static_cast<std::size_t>(std::ceil(area / (dx * dx)));
+    if (scene.walls) {
+      const auto walls = read_wall_box(*scene.walls, ignored);
+      if (!walls) return std::nullopt;
+      plan.wall_particles =
+          wall_estimate(walls->x_max - walls->x_min, walls->height, walls->sides, dx, analysis.wall_layers);
+    }
+  } else {
+    return std::nullopt;
+  }
+  if (materials.empty()) return std::nullopt;
+  plan.memory_bytes = sph::estimate_memory_bytes(plan.soil_particles + plan.wall_particles);
+  plan_steps(materials, analysis.settings, plan);
+  return plan;
+}
+
+std::vector<std::string> sph_refusals(const SphAnalysis& analysis, const SphPlan& plan) {
+  std::vector<std::string> out;
+  if (auto why = size_refusal(analysis, plan.soil_particles + plan.wall_particles)) out.push_back(*why);
+  if (plan.planned_steps > analysis.max_steps) {
+    out.push_back("analyses.sph: the run needs about " + std::to_string(std::llround(plan.planned_steps)) +
+                  " time steps (P-wave speed " + format_number(plan.p_wave_speed) + " m/s, time step " +
+                  format_number(plan.time_step) + " s for " + format_number(analysis.settings.end_time) +
+                  " s), more than analyses.sph.max_steps = " + std::to_string(std::llround(analysis.max_steps)) +
+                  "; the explicit step is bounded by the wave speed: use a smaller youngs_modulus_MPa "
+                  "(quasi-static runs tolerate a softer soil), a shorter end_time_s, a larger particle_spacing_m, "
+                  "or raise max_steps");
+  }
+  return out;
+}
+
 sph::Model build_sph_model(const Scene& scene, SphSize* size) {
   Diagnostics diagnostics;
   const auto analysis = scene.analyses.sph ? read_sph_analysis(*scene.analyses.sph, diagnostics) : std::nullopt;
@@ -330,11 +460,11 @@ sph::Model build_sph_model(const Scene& scene, SphSize* size) {
     const double width = section.x_max() - section.x_min(), height = top - section.bottom_y;
     // Refuse before allocating anything per particle.
     const auto soil_estimate = static_cast<std::size_t>(std::ceil(section_area(section) / (dx * dx)));
-    refuse_if_too_large(*analysis, soil_estimate + wall_estimate(width, height, analysis->section_walls, dx, h));
+    refuse_if_too_large(*analysis, soil_estimate + wall_estimate(width, height, analysis->section_walls, dx, analysis->wall_layers));
 
     for (const auto& m : scene.section->materials) model.materials.push_back(to_sph_material(m));
     const SectionFill fill = fill_section(section, dx);
-    model.particles.reserve(fill.points.size() + wall_estimate(width, height, analysis->section_walls, dx, h));
+    model.particles.reserve(fill.points.size() + wall_estimate(width, height, analysis->section_walls, dx, analysis->wall_layers));
     for (std::size_t i = 0; i < fill.points.size(); ++i) {
       const double density = model.materials[fill.materials[i]].density;
       model.particles.add(fill.points[i].x, fill.points[i].y, density * dx * dx, density,
@@ -349,6 +479,7 @@ sph::Model build_sph_model(const Scene& scene, SphSize* size) {
     box.left = analysis->section_walls.left;
     box.right = analysis->section_walls.right;
     box.bottom = analysis->section_walls.bottom;
+    box.layers = analysis->wall_layers;
     if (box.left || box.right || box.bottom)
       counted.wall_particles =
           sph::add_box_walls(model.particles, box, dx, h, 0, model.materials.front().density);
@@ -360,7 +491,7 @@ sph::Model build_sph_model(const Scene& scene, SphSize* size) {
     double area = 0.0;
     for (const auto& body : *bodies) area += polygon_area(body.polygon);
     std::size_t wall_count = 0;
-    if (walls) wall_count = wall_estimate(walls->x_max - walls->x_min, walls->height, walls->sides, dx, h);
+    if (walls) wall_count = wall_estimate(walls->x_max - walls->x_min, walls->height, walls->sides, dx, analysis->wall_layers);
     refuse_if_too_large(*analysis, static_cast<std::size_t>(std::ceil(area / (dx * dx))) + wall_count);
 
     // Bodies share the lattice of the wall box (or of the first body's lower-left corner).
@@ -399,6 +530,7 @@ sph::Model build_sph_model(const Scene& scene, SphSize* size) {
       box.left = walls->sides.left;
       box.right = walls->sides.right;
       box.bottom = walls->sides.bottom;
+      box.layers = analysis->wall_layers;
       counted.wall_particles = sph::add_box_walls(model.particles, box, dx, h, 0, model.materials.front().density);
     }
   } else {

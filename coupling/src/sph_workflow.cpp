@@ -72,26 +72,22 @@ void install_interrupt_handler() {
 bool interrupt_pending() { return interrupt_requested != 0; }
 
 SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options) {
-  SphSize size;
-  sph::Model model = build_sph_model(scene, &size);
   Diagnostics unused;
   const SphAnalysis analysis = *read_sph_analysis(*scene.analyses.sph, unused);
+  // Plan before allocating anything: the explicit step is bounded by the P-wave speed; a case that needs more
+  // steps, particles or memory than its limits is refused here, with the planned figures in the message.
+  if (const auto plan = plan_sph(scene, analysis)) {
+    const std::vector<std::string> refusals = sph_refusals(analysis, *plan);
+    if (!refusals.empty()) throw SceneError(refusals);
+  }
+  SphSize size;
+  sph::Model model = build_sph_model(scene, &size);
 
-  // Plan: the explicit step is bounded by the P-wave speed; say how many steps the run takes.
   double fastest_wave = 0.0;
   for (const auto& m : model.materials) fastest_wave = std::max(fastest_wave, sph::MaterialConstants::from(m).sound_speed);
   const double h = model.settings.smoothing_length();
   const double time_step = sph::time_step_estimate(model);
   const double planned_steps = model.settings.end_time / time_step;
-
-  if (planned_steps > analysis.max_steps) {
-    throw SceneError({"analyses.sph: the run needs about " + format_number(std::round(planned_steps)) +
-                      " time steps (P-wave speed " + format_number(fastest_wave) + " m/s, time step " +
-                      format_number(time_step) + " s for " + format_number(model.settings.end_time) +
-                      " s), more than analyses.sph.max_steps = " + format_number(analysis.max_steps) +
-                      "; the explicit step is bounded by the wave speed: use a smaller youngs_modulus_MPa "
-                      "(quasi-static runs tolerate a softer soil), a shorter end_time_s, or raise max_steps"});
-  }
 
   SphStageResult result;
   nlohmann::json& report = result.report;
@@ -104,6 +100,11 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   report["p_wave_speed_m_s"] = fastest_wave;
   report["time_step_estimate_s"] = time_step;
   report["planned_steps"] = std::llround(planned_steps);
+  report["gravity"] = model.settings.gravity_mode == sph::GravityMode::sudden         ? "sudden"
+                      : model.settings.gravity_mode == sph::GravityMode::geostatic_k0 ? "geostatic_k0"
+                                                                                      : "ramped";
+  if (model.settings.gravity_mode == sph::GravityMode::ramped) report["gravity_ramp_s"] = model.settings.gravity_ramp_time;
+  report["wall_layers"] = analysis.wall_layers;
   report["memory_estimate_MiB"] = static_cast<double>(size.memory_bytes) / (1024.0 * 1024.0);
 
   if (options.log) {
@@ -150,9 +151,33 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   report["particle_steps_per_second"] = summary.particle_steps_per_second;
   report["stopped_because"] = summary.stopped_because;
   report["frames"] = summary.frames_written;
-  report["final_energy_J_m"] = {{"kinetic", summary.kinetic_energy},
-                                {"potential", summary.potential_energy},
-                                {"plastic_dissipation", summary.plastic_dissipation}};
+  const bool energies_finite = std::isfinite(summary.kinetic_energy) && std::isfinite(summary.potential_energy) &&
+                               std::isfinite(summary.plastic_dissipation);
+  if (energies_finite) {
+    report["final_energy_J_m"] = {{"kinetic", summary.kinetic_energy},
+                                  {"potential", summary.potential_energy},
+                                  {"plastic_dissipation", summary.plastic_dissipation}};
+  } else {
+    report["final_energy_J_m"] = nullptr;  // diverged state (blow-up): see "error"
+  }
+  // Energy balance: kinetic energy + plastic work cannot exceed the potential energy released (elastic energy and
+  // viscous losses are >= 0; with ramped gravity the work of gravity is smaller still). More means the scheme
+  // created energy. Not applicable with a K0 initial stress, whose stored elastic energy is released as well.
+  const double released = model.state.initial_potential_energy - summary.potential_energy;
+  nlohmann::json warnings = nlohmann::json::array();
+  if (energies_finite && released > 0.0) {
+    const double ratio = (summary.kinetic_energy + summary.plastic_dissipation) / released;
+    report["energy_balance"] = {{"released_potential_J_m", released},
+                                {"kinetic_plus_plastic_J_m", summary.kinetic_energy + summary.plastic_dissipation},
+                                {"ratio", ratio}};
+    if (ratio > 1.05 && model.settings.gravity_mode != sph::GravityMode::geostatic_k0)
+      warnings.push_back("kinetic energy + plastic work = " + format_number(ratio) +
+                         " x the potential energy released: the scheme created energy (time step too large for the "
+                         "material, artificial viscosity too low?); treat the result as unreliable");
+  }
+  report["warnings"] = warnings;
+  if (options.log)
+    for (const auto& w : warnings) *options.log << "sph: warning: " << w.get<std::string>() << "\n";
   if (options.output_dir)
     report["files"] = {{"frames", "frames.pvd"}, {"energy_history", "energy.csv"}, {"checkpoint", "checkpoint.bin"}};
   result.ok = summary.stopped_because == "end_time" || summary.stopped_because == "quasi_static";
@@ -177,6 +202,17 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
     snapshot.stress_xx.push_back(p.sxx[i]);
     snapshot.stress_yy.push_back(p.syy[i]);
   }
+  // Largest displacement and accumulated plastic strain of any soil particle at the end (null if not finite).
+  double max_displacement = 0.0, max_plastic_strain = 0.0;
+  bool finite = true;
+  for (std::size_t i = 0; i < snapshot.x.size(); ++i) {
+    const double u = std::hypot(snapshot.x[i] - snapshot.x0[i], snapshot.y[i] - snapshot.y0[i]);
+    finite = finite && std::isfinite(u) && std::isfinite(snapshot.plastic_strain[i]);
+    max_displacement = std::max(max_displacement, u);
+    max_plastic_strain = std::max(max_plastic_strain, snapshot.plastic_strain[i]);
+  }
+  report["max_displacement_m"] = finite ? nlohmann::json(max_displacement) : nlohmann::json(nullptr);
+  report["max_plastic_strain"] = finite ? nlohmann::json(max_plastic_strain) : nlohmann::json(nullptr);
   if (scene.bodies && !snapshot.x.empty()) report["deposit"] = deposit_report(snapshot);
   return result;
 }

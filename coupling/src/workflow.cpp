@@ -11,6 +11,7 @@
 #include "coupling/comparison.hpp"
 #include "coupling/figures.hpp"
 #include "coupling/report.hpp"
+#include "coupling/sph_setup.hpp"
 #include "coupling/sph_workflow.hpp"
 #include "coupling/strength_reduction.hpp"
 
@@ -102,7 +103,9 @@ StageOutcome run_sph(const Scene& scene, const WorkflowOptions& options, Workflo
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back("sph: " + result.error);
   }
-  final_state = std::move(result.final_state);
+  // After a blow-up the particle state is the diverged one (non-finite or meaningless values): no comparison or
+  // figure is drawn from it (the last good frame is in frames/).
+  if (result.report.value("stopped_because", std::string()) != "blow_up") final_state = std::move(result.final_state);
   return outcome;
 }
 
@@ -234,7 +237,20 @@ WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options) {
   const Clock::time_point start = Clock::now();
   WorkflowResult out;
   out.scene = scene;
-  if (options.mode == Mode::check) return out;
+  if (options.mode == Mode::check) {
+    // A valid scene whose SPH run would be refused before starting (particle, memory or step limits) is reported
+    // by "check" as well, with the same messages (estimated without building particles).
+    if (scene.analyses.sph) {
+      Diagnostics diagnostics;
+      const auto analysis = read_sph_analysis(*scene.analyses.sph, diagnostics);
+      const auto plan = analysis ? plan_sph(scene, *analysis) : std::nullopt;
+      if (plan) {
+        out.errors = sph_refusals(*analysis, *plan);
+        if (!out.errors.empty()) out.status = ExitStatus::invalid_input;
+      }
+    }
+    return out;
+  }
 
   out.report = report_header(scene);
   out.report["timing_s"] = nlohmann::json::object();

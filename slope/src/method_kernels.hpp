@@ -19,7 +19,7 @@ enum class Failure {
   not_positive,        // the solution is not a positive finite number
   singular_recursion,  // Spencer / Morgenstern-Price: the interslice force recursion broke down
   lambda_out_of_range, // Spencer / Morgenstern-Price: |lambda| > maximum_lambda (non-physical root)
-  negative_strength,   // Spencer / Morgenstern-Price: a slice base would need c' l + N' tan phi' < 0
+  negative_strength,   // a slice base would need c' l + N' tan phi' < 0 (effective normal tension)
 };
 
 struct Outcome {

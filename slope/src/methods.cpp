@@ -55,6 +55,9 @@ Outcome evaluate_method(const SliceTable& table, Method method, MethodWorkspace&
       if (out.ok()) {
         out.value = out.factor_of_safety;  // the uncorrected value, for the slice forces
         out.factor_of_safety *= janbu_correction_factor(table);
+        // f0 = 1 + b1 (d/L - 1.4 (d/L)^2) turns negative for d/L above about 1.6 (far outside Janbu's chart):
+        // never report such a product as a factor of safety.
+        if (!(out.factor_of_safety > 0.0) || !std::isfinite(out.factor_of_safety)) out.failure = Failure::not_positive;
       }
       return out;
     }
@@ -132,7 +135,10 @@ std::string describe_failure(const Outcome& outcome, const SliceTable& table) {
           << "no physical solution";
       break;
     case Failure::negative_strength:
-      out << "the (F, lambda = " << outcome.value << ") root needs a negative shear strength c' l + N' tan(phi')";
+      if (std::isfinite(outcome.value))
+        out << "the (F, lambda = " << outcome.value << ") root needs a negative shear strength c' l + N' tan(phi')";
+      else
+        out << "the solution needs a negative shear strength c' l + N' tan(phi')";
       slice_text(outcome.slice);
       out << " (effective normal tension beyond the Mohr-Coulomb limit): not a physical solution";
       break;

@@ -140,6 +140,33 @@ Outcome solve_ratio_equation(const RatioEquation& eq, double guess) {
   return out;
 }
 
+// Acceptability, as for Spencer / Morgenstern-Price: no slice base may need a negative shear strength
+// c' l + N' tan(phi') < 0 (an effective normal tension beyond the Mohr-Coulomb apex). Without this check the search
+// drives the Ordinary method under deep water (N' = V cos a - u l < 0) and Bishop on vertical faces (tension in the
+// steep upper slices) to surfaces whose "resistance" is mostly negative, down to F = 1e-14. `normal(i)` is the
+// effective normal force of slice i at the solution. Returns false (and fills `out`) when a slice fails.
+template <class Normal>
+bool strengths_non_negative(const SliceTable& t, Normal&& normal, Outcome& out) {
+  for (int i = 0; i < t.count; ++i) {
+    const double effective_normal = normal(i);
+    const double available = t.cohesion_force[i] + effective_normal * t.tan_phi[i];
+    const double scale = t.cohesion_force[i] + std::fabs(effective_normal) * t.tan_phi[i];
+    if (scale > 0.0 && available < -1e-9 * scale) {
+      out.failure = Failure::negative_strength;
+      out.slice = i;
+      out.value = std::numeric_limits<double>::quiet_NaN();
+      return false;
+    }
+  }
+  return true;
+}
+
+// Effective normal force of slice i with zero interslice shear (Bishop, Janbu) at F.
+inline double simplified_normal(const SliceTable& t, int i, double F) {
+  const double m = t.cos_a[i] + t.sin_a[i] * t.tan_phi[i] / F;
+  return (t.vertical[i] - t.pore_force[i] * t.cos_a[i] - t.cohesion_force[i] * t.sin_a[i] / F) / m;
+}
+
 }  // namespace
 
 Outcome ordinary_method(const SliceTable& t) {
@@ -157,7 +184,12 @@ Outcome ordinary_method(const SliceTable& t) {
   }
   out.factor_of_safety = resisting / moment;
   out.iterations = 1;
-  if (!(out.factor_of_safety > 0.0) || !std::isfinite(out.factor_of_safety)) out.failure = Failure::not_positive;
+  if (!(out.factor_of_safety > 0.0) || !std::isfinite(out.factor_of_safety)) {
+    out.failure = Failure::not_positive;
+    return out;
+  }
+  strengths_non_negative(
+      t, [&](int i) { return t.vertical[i] * t.cos_a[i] - t.horizontal[i] * t.sin_a[i] - t.pore_force[i]; }, out);
   return out;
 }
 
@@ -187,6 +219,10 @@ Outcome bishop_method(const SliceTable& t, MethodWorkspace& ws) {
   out = solve_ratio_equation(eq, guess > 0.05 ? guess : 1.0);
   if (out.ok() && !(out.factor_of_safety > 0.0 && std::isfinite(out.factor_of_safety)))
     out.failure = Failure::not_positive;
+  if (out.ok()) {
+    const double F = out.factor_of_safety;
+    strengths_non_negative(t, [&](int i) { return simplified_normal(t, i, F); }, out);
+  }
   return out;
 }
 
@@ -216,6 +252,10 @@ Outcome janbu_method(const SliceTable& t, MethodWorkspace& ws) {
   out = solve_ratio_equation(eq, guess > 0.05 ? guess : 1.0);
   if (out.ok() && !(out.factor_of_safety > 0.0 && std::isfinite(out.factor_of_safety)))
     out.failure = Failure::not_positive;
+  if (out.ok()) {
+    const double F = out.factor_of_safety;
+    strengths_non_negative(t, [&](int i) { return simplified_normal(t, i, F); }, out);
+  }
   return out;
 }
 

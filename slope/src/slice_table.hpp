@@ -20,6 +20,7 @@ enum class Rejection {
   several_masses,        // the circle cuts the ground surface more than twice
   below_base,            // the arc passes below the rigid base bottom_y
   too_small,             // the mass is vanishingly small
+  radius_too_large,      // radius above 1e4 section extents: a plane to within floating-point geometry
 };
 const char* rejection_text(Rejection rejection);
 

@@ -29,6 +29,9 @@ const char* rejection_text(Rejection rejection) {
     case Rejection::several_masses: return "the circle cuts the ground surface more than twice";
     case Rejection::below_base: return "the circle passes below the rigid base (bottom_y)";
     case Rejection::too_small: return "the slip mass is vanishingly small";
+    case Rejection::radius_too_large:
+      return "the radius exceeds 10^4 times the section's extent (the circle is a plane to within the accuracy of "
+             "the geometry; planes are approached by smaller circles)";
   }
   return "unknown";
 }
@@ -183,6 +186,10 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
   const double yc = circle.yc;
   const double R = circle.radius;
   if (!(R > 0.0) || !std::isfinite(R) || !std::isfinite(xc) || !std::isfinite(yc)) return Rejection::invalid_circle;
+  // Beyond this radius the arc and its crossings are computed from differences of numbers 1e8 times larger than
+  // the section, and Janbu's f0 and the slice geometry lose their accuracy (seen with vertical faces, where the
+  // force-equilibrium methods favour planes and the refinement drifts to radii of 1e8 m).
+  if (R > 1e4 * (ps.x_max - ps.x_min + ps.ground_y_max - ps.bottom_y)) return Rejection::radius_too_large;
   const double R2 = R * R;
   auto arc = [&](double x) {
     const double d = x - xc;
@@ -213,7 +220,10 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
     std::sort(roots_.begin(), roots_.end());
     root_is_contact_.assign(roots_.size(), 0);
   }
-  const double tol_x = 1e-10 * (R + std::fabs(xc) + 1.0);
+  // Intervals shorter than tol_x between split points are empty (coincident roots). The tolerance follows the
+  // section's size, not the circle's: with a radius of 1e6 m or more (the search approaching a plane) a
+  // radius-relative tolerance exceeded the 1 mm width of a "vertical" face and dropped the face crossing.
+  const double tol_x = 1e-10 * (ps.x_max - ps.x_min + 1.0) + 1e-14 * (R + std::fabs(xc));
   const double tol_base = 1e-9 * (1.0 + R + std::fabs(ps.bottom_y));
   double left = 0.0, right = 0.0;
   bool open = false, found = false, left_is_root = false;

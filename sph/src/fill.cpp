@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace sph {
 
@@ -65,7 +66,12 @@ std::size_t add_box_walls(Particles& particles, const BoxWalls& box, double dx, 
                           double density) {
   if (!(dx > 0) || !(h > 0) || !(density > 0)) throw std::invalid_argument("add_box_walls: dx, h, density must be > 0");
   if (!(box.x_max > box.x_min) || !(box.height > 0)) throw std::invalid_argument("add_box_walls: empty box");
-  const int layers = box.layers > 0 ? box.layers : wall_layers_for(dx, h);
+  const int needed = wall_layers_for(dx, h);
+  if (box.layers < 0 || (box.layers > 0 && box.layers < needed))
+    throw std::invalid_argument("add_box_walls: " + std::to_string(box.layers) +
+                                " wall layers do not cover the kernel support 2h = " + std::to_string(2.0 * h) +
+                                " m; at least " + std::to_string(needed) + " are needed");
+  const int layers = box.layers > 0 ? box.layers : needed;
   const double m = density * dx * dx;
   const double s = 1.0 / std::sqrt(2.0);
   std::size_t count = 0;

@@ -29,6 +29,8 @@ void Settings::validate() const {
   require(finite_positive(artificial_stress.exponent), "settings.artificial_stress.exponent must be > 0 (typical 2.55-4)");
   require(std::isfinite(xsph.chi) && xsph.chi >= 0 && xsph.chi <= 1, "settings.xsph.chi must lie in [0, 1]");
   require(std::isfinite(gravity_x) && std::isfinite(gravity_y), "settings.gravity must be finite");
+  if (gravity_mode == GravityMode::ramped)
+    require(finite_positive(gravity_ramp_time), "settings.gravity_ramp_time must be > 0 s when gravity is ramped");
   require(std::isfinite(damping) && damping >= 0, "settings.damping must be >= 0 1/s");
   require(finite_positive(cfl) && cfl <= 0.5, "settings.cfl must lie in (0, 0.5] (typical 0.1-0.2)");
   require(finite_positive(acceleration_safety) && acceleration_safety <= 0.5,
@@ -62,6 +64,11 @@ void Model::validate() const {
                                   " has a non-positive mass/density or a non-finite position");
     if (p.kind[i] > 1) throw std::invalid_argument("model: particle " + std::to_string(p.id[i]) + " has an unknown kind");
   }
+}
+
+double Settings::gravity_factor(double t) const {
+  if (gravity_mode != GravityMode::ramped) return 1.0;
+  return t >= gravity_ramp_time ? 1.0 : std::max(t, 0.0) / gravity_ramp_time;
 }
 
 bool Model::uses_artificial_stress() const {

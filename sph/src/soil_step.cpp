@@ -32,6 +32,7 @@ struct SoilStep::Impl {
   std::vector<double> block_a, block_b, block_c;
   void (*eval)(SoilStep&, Model&, Impl&) = nullptr;
   double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
+  double gravity_x = 0.0, gravity_y = 0.0;  // gravity of the current evaluation (ramped: at its time), m/s^2
 
   template <class F>
   void for_each_carried_array(F&& f) {
@@ -141,7 +142,7 @@ template <class Kernel>
 void wall_pass(Model& model, SoilStep::Impl& w, const Kernel& kernel) {
   Particles& p = model.particles;
   const double support2 = kernel.support() * kernel.support();
-  const double gx = model.settings.gravity_x, gy = model.settings.gravity_y;
+  const double gx = w.gravity_x, gy = w.gravity_y;  // the soil's current load (ramped gravity included)
   const bool no_slip = model.settings.wall_slip == WallSlip::no_slip;
   const Index nw = static_cast<Index>(w.walls.size());
   const double* x = p.x.data();
@@ -252,7 +253,7 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   const double inv_w_dx = 1.0 / w.w_dx;
   const double as_n = st.artificial_stress.exponent;
   const double chi = st.xsph.chi;
-  const double gx = st.gravity_x, gy = st.gravity_y, damping = st.damping;
+  const double gx = w.gravity_x, gy = w.gravity_y, damping = st.damping;
   const auto& mc = self.material_constants();
 
   const double* x = p.x.data();
@@ -451,7 +452,16 @@ void SoilStep::apply_geostatic_stress() {
   }
 }
 
-void SoilStep::evaluate() { impl_->eval(*this, model_, *impl_); }
+void SoilStep::evaluate() { evaluate_at(model_.state.time); }
+
+void SoilStep::evaluate_at(double time) {
+  // Gravity is set once per evaluation (not tested per particle): full, or its ramped fraction at `time`.
+  const Settings& st = model_.settings;
+  const double factor = st.gravity_factor(time);
+  impl_->gravity_x = factor * st.gravity_x;
+  impl_->gravity_y = factor * st.gravity_y;
+  impl_->eval(*this, model_, *impl_);
+}
 
 void SoilStep::initialise() {
   RunState& rs = model_.state;
@@ -520,7 +530,8 @@ void SoilStep::advance(double dt) {
       p.plastic_work[i] += half * p.dplastic_work[i];
     }
   }
-  evaluate();  // sorts (index lists change), extrapolates walls, computes rates at the predicted state
+  // sorts (index lists change), extrapolates walls, computes rates at the predicted state, at the step's end time
+  evaluate_at(model_.state.time + dt);
   {
     const bool xsph = model_.settings.xsph.enabled;
     const Index ns = static_cast<Index>(w.soil.size());
@@ -609,7 +620,9 @@ Health SoilStep::check_health() const {
       os << "has non-positive density " << p.rho[i];
     else
       os << "has speed " << std::sqrt(p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]) << " m/s in field velocity, above "
-         << vlimit << " m/s (blow_up_speed_factor x sound speed)";
+         << vlimit << " m/s (blow_up_speed_factor x sound speed): the explicit scheme is not valid for soil moving "
+            "faster than its P-wave speed (a very soft material, or a diverging run: raise the Young's modulus or "
+            "lower the time-step factor)";
   }
   h.diagnostic = os.str();
   return h;

@@ -35,6 +35,7 @@ struct WallBox {
 struct SphAnalysis {
   sph::Settings settings;               // SI
   WallSides section_walls;              // slope scenes: which sides of the section box carry walls
+  int wall_layers = 0;                  // wall thickness in particle layers (at least the kernel support 2h)
   double quasi_static_speed = 0.0;      // m/s; stop once every particle is slower (0: run to end_time_s)
   double quasi_static_min_time = 0.0;   // s; not before this simulated time
   double memory_limit_bytes = 0.0;      // refuse a case whose estimate exceeds it
@@ -59,6 +60,23 @@ struct SphSize {
   std::size_t wall_particles = 0;
   std::size_t memory_bytes = 0;
 };
+
+// What a run would need, estimated from the scene without building particles: soil and wall particle counts
+// (lattice area estimate), memory, the fastest P-wave speed, the time step at rest and the number of steps to
+// end_time_s. Empty when the scene lacks what the estimate needs (e.g. elastic constants; reported elsewhere).
+struct SphPlan {
+  std::size_t soil_particles = 0;
+  std::size_t wall_particles = 0;
+  std::size_t memory_bytes = 0;
+  double p_wave_speed = 0.0;   // m/s
+  double time_step = 0.0;      // s
+  double planned_steps = 0.0;  // end_time_s / time_step
+};
+std::optional<SphPlan> plan_sph(const Scene& scene, const SphAnalysis& analysis);
+
+// Messages ("<json path>: <why>") for a case that must be refused before it starts: more particles than
+// max_particles, more memory than max_memory_GiB, more steps than max_steps. Empty when it may run.
+std::vector<std::string> sph_refusals(const SphAnalysis& analysis, const SphPlan& plan);
 
 // Builds the particle model of a validated scene. Throws SceneError (path "analyses.sph.particle_spacing_m")
 // when the case would exceed the memory limit or the particle limit, before allocating particles.

@@ -30,7 +30,9 @@ std::size_t add_soil(Particles& particles, const std::vector<Point>& points, dou
                      double density);
 
 // Fixed wall particles around the inner box [x_min, x_max] x [y_min, y_min + height]:
-// `layers` rows (0 = ceil(2h/dx), the kernel support) below the bottom and outside the sides.
+// `layers` rows (0 = ceil(2h/dx), the kernel support) below the bottom and outside the sides. Fewer layers than
+// the kernel support needs are refused (std::invalid_argument): soil next to a thin wall would miss part of its
+// neighbourhood and could leak through.
 struct BoxWalls {
   double x_min = 0, x_max = 1, y_min = 0, height = 1;
   bool left = true, right = true, bottom = true;

@@ -15,6 +15,7 @@ namespace sph {
 enum class GravityMode {
   sudden,        // zero initial stress, full gravity from t = 0 (the thesis)
   geostatic_k0,  // sigma_yy = -rho g depth below the local free surface, sigma_xx = sigma_zz = K0 sigma_yy
+  ramped,        // zero initial stress, gravity grows linearly from 0 to full over gravity_ramp_time
 };
 
 enum class WallSlip {
@@ -50,6 +51,7 @@ struct Settings {
   Xsph xsph;
   double gravity_x = 0.0, gravity_y = -9.81;  // [m/s^2]
   GravityMode gravity_mode = GravityMode::sudden;
+  double gravity_ramp_time = 0.0;  // [s] ramped mode: g(t) = min(t / gravity_ramp_time, 1) g (> 0 required)
   WallSlip wall_slip = WallSlip::no_slip;
   double damping = 0.0;          // optional linear velocity damping [1/s] (a -= damping * v), 0 = none
   double cfl = 0.2;              // dt <= cfl * h / (c + |v|max)
@@ -61,6 +63,9 @@ struct Settings {
   double blow_up_energy_factor = 10.0;  // stop if KE > factor * (released potential energy + elastic floor)
 
   double smoothing_length() const { return h_over_dx * particle_spacing; }
+  // Fraction of the full gravity acting at simulated time t: 1, or min(t / gravity_ramp_time, 1) when ramped.
+  // A function of the time alone, so a resumed run sees the same gravity as an uninterrupted one.
+  double gravity_factor(double t) const;
   // Throws std::invalid_argument with a message naming the setting and the allowed range.
   void validate() const;
 };

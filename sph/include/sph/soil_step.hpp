@@ -58,8 +58,10 @@ class SoilStep {
   const std::vector<MaterialConstants>& material_constants() const { return mc_; }
   bool artificial_stress_enabled() const { return artificial_stress_; }
 
-  // Evaluates the rates at the current state without advancing (sort + walls + rates).
+  // Evaluates the rates at the current state without advancing (sort + walls + rates), with the gravity of the
+  // current time (evaluate) or of the given time (evaluate_at; ramped gravity).
   void evaluate();
+  void evaluate_at(double time);
 
   // Sets sigma_yy = -g sum(rho dx) over the soil above each particle in its lattice column,
   // sigma_xx = sigma_zz = K0 sigma_yy. Requires gravity along -y.

@@ -1,0 +1,525 @@
+// The short cases of the stability matrix (cases/stability, docs/stability.md), through the sphslope program:
+// each must finish with physically sensible results or stop with a clear diagnostic, and never write a null or
+// NaN number that the report does not explain. The long SPH cases (stiff soil at 2e4 steps, the 50 m slope) run in
+// scripts/stability-matrix only. Reference values: closed forms and charts named at each check.
+#include <catch2/catch.hpp>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "coupling/scene.hpp"
+#include "coupling/sph_setup.hpp"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct Run {
+  int status = -1;
+  std::string output;       // stdout and stderr
+  double max_rss_MiB = 0;   // peak resident memory of the program
+};
+
+fs::path case_file(const std::string& stem) { return fs::path(SPHSLOPE_SOURCE_DIR) / "cases/stability" / (stem + ".json"); }
+
+json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  return json::parse(in);
+}
+
+// A fresh temporary folder, removed at the end of the test.
+struct Folder {
+  fs::path path;
+  explicit Folder(const std::string& tag) {
+    path = fs::temp_directory_path() / ("sphslope-stability-" + tag + "-" + std::to_string(::getpid()));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~Folder() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+// Runs the program with the arguments, output into a file; wait4 gives the child's own peak memory.
+Run run_program(std::vector<std::string> args, const fs::path& log) {
+  args.insert(args.begin(), SPHSLOPE_BINARY);
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  pid_t pid = 0;
+  Run run;
+  const int error = posix_spawn(&pid, SPHSLOPE_BINARY, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  REQUIRE(error == 0);
+  int status = 0;
+  struct rusage usage {};
+  ::wait4(pid, &status, 0, &usage);
+  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.max_rss_MiB = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  std::ifstream in(log);
+  run.output.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return run;
+}
+
+Run run_case(const std::string& command, const fs::path& scene, const fs::path& out) {
+  return run_program({command, scene.string(), "-o", out.string()}, out.string() + ".log");
+}
+
+// Every null (or non-finite number) of the report that its object does not explain: a null is explained when the
+// same object holds "error" or "<key>_error" (e.g. factor_of_safety: null next to error), or for
+// lem.settings.minimum_depth_m (null = automatic, documented).
+void unexplained_nulls(const json& value, const std::string& path, const json* parent, const std::string& key,
+                       std::vector<std::string>& found) {
+  if (value.is_object()) {
+    for (auto it = value.begin(); it != value.end(); ++it)
+      unexplained_nulls(it.value(), path.empty() ? it.key() : path + "." + it.key(), &value, it.key(), found);
+  } else if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i)
+      unexplained_nulls(value[i], path + "[" + std::to_string(i) + "]", parent, key, found);
+  } else if (value.is_null()) {
+    const bool explained = (parent && (parent->contains("error") || parent->contains(key + "_error"))) ||
+                           path.ends_with("settings.minimum_depth_m");
+    if (!explained) found.push_back(path);
+  } else if (value.is_number_float() && !std::isfinite(value.get<double>())) {
+    found.push_back(path);
+  }
+}
+
+std::vector<std::string> unexplained_nulls(const json& report) {
+  std::vector<std::string> found;
+  unexplained_nulls(report, "", nullptr, "", found);
+  return found;
+}
+
+struct EnergyHistory {
+  double peak_kinetic = 0, final_kinetic = 0, released_potential = 0, plastic = 0;
+  bool finite = true;
+};
+
+EnergyHistory read_energy(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  REQUIRE(line == "time_s,kinetic_J_m,potential_J_m,plastic_dissipation_J_m,max_speed_m_s");
+  EnergyHistory e;
+  double first_potential = NAN, last_potential = NAN;
+  int rows = 0;
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    double v[5];
+    char comma;
+    row >> v[0] >> comma >> v[1] >> comma >> v[2] >> comma >> v[3] >> comma >> v[4];
+    for (double x : v) e.finite = e.finite && std::isfinite(x);
+    if (rows++ == 0) first_potential = v[2];
+    last_potential = v[2];
+    e.peak_kinetic = std::max(e.peak_kinetic, v[1]);
+    e.final_kinetic = v[1];
+    e.plastic = v[3];
+  }
+  REQUIRE(rows > 2);
+  e.released_potential = first_potential - last_potential;
+  return e;
+}
+
+double fs_of(const json& report, const std::string& method) {
+  const json& value = report["lem"]["methods"][method]["factor_of_safety"];
+  REQUIRE(value.is_number());
+  return value.get<double>();
+}
+
+// Runs a variant of a scene (lem only) and returns its report.
+json run_variant(const json& scene, const Folder& folder, const std::string& tag) {
+  const fs::path file = folder.path / (tag + ".json");
+  std::ofstream(file) << scene.dump(1);
+  const fs::path out = folder.path / tag;
+  REQUIRE(run_case("lem", file, out).status == 0);
+  return read_json(out / "report.json");
+}
+
+}  // namespace
+
+// ---- refusals: exit 2, a message naming the JSON path and the figures, nothing written ----
+
+TEST_CASE("stability: refused cases stop before running, say why, and write nothing", "[stability][refusal]") {
+  struct Refusal {
+    const char* stem;
+    std::vector<std::string> words;
+  };
+  const Refusal refusals[] = {
+      {"sph_stiff_1GPa_refused", {"analyses.sph:", "time steps", "P-wave speed", "analyses.sph.max_steps = 5000000"}},
+      {"sph_too_few_particles", {"analyses.sph.particle_spacing_m", "fewer than 4 particles", "at most 2.5 m"}},
+      {"sph_walls_too_thin", {"analyses.sph.walls.layers", "at least 3 layers", "kernel support"}},
+      {"sph_memory_exceeded", {"analyses.sph.particle_spacing_m", "GiB", "max_memory_GiB = 16"}},
+  };
+  Folder folder("refusals");
+  for (const auto& r : refusals) {
+    INFO(r.stem);
+    const fs::path out = folder.path / r.stem;
+    for (const char* command : {"check", "run"}) {
+      INFO(command);
+      const Run run = command == std::string("check")
+                          ? run_program({"check", case_file(r.stem).string()}, folder.path / "check.log")
+                          : run_case("run", case_file(r.stem), out);
+      INFO(run.output);
+      CHECK(run.status == 2);
+      for (const auto& word : r.words) CHECK(run.output.find(word) != std::string::npos);
+      CHECK_FALSE(fs::exists(out));  // nothing written, not even the folder
+    }
+  }
+}
+
+TEST_CASE("stability: the stiff-soil refusal states the planned step count", "[stability][refusal]") {
+  // E = 1 GPa, nu = 0.25, rho = 2100 kg/m3: P-wave speed sqrt(M / rho) = 756 m/s (M = E (1 - nu) / ((1 + nu)
+  // (1 - 2 nu))); dt = cfl h / (c (1 + 1.2 alpha)) = 0.2 x 0.024 / (756 x 1.12) = 5.67e-6 s; 60 s -> 1.06e7 steps.
+  Folder folder("stiff");
+  const Run run = run_case("run", case_file("sph_stiff_1GPa_refused"), folder.path / "out");
+  const auto at = run.output.find("needs about ");
+  REQUIRE(at != std::string::npos);
+  const double planned = std::stod(run.output.substr(at + 12));
+  const double c = std::sqrt(1e9 * 0.75 / (1.25 * 0.5) / (20.601e3 / 9.81));
+  const double expected = 60.0 / (0.2 * 1.2 * 0.02 / (c * 1.12));
+  CHECK(planned == Approx(expected).epsilon(1e-3));
+  CHECK(planned > 5e6);
+}
+
+TEST_CASE("stability: a spacing that would exceed the memory limit is refused before allocating", "[stability][refusal]") {
+  // 3.8e7 particles would need about 37 GiB; the refusal must come from the estimate, not from an allocation:
+  // the program's peak memory stays that of an empty run (a few MiB), far below one particle array (300 MiB).
+  Folder folder("memory");
+  const Run run = run_case("run", case_file("sph_memory_exceeded"), folder.path / "out");
+  CHECK(run.status == 2);
+  CHECK(run.max_rss_MiB < 100);
+}
+
+// ---- SPH runs that must finish (or stop) sensibly ----
+
+TEST_CASE("stability: a very cohesive slope barely moves and never yields", "[stability][sph]") {
+  // c = 1 MPa (LEM FS far above 1), E = 100 MPa, nu = 0.3, sudden gravity: only the elastic response remains.
+  // One-dimensional settlement of the crest column under its own weight: delta = gamma H^2 / (2 M), M the P-wave
+  // (oedometric) modulus; sudden loading of an undamped body overshoots it by up to a factor 2, and the free face
+  // adds some lateral bulging: the largest displacement must stay below 2.5 delta.
+  Folder folder("cohesive");
+  const Run run = run_case("run", case_file("sph_high_cohesion"), folder.path / "out");
+  INFO(run.output);
+  REQUIRE(run.status == 0);
+  const json report = read_json(folder.path / "out/report.json");
+  CHECK(unexplained_nulls(report).empty());
+  const json scene = read_json(case_file("sph_high_cohesion"));
+  const json& m = scene["section"]["materials"][0];
+  const double E = m["youngs_modulus_MPa"].get<double>() * 1e6, nu = m["poisson_ratio"];
+  const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  const double delta = m["unit_weight_kN_m3"].get<double>() * 1e3 * 10.0 * 10.0 / (2 * M);
+  CHECK(report["sph"]["max_displacement_m"].get<double>() < 2.5 * delta);
+  CHECK(report["sph"]["max_plastic_strain"].get<double>() == 0.0);
+  CHECK(fs_of(report, "bishop") > 5.0);
+}
+
+TEST_CASE("stability: ramped gravity loads a stable slope with less kinetic energy and no more plastic strain "
+          "than sudden gravity",
+          "[stability][sph][gravity]") {
+  // Same slope (c = 40 kPa, phi = 20 deg, LEM Bishop FS well above 1), 4 s; the ramp lasts 2 s, about 2.7 times
+  // the first shear-mode period T1 = 4H/Vs = 0.75 s. Both must stay in place (below 2 % of H = 0.2 m).
+  Folder folder("gravity");
+  json peak;
+  for (const char* mode : {"sudden", "ramped"}) {
+    const std::string stem = std::string("sph_gravity_") + mode;
+    const Run run = run_case("run", case_file(stem), folder.path / mode);
+    INFO(run.output);
+    REQUIRE(run.status == 0);
+    const json report = read_json(folder.path / mode / "report.json");
+    CHECK(unexplained_nulls(report).empty());
+    CHECK(report["sph"]["gravity"] == mode);
+    CHECK(report["sph"]["max_displacement_m"].get<double>() < 0.2);
+    const EnergyHistory e = read_energy(folder.path / mode / "energy.csv");
+    CHECK(e.finite);
+    peak[mode] = {{"kinetic", e.peak_kinetic}, {"plastic", report["sph"]["max_plastic_strain"]}};
+  }
+  INFO(peak.dump());
+  CHECK(peak["ramped"]["kinetic"].get<double>() < peak["sudden"]["kinetic"].get<double>());
+  CHECK(peak["ramped"]["plastic"].get<double>() <= peak["sudden"]["plastic"].get<double>());
+}
+
+TEST_CASE("stability: failing slopes of extreme materials finish, fail as LEM says, and stay within the energy "
+          "released",
+          "[stability][sph]") {
+  // Each has an LEM Bishop FS below 1 and must move more than 0.5 m (5 % of the 10 m slopes; 12 % of the 4 m face).
+  // Energy: kinetic energy + plastic work cannot exceed the potential energy released (elastic energy and viscous
+  // losses are >= 0); 5 % margin for the time discretisation.
+  Folder folder("failing");
+  for (const char* stem : {"sph_undrained_clay_phi0", "sph_vertical_face_c0_phi45", "sph_four_particles_across",
+                           "sph_nearly_incompressible"}) {
+    INFO(stem);
+    const Run run = run_case("run", case_file(stem), folder.path / stem);
+    INFO(run.output);
+    REQUIRE(run.status == 0);
+    const json report = read_json(folder.path / stem / "report.json");
+    CHECK(unexplained_nulls(report).empty());
+    CHECK(report["sph"]["stopped_because"] == "end_time");
+    CHECK(fs_of(report, "bishop") < 1.0);
+    CHECK(report["sph"]["max_displacement_m"].get<double>() > 0.5);
+    CHECK(report["sph"]["warnings"].empty());
+    const EnergyHistory e = read_energy(folder.path / stem / "energy.csv");
+    CHECK(e.finite);
+    REQUIRE(e.released_potential > 0);
+    CHECK(e.final_kinetic + e.plastic <= 1.05 * e.released_potential);
+    if (std::string(stem) == "sph_vertical_face_c0_phi45") CHECK(e.final_kinetic < 0.1 * e.peak_kinetic);  // at rest
+  }
+}
+
+TEST_CASE("stability: a very soft soil stops with the blow-up diagnostic and no comparison from the diverged state",
+          "[stability][sph]") {
+  Folder folder("soft");
+  const Run run = run_case("run", case_file("sph_very_soft_soil_blow_up"), folder.path / "out");
+  INFO(run.output);
+  CHECK(run.status == 1);
+  const json report = read_json(folder.path / "out/report.json");
+  CHECK(unexplained_nulls(report).empty());
+  CHECK(report["status"] == "failed");
+  CHECK(report["sph"]["stopped_because"] == "blow_up");
+  const std::string error = report["sph"]["error"];
+  CHECK(error.find("particle") != std::string::npos);
+  CHECK(error.find("step") != std::string::npos);
+  CHECK(error.find("P-wave speed") != std::string::npos);
+  CHECK(report["comparison"].contains("error"));
+}
+
+TEST_CASE("stability: a run that creates energy finishes with a warning, not silently", "[stability][sph]") {
+  Folder folder("energy");
+  const Run run = run_case("run", case_file("sph_energy_created_warning"), folder.path / "out");
+  REQUIRE(run.status == 0);
+  CHECK(run.output.find("sph: warning: kinetic energy + plastic work") != std::string::npos);
+  const json report = read_json(folder.path / "out/report.json");
+  CHECK(unexplained_nulls(report).empty());
+  CHECK(report["sph"]["energy_balance"]["ratio"].get<double>() > 1.05);
+  REQUIRE(report["sph"]["warnings"].size() == 1);
+}
+
+// ---- limit equilibrium ----
+
+TEST_CASE("stability: vertical cut in undrained clay matches Taylor's stability number", "[stability][lem]") {
+  // Taylor (1937): beta = 90 deg, phi = 0: N = c/(F gamma H) = 0.261 -> FS = 30/(0.261 x 20 x 6) = 0.958 (toe
+  // circles; chart read to about 1 %: 2 % tolerance). For phi = 0, Ordinary, Bishop, Spencer and M-P are all exact
+  // moment equilibrium on a circle. The force-equilibrium Janbu methods approach the Culmann plane 4c/(gamma H) = 1.
+  Folder folder("vertical0");
+  const Run run = run_case("lem", case_file("lem_vertical_face_phi0"), folder.path / "out");
+  REQUIRE(run.status == 0);
+  const json report = read_json(folder.path / "out/report.json");
+  CHECK(unexplained_nulls(report).empty());
+  const double taylor = 30.0 / (0.261 * 20.0 * 6.0);
+  for (const char* m : {"ordinary", "bishop", "spencer", "morgenstern_price", "morgenstern_price_constant"}) {
+    INFO(m);
+    CHECK(fs_of(report, m) == Approx(taylor).epsilon(0.02));
+  }
+  for (const char* m : {"janbu", "janbu_corrected"}) {
+    INFO(m);
+    CHECK(fs_of(report, m) > 0.5);   // the lower bound 2c/(gamma H) of a vertical cut
+    CHECK(fs_of(report, m) <= 1.005);
+  }
+}
+
+TEST_CASE("stability: vertical cut in a c-phi soil lies between the Rankine lower bound and the Culmann plane",
+          "[stability][lem]") {
+  // H = 6 m, c = 20 kPa, phi = 20 deg, gamma = 20 kN/m3. Culmann / Rankine: H_crit = 4 c/gamma tan(45 + phi/2);
+  // F is the factor on c and tan(phi) that makes H_crit(F) = 6 m (0.964). The Rankine stress field without tension
+  // (H = 2 c/gamma tan(45 + phi/2), Drucker & Prager 1952) gives a lower bound of the collapse height (F ~ 0.5).
+  // Every method must lie between; the rigorous methods within 10 % below the plane (Chen's log-spiral 3.83/4).
+  auto fs_for = [](double coefficient) {
+    double lo = 0.01, hi = 100;
+    for (int i = 0; i < 200; ++i) {
+      const double F = 0.5 * (lo + hi);
+      const double phi = std::atan(std::tan(20.0 * M_PI / 180.0) / F);
+      const double h = coefficient * (20.0 / F) / 20.0 * std::tan(M_PI / 4 + phi / 2);
+      (h > 6.0 ? lo : hi) = F;
+    }
+    return 0.5 * (lo + hi);
+  };
+  const double plane = fs_for(4.0), lower = fs_for(2.0);
+  REQUIRE(plane == Approx(0.964).epsilon(0.001));
+  Folder folder("verticalcphi");
+  REQUIRE(run_case("lem", case_file("lem_vertical_face_c_phi"), folder.path / "out").status == 0);
+  const json report = read_json(folder.path / "out/report.json");
+  CHECK(unexplained_nulls(report).empty());
+  for (auto& [method, value] : report["lem"]["methods"].items()) {
+    INFO(method);
+    REQUIRE(value["factor_of_safety"].is_number());  // never negative or null (Janbu's f0 gave -1.7e15)
+    CHECK(value["factor_of_safety"].get<double>() >= lower);
+    CHECK(value["factor_of_safety"].get<double>() <= 1.005 * plane);
+  }
+  for (const char* m : {"spencer", "morgenstern_price", "morgenstern_price_constant"}) CHECK(fs_of(report, m) >= 0.9 * plane);
+}
+
+TEST_CASE("stability: phi = 0 slope at 60 deg matches Taylor's chart", "[stability][lem]") {
+  // Taylor (1937): beta = 60 deg, phi = 0, toe circle: N = 0.191 -> FS = 38.2 / (0.191 x 20 x 10) = 1.000.
+  Folder folder("taylor60");
+  REQUIRE(run_case("lem", case_file("lem_phi0_taylor_60deg"), folder.path / "out").status == 0);
+  const json report = read_json(folder.path / "out/report.json");
+  CHECK(unexplained_nulls(report).empty());
+  CHECK(fs_of(report, "bishop") == Approx(1.0).epsilon(0.02));
+  CHECK(fs_of(report, "ordinary") == Approx(1.0).epsilon(0.02));
+}
+
+TEST_CASE("stability: a very flat slope has FS >> 1, at the infinite-slope value", "[stability][lem]") {
+  // 1:20, c = 0, phi = 30 deg: FS = tan(phi)/tan(beta) = 11.55 for the infinite slope; shallow circles approach it
+  // from above (5 %).
+  Folder folder("flat");
+  REQUIRE(run_case("lem", case_file("lem_flat_slope"), folder.path / "out").status == 0);
+  const json report = read_json(folder.path / "out/report.json");
+  CHECK(unexplained_nulls(report).empty());
+  const double infinite = std::tan(30.0 * M_PI / 180.0) / 0.05;
+  for (auto& [method, value] : report["lem"]["methods"].items()) {
+    INFO(method);
+    CHECK(value["factor_of_safety"].get<double>() >= infinite * 0.999);
+    CHECK(value["factor_of_safety"].get<double>() <= infinite * 1.05);
+  }
+}
+
+TEST_CASE("stability: a submerged slope has the factor of safety of the buoyant dry slope", "[stability][lem]") {
+  // Still water above the crest acts through buoyancy only: effective-stress FS = FS of the dry slope with
+  // gamma' = gamma - gamma_w (1 % for the methods with interslice or Bishop normal forces). The Ordinary method is
+  // known to be conservative under high pore pressures (N' = W cos a - u l; Whitman & Bailey 1967): it must only
+  // stay positive and below the buoyant value (it gave 8e-15 before surfaces with negative base strength were
+  // rejected).
+  Folder folder("submerged");
+  const json scene = read_json(case_file("lem_submerged_slope"));
+  const json submerged = run_variant(scene, folder, "submerged");
+  json buoyant_scene = scene;
+  buoyant_scene["section"].erase("water");
+  buoyant_scene["section"]["materials"][0]["unit_weight_kN_m3"] = 20.0 - 9.81;
+  const json buoyant = run_variant(buoyant_scene, folder, "buoyant");
+  CHECK(unexplained_nulls(submerged).empty());
+  for (const char* m : {"bishop", "janbu", "spencer", "morgenstern_price"}) {
+    INFO(m);
+    CHECK(fs_of(submerged, m) == Approx(fs_of(buoyant, m)).epsilon(0.01));
+  }
+  CHECK(fs_of(submerged, "ordinary") > 0.5 * fs_of(buoyant, "ordinary"));
+  CHECK(fs_of(submerged, "ordinary") <= fs_of(buoyant, "ordinary"));
+}
+
+TEST_CASE("stability: circles near a rigid base stay above it and cannot beat the deep-base minimum",
+          "[stability][lem]") {
+  // Restricting the admissible surfaces can only raise the minimum: FS(base 0.5 m below the toe) >= FS(base 20 m
+  // below), to the search's resolution (0.5 %). No critical circle may dip below the base inside its span.
+  Folder folder("base");
+  const json scene = read_json(case_file("lem_base_near_toe"));
+  const json near = run_variant(scene, folder, "near");
+  json deep_scene = scene;
+  deep_scene["section"]["bottom_y_m"] = -20;
+  const json deep = run_variant(deep_scene, folder, "deep");
+  CHECK(unexplained_nulls(near).empty());
+  for (auto& [method, value] : near["lem"]["methods"].items()) {
+    INFO(method);
+    CHECK(value["factor_of_safety"].get<double>() >= 0.995 * fs_of(deep, method));
+    const json& s = value["surface"];
+    const double xc = s["center_m"][0], yc = s["center_m"][1], r = s["radius_m"];
+    const double x0 = std::min(s["entry_m"][0].get<double>(), s["exit_m"][0].get<double>());
+    const double x1 = std::max(s["entry_m"][0].get<double>(), s["exit_m"][0].get<double>());
+    if (xc > x0 && xc < x1) CHECK(yc - r >= -0.5 - 1e-6);
+  }
+}
+
+TEST_CASE("stability: a thin weak layer lowers the factor of safety and the critical circles reach it",
+          "[stability][lem]") {
+  Folder folder("weak");
+  const json scene = read_json(case_file("lem_thin_weak_layer"));
+  const json weak = run_variant(scene, folder, "weak");
+  json strong_scene = scene;
+  strong_scene["section"]["profile_lines"] = json::array({scene["section"]["profile_lines"][0]});
+  strong_scene["section"]["materials"] = json::array({scene["section"]["materials"][0]});
+  const json strong = run_variant(strong_scene, folder, "strong");
+  CHECK(unexplained_nulls(weak).empty());
+  for (auto& [method, value] : weak["lem"]["methods"].items()) {
+    INFO(method);
+    CHECK(value["factor_of_safety"].get<double>() < 0.9 * fs_of(strong, method));
+    bool reaches = false;
+    for (const json& slice : value["slices"]) reaches = reaches || slice["material"] == "weak";
+    CHECK(reaches);
+  }
+}
+
+// ---- scene keys of the matrix's features ----
+
+TEST_CASE("stability: gravity ramp and wall layers are read and validated with their JSON paths", "[stability][scene]") {
+  json scene = read_json(case_file("sph_gravity_ramped"));
+  auto errors_of = [](const json& document) {
+    try {
+      coupling::parse_scene(document.dump(), "scene.json");
+    } catch (const coupling::SceneError& error) {
+      std::string all;
+      for (const auto& m : error.messages()) all += m + "\n";
+      return all;
+    }
+    return std::string();
+  };
+  auto settings_of = [](const json& document) {
+    const coupling::Scene s = coupling::parse_scene(document.dump(), "scene.json");
+    coupling::Diagnostics d;
+    return *coupling::read_sph_analysis(*s.analyses.sph, d);
+  };
+  CHECK(settings_of(scene).settings.gravity_mode == sph::GravityMode::ramped);
+  CHECK(settings_of(scene).settings.gravity_ramp_time == 2.0);
+  scene["analyses"]["sph"].erase("gravity_ramp_s");
+  CHECK(settings_of(scene).settings.gravity_ramp_time == Approx(0.4));  // default: 10 % of end_time_s = 4 s
+  scene["analyses"]["sph"]["gravity_ramp_s"] = 5;
+  CHECK(errors_of(scene).find("analyses.sph.gravity_ramp_s: 5 s is longer than end_time_s") != std::string::npos);
+  scene["analyses"]["sph"]["gravity"] = "sudden";
+  scene["analyses"]["sph"]["gravity_ramp_s"] = 1;
+  CHECK(errors_of(scene).find("analyses.sph.gravity_ramp_s: is only used with \"gravity\": \"ramped\"") !=
+        std::string::npos);
+  scene["analyses"]["sph"].erase("gravity_ramp_s");
+  scene["analyses"]["sph"]["gravity"] = "gradual";
+  CHECK(errors_of(scene).find("allowed: sudden, geostatic_k0, ramped") != std::string::npos);
+  scene["analyses"]["sph"]["gravity"] = "sudden";
+  CHECK(settings_of(scene).wall_layers == 3);  // h = 1.2 dx: ceil(2.4)
+  scene["analyses"]["sph"]["walls"] = {{"layers", 4}};
+  CHECK(settings_of(scene).wall_layers == 4);
+  coupling::SphSize thick, normal;
+  coupling::build_sph_model(coupling::parse_scene(scene.dump(), "scene.json"), &thick);
+  scene["analyses"]["sph"]["walls"] = {{"layers", 3}};
+  coupling::build_sph_model(coupling::parse_scene(scene.dump(), "scene.json"), &normal);
+  CHECK(thick.wall_particles > normal.wall_particles);
+  scene["analyses"]["sph"]["walls"] = {{"layers", 2.5}};
+  CHECK(errors_of(scene).find("analyses.sph.walls.layers") != std::string::npos);
+  scene["analyses"]["sph"]["walls"] = {{"layers", 3}};
+  scene["analyses"]["sph"]["cfl"] = 0.8;  // the step accepts (0, 0.5]: refused at the scene, not at run time
+  CHECK(errors_of(scene).find("analyses.sph.cfl") != std::string::npos);
+}
+
+TEST_CASE("stability: a particle body with fewer than 4 particles across is refused like a section",
+          "[stability][scene]") {
+  // The column of Bui et al. (2008) is 0.1 m high: 0.03 m leaves 3.3 particles across.
+  json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/bui2008_column_collapse.json");
+  scene["analyses"]["sph"]["particle_spacing_m"] = 0.03;
+  std::string message;
+  try {
+    coupling::parse_scene(scene.dump(), "column.json");
+  } catch (const coupling::SceneError& error) {
+    message = error.messages().front();
+  }
+  CHECK(message.find("analyses.sph.particle_spacing_m: spacing 0.03 m leaves fewer than 4 particles across "
+                     "bodies[0]") != std::string::npos);
+  CHECK(message.find("at most 0.025 m") != std::string::npos);
+  scene["analyses"]["sph"]["particle_spacing_m"] = 0.025;  // exactly 4 across: accepted
+  CHECK_NOTHROW(coupling::parse_scene(scene.dump(), "column.json"));
+}
