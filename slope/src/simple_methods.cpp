@@ -167,6 +167,19 @@ inline double simplified_normal(const SliceTable& t, int i, double F) {
   return (t.vertical[i] - t.pore_force[i] * t.cos_a[i] - t.cohesion_force[i] * t.sin_a[i] / F) / m;
 }
 
+// Bishop and Janbu: solve F = sum(w / (cos a + sin a tan phi / F)) / driving from the Ordinary value (or 1), then
+// require a positive F and no slice base with a negative shear strength.
+Outcome solve_simplified(const SliceTable& t, const RatioEquation& eq, double ordinary_guess) {
+  Outcome out = solve_ratio_equation(eq, ordinary_guess > 0.05 ? ordinary_guess : 1.0);
+  if (out.ok() && !(out.factor_of_safety > 0.0 && std::isfinite(out.factor_of_safety)))
+    out.failure = Failure::not_positive;
+  if (out.ok()) {
+    const double F = out.factor_of_safety;
+    strengths_non_negative(t, [&](int i) { return simplified_normal(t, i, F); }, out);
+  }
+  return out;
+}
+
 }  // namespace
 
 Outcome ordinary_method(const SliceTable& t) {
@@ -214,16 +227,7 @@ Outcome bishop_method(const SliceTable& t, MethodWorkspace& ws) {
     p[i] = s * tp;
     ordinary += d * (t.cohesion_force[i] + (t.vertical[i] * c - t.horizontal[i] * s - t.pore_force[i]) * tp);
   }
-  const double guess = ordinary / moment;
-  const RatioEquation eq{&t, w, p, moment};
-  out = solve_ratio_equation(eq, guess > 0.05 ? guess : 1.0);
-  if (out.ok() && !(out.factor_of_safety > 0.0 && std::isfinite(out.factor_of_safety)))
-    out.failure = Failure::not_positive;
-  if (out.ok()) {
-    const double F = out.factor_of_safety;
-    strengths_non_negative(t, [&](int i) { return simplified_normal(t, i, F); }, out);
-  }
-  return out;
+  return solve_simplified(t, RatioEquation{&t, w, p, moment}, ordinary / moment);
 }
 
 Outcome janbu_method(const SliceTable& t, MethodWorkspace& ws) {
@@ -247,16 +251,7 @@ Outcome janbu_method(const SliceTable& t, MethodWorkspace& ws) {
     out.failure = Failure::no_driving_force;
     return out;
   }
-  const double guess = ordinary / driving;
-  const RatioEquation eq{&t, w, p, driving};
-  out = solve_ratio_equation(eq, guess > 0.05 ? guess : 1.0);
-  if (out.ok() && !(out.factor_of_safety > 0.0 && std::isfinite(out.factor_of_safety)))
-    out.failure = Failure::not_positive;
-  if (out.ok()) {
-    const double F = out.factor_of_safety;
-    strengths_non_negative(t, [&](int i) { return simplified_normal(t, i, F); }, out);
-  }
-  return out;
+  return solve_simplified(t, RatioEquation{&t, w, p, driving}, ordinary / driving);
 }
 
 double janbu_correction_factor(const SliceTable& t) {
