@@ -16,6 +16,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "test_support.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -42,25 +44,7 @@ ProgramOutput run_program(const std::string& arguments) {
 
 fs::path source_path(const std::string& relative) { return fs::path(SPHSLOPE_SOURCE_DIR) / relative; }
 
-// A fresh, empty temporary folder, removed when the test ends.
-struct TemporaryFolder {
-  fs::path path;
-  explicit TemporaryFolder(const std::string& tag) {
-    path = fs::temp_directory_path() / ("sphslope-test-" + tag + "-" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TemporaryFolder() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
 
-nlohmann::json read_json(const fs::path& file) {
-  std::ifstream in(file);
-  REQUIRE(in.good());
-  return nlohmann::json::parse(in);
-}
 
 struct BadScene {
   const char* file;        // in tests/coupling/bad_scenes/

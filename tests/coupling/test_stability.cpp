@@ -23,6 +23,7 @@
 
 #include "coupling/scene.hpp"
 #include "coupling/sph_setup.hpp"
+#include "test_support.hpp"
 
 extern char** environ;
 
@@ -38,25 +39,6 @@ struct Run {
 };
 
 fs::path case_file(const std::string& stem) { return fs::path(SPHSLOPE_SOURCE_DIR) / "cases/stability" / (stem + ".json"); }
-
-json read_json(const fs::path& file) {
-  std::ifstream in(file);
-  return json::parse(in);
-}
-
-// A fresh temporary folder, removed at the end of the test.
-struct Folder {
-  fs::path path;
-  explicit Folder(const std::string& tag) {
-    path = fs::temp_directory_path() / ("sphslope-stability-" + tag + "-" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~Folder() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
 
 // Runs the program with the arguments, output into a file; wait4 gives the child's own peak memory.
 Run run_program(std::vector<std::string> args, const fs::path& log) {
@@ -150,7 +132,7 @@ double fs_of(const json& report, const std::string& method) {
 }
 
 // Runs a variant of a scene (lem only) and returns its report.
-json run_variant(const json& scene, const Folder& folder, const std::string& tag) {
+json run_variant(const json& scene, const TemporaryFolder& folder, const std::string& tag) {
   const fs::path file = folder.path / (tag + ".json");
   std::ofstream(file) << scene.dump(1);
   const fs::path out = folder.path / tag;
@@ -173,7 +155,7 @@ TEST_CASE("stability: refused cases stop before running, say why, and write noth
       {"sph_walls_too_thin", {"analyses.sph.walls.layers", "at least 3 layers", "kernel support"}},
       {"sph_memory_exceeded", {"analyses.sph.particle_spacing_m", "GiB", "max_memory_GiB = 16"}},
   };
-  Folder folder("refusals");
+  TemporaryFolder folder("stability-refusals");
   for (const auto& r : refusals) {
     INFO(r.stem);
     const fs::path out = folder.path / r.stem;
@@ -193,7 +175,7 @@ TEST_CASE("stability: refused cases stop before running, say why, and write noth
 TEST_CASE("stability: the stiff-soil refusal states the planned step count", "[stability][refusal]") {
   // E = 1 GPa, nu = 0.25, rho = 2100 kg/m3: P-wave speed sqrt(M / rho) = 756 m/s (M = E (1 - nu) / ((1 + nu)
   // (1 - 2 nu))); dt = cfl h / (c (1 + 1.2 alpha)) = 0.2 x 0.024 / (756 x 1.12) = 5.67e-6 s; 60 s -> 1.06e7 steps.
-  Folder folder("stiff");
+  TemporaryFolder folder("stability-stiff");
   const Run run = run_case("run", case_file("sph_stiff_1GPa_refused"), folder.path / "out");
   const auto at = run.output.find("needs about ");
   REQUIRE(at != std::string::npos);
@@ -207,7 +189,7 @@ TEST_CASE("stability: the stiff-soil refusal states the planned step count", "[s
 TEST_CASE("stability: a spacing that would exceed the memory limit is refused before allocating", "[stability][refusal]") {
   // 3.8e7 particles would need about 37 GiB; the refusal must come from the estimate, not from an allocation:
   // the program's peak memory stays that of an empty run (a few MiB), far below one particle array (300 MiB).
-  Folder folder("memory");
+  TemporaryFolder folder("stability-memory");
   const Run run = run_case("run", case_file("sph_memory_exceeded"), folder.path / "out");
   CHECK(run.status == 2);
   CHECK(run.max_rss_MiB < 100);
@@ -220,7 +202,7 @@ TEST_CASE("stability: a very cohesive slope barely moves and never yields", "[st
   // One-dimensional settlement of the crest column under its own weight: delta = gamma H^2 / (2 M), M the P-wave
   // (oedometric) modulus; sudden loading of an undamped body overshoots it by up to a factor 2, and the free face
   // adds some lateral bulging: the largest displacement must stay below 2.5 delta.
-  Folder folder("cohesive");
+  TemporaryFolder folder("stability-cohesive");
   const Run run = run_case("run", case_file("sph_high_cohesion"), folder.path / "out");
   INFO(run.output);
   REQUIRE(run.status == 0);
@@ -241,7 +223,7 @@ TEST_CASE("stability: ramped gravity loads a stable slope with less kinetic ener
           "[stability][sph][gravity]") {
   // Same slope (c = 40 kPa, phi = 20 deg, LEM Bishop FS well above 1), 4 s; the ramp lasts 2 s, about 2.7 times
   // the first shear-mode period T1 = 4H/Vs = 0.75 s. Both must stay in place (below 2 % of H = 0.2 m).
-  Folder folder("gravity");
+  TemporaryFolder folder("stability-gravity");
   json peak;
   for (const char* mode : {"sudden", "ramped"}) {
     const std::string stem = std::string("sph_gravity_") + mode;
@@ -267,7 +249,7 @@ TEST_CASE("stability: failing slopes of extreme materials finish, fail as LEM sa
   // Each has an LEM Bishop FS below 1 and must move more than 0.5 m (5 % of the 10 m slopes; 12 % of the 4 m face).
   // Energy: kinetic energy + plastic work cannot exceed the potential energy released (elastic energy and viscous
   // losses are >= 0); 5 % margin for the time discretisation.
-  Folder folder("failing");
+  TemporaryFolder folder("stability-failing");
   for (const char* stem : {"sph_undrained_clay_phi0", "sph_vertical_face_c0_phi45", "sph_four_particles_across",
                            "sph_nearly_incompressible"}) {
     INFO(stem);
@@ -290,7 +272,7 @@ TEST_CASE("stability: failing slopes of extreme materials finish, fail as LEM sa
 
 TEST_CASE("stability: a very soft soil stops with the blow-up diagnostic and no comparison from the diverged state",
           "[stability][sph]") {
-  Folder folder("soft");
+  TemporaryFolder folder("stability-soft");
   const Run run = run_case("run", case_file("sph_very_soft_soil_blow_up"), folder.path / "out");
   INFO(run.output);
   CHECK(run.status == 1);
@@ -306,7 +288,7 @@ TEST_CASE("stability: a very soft soil stops with the blow-up diagnostic and no 
 }
 
 TEST_CASE("stability: a run that creates energy finishes with a warning, not silently", "[stability][sph]") {
-  Folder folder("energy");
+  TemporaryFolder folder("stability-energy");
   const Run run = run_case("run", case_file("sph_energy_created_warning"), folder.path / "out");
   REQUIRE(run.status == 0);
   CHECK(run.output.find("sph: warning: kinetic energy + plastic work") != std::string::npos);
@@ -322,7 +304,7 @@ TEST_CASE("stability: vertical cut in undrained clay matches Taylor's stability 
   // Taylor (1937): beta = 90 deg, phi = 0: N = c/(F gamma H) = 0.261 -> FS = 30/(0.261 x 20 x 6) = 0.958 (toe
   // circles; chart read to about 1 %: 2 % tolerance). For phi = 0, Ordinary, Bishop, Spencer and M-P are all exact
   // moment equilibrium on a circle. The force-equilibrium Janbu methods approach the Culmann plane 4c/(gamma H) = 1.
-  Folder folder("vertical0");
+  TemporaryFolder folder("stability-vertical0");
   const Run run = run_case("lem", case_file("lem_vertical_face_phi0"), folder.path / "out");
   REQUIRE(run.status == 0);
   const json report = read_json(folder.path / "out/report.json");
@@ -357,7 +339,7 @@ TEST_CASE("stability: vertical cut in a c-phi soil lies between the Rankine lowe
   };
   const double plane = fs_for(4.0), lower = fs_for(2.0);
   REQUIRE(plane == Approx(0.964).epsilon(0.001));
-  Folder folder("verticalcphi");
+  TemporaryFolder folder("stability-verticalcphi");
   REQUIRE(run_case("lem", case_file("lem_vertical_face_c_phi"), folder.path / "out").status == 0);
   const json report = read_json(folder.path / "out/report.json");
   CHECK(unexplained_nulls(report).empty());
@@ -372,7 +354,7 @@ TEST_CASE("stability: vertical cut in a c-phi soil lies between the Rankine lowe
 
 TEST_CASE("stability: phi = 0 slope at 60 deg matches Taylor's chart", "[stability][lem]") {
   // Taylor (1937): beta = 60 deg, phi = 0, toe circle: N = 0.191 -> FS = 38.2 / (0.191 x 20 x 10) = 1.000.
-  Folder folder("taylor60");
+  TemporaryFolder folder("stability-taylor60");
   REQUIRE(run_case("lem", case_file("lem_phi0_taylor_60deg"), folder.path / "out").status == 0);
   const json report = read_json(folder.path / "out/report.json");
   CHECK(unexplained_nulls(report).empty());
@@ -383,7 +365,7 @@ TEST_CASE("stability: phi = 0 slope at 60 deg matches Taylor's chart", "[stabili
 TEST_CASE("stability: a very flat slope has FS >> 1, at the infinite-slope value", "[stability][lem]") {
   // 1:20, c = 0, phi = 30 deg: FS = tan(phi)/tan(beta) = 11.55 for the infinite slope; shallow circles approach it
   // from above (5 %).
-  Folder folder("flat");
+  TemporaryFolder folder("stability-flat");
   REQUIRE(run_case("lem", case_file("lem_flat_slope"), folder.path / "out").status == 0);
   const json report = read_json(folder.path / "out/report.json");
   CHECK(unexplained_nulls(report).empty());
@@ -401,7 +383,7 @@ TEST_CASE("stability: a submerged slope has the factor of safety of the buoyant 
   // known to be conservative under high pore pressures (N' = W cos a - u l; Whitman & Bailey 1967): it must only
   // stay positive and below the buoyant value (it gave 8e-15 before surfaces with negative base strength were
   // rejected).
-  Folder folder("submerged");
+  TemporaryFolder folder("stability-submerged");
   const json scene = read_json(case_file("lem_submerged_slope"));
   const json submerged = run_variant(scene, folder, "submerged");
   json buoyant_scene = scene;
@@ -421,7 +403,7 @@ TEST_CASE("stability: circles near a rigid base stay above it and cannot beat th
           "[stability][lem]") {
   // Restricting the admissible surfaces can only raise the minimum: FS(base 0.5 m below the toe) >= FS(base 20 m
   // below), to the search's resolution (0.5 %). No critical circle may dip below the base inside its span.
-  Folder folder("base");
+  TemporaryFolder folder("stability-base");
   const json scene = read_json(case_file("lem_base_near_toe"));
   const json near = run_variant(scene, folder, "near");
   json deep_scene = scene;
@@ -441,7 +423,7 @@ TEST_CASE("stability: circles near a rigid base stay above it and cannot beat th
 
 TEST_CASE("stability: a thin weak layer lowers the factor of safety and the critical circles reach it",
           "[stability][lem]") {
-  Folder folder("weak");
+  TemporaryFolder folder("stability-weak");
   const json scene = read_json(case_file("lem_thin_weak_layer"));
   const json weak = run_variant(scene, folder, "weak");
   json strong_scene = scene;
