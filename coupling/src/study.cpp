@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "coupling/atomic_write.hpp"
+#include "sph/atomic_file.hpp"
 #include "coupling/convergence.hpp"
 #include "coupling/json_reader.hpp"
 #include "coupling/report.hpp"
@@ -268,7 +268,7 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
       runs.push_back(std::move(record));
       break;
     }
-    if (record.ok) atomic_write(saved, record.entry.dump(2) + "\n");
+    if (record.ok) sph::write_file_atomically(saved, record.entry.dump(2) + "\n");
     runs.push_back(std::move(record));
   }
 
@@ -333,9 +333,9 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
   study["errors"] = failures;
   study["seconds"] = seconds_since(start);
   study["figures"] = {{"error_vs_runtime", "figures/error_vs_runtime.svg"}};
-  atomic_write(options.output_dir / "figures" / "error_vs_runtime.svg",
+  sph::write_file_atomically(options.output_dir / "figures" / "error_vs_runtime.svg",
                error_vs_runtime_svg(scene.name + ": error against run time", series));
-  atomic_write(options.output_dir / "study.json", study.dump(2) + "\n");
+  sph::write_file_atomically(options.output_dir / "study.json", study.dump(2) + "\n");
   out.status = failures.empty() ? ExitStatus::ok : ExitStatus::failed;
   return out;
 }

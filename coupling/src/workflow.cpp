@@ -7,7 +7,7 @@
 #include <ostream>
 #include <system_error>
 
-#include "coupling/atomic_write.hpp"
+#include "sph/atomic_file.hpp"
 #include "coupling/comparison.hpp"
 #include "coupling/figures.hpp"
 #include "coupling/report.hpp"
@@ -208,7 +208,7 @@ void write_figures(const Scene& scene, const WorkflowResult& out, const std::opt
           "circle fitted to the SPH surface",
           circle_arc(failure->fitted_circle->circle, failure->band.points.front().x, failure->band.points.back().x)};
   }
-  atomic_write(figures / "section.svg", section_figure_svg(data));
+  sph::write_file_atomically(figures / "section.svg", section_figure_svg(data));
   written.push_back("figures/section.svg");
 
   if (out.lem && section && !out.lem->fs_map.empty()) {
@@ -220,7 +220,7 @@ void write_figures(const Scene& scene, const WorkflowResult& out, const std::opt
       }
     const std::string method =
         out.lem->methods.empty() ? std::string() : std::string(slope::method_key(out.lem->methods.front().method));
-    atomic_write(figures / "fs_map.svg",
+    sph::write_file_atomically(figures / "fs_map.svg",
                  fs_map_svg(*section, out.lem->fs_map, critical, "Factor-of-safety map of the search (" + method + ")"));
     written.push_back("figures/fs_map.svg");
   }
@@ -327,7 +327,7 @@ WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options) {
     try {
       std::filesystem::create_directories(*options.output_dir);
       const std::filesystem::path file = *options.output_dir / "report.json";
-      atomic_write(file, report_text(out.report));
+      sph::write_file_atomically(file, report_text(out.report));
       out.report_file = file;
     } catch (const std::exception& error) {
       out.status = ExitStatus::failed;
@@ -357,7 +357,7 @@ WorkflowResult run_scene_file(const std::filesystem::path& scene_file, const Wor
     // Rewrite with the load time included (same atomic write; cheap).
     if (out.report_file) {
       try {
-        atomic_write(*out.report_file, report_text(out.report));
+        sph::write_file_atomically(*out.report_file, report_text(out.report));
       } catch (const std::exception& error) {
         out.status = ExitStatus::failed;
         out.errors.push_back(std::string("cannot write the report: ") + error.what());

@@ -5,7 +5,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "sph/vtk_output.hpp"
+#include "sph/atomic_file.hpp"
 
 namespace sph {
 
@@ -29,7 +29,7 @@ struct Writer {
   template <class T>
   void put_vec(const std::vector<T>& v) {
     put<std::uint64_t>(v.size());
-    buf.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    if (!v.empty()) buf.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
 };
 
@@ -55,7 +55,7 @@ struct Reader {
       throw std::runtime_error("checkpoint " + path + ": array length mismatch");
     need(n * sizeof(T));
     v.resize(n);
-    std::memcpy(v.data(), buf.data() + pos, n * sizeof(T));
+    if (n > 0) std::memcpy(v.data(), buf.data() + pos, n * sizeof(T));  // an empty vector's data() may be null
     pos += n * sizeof(T);
   }
 };

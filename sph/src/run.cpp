@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "sph/atomic_file.hpp"
 #include "sph/checkpoint.hpp"
 #include "sph/soil_step.hpp"
 #include "sph/vtk_output.hpp"
@@ -30,6 +31,15 @@ std::string frame_name(std::uint64_t k) {
 }
 
 const char* kEnergyHeader = "time_s,kinetic_J_m,potential_J_m,plastic_dissipation_J_m,max_speed_m_s\n";
+
+// The first `bytes` bytes of a file (the part of the energy history that belongs to a resumed state).
+std::string read_prefix(const std::string& path, std::uint64_t bytes) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text(static_cast<std::size_t>(bytes), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(bytes));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return text;
+}
 
 }  // namespace
 
@@ -55,14 +65,14 @@ RunSummary run(Model& model, const RunOptions& opt, const RunCallbacks& cb) {
     rs.frame_times.clear();
     rs.energy_csv_bytes = 0;
   }
-  // energy history: start fresh or cut back to what belongs to the resumed state
+  // energy history: start fresh or cut back to what belongs to the resumed state; the whole file is rewritten
+  // through the durable writer at each output (a few hundred rows at most)
+  std::string energy_text;
   if (files && opt.write_energy) {
-    if (fresh || !fs::exists(energy_path)) {
-      std::ofstream(energy_path, std::ios::trunc) << kEnergyHeader;
-      rs.energy_csv_bytes = fs::file_size(energy_path);
-    } else {
-      fs::resize_file(energy_path, rs.energy_csv_bytes);
-    }
+    if (!fresh && fs::exists(energy_path)) energy_text = read_prefix(energy_path, rs.energy_csv_bytes);
+    if (energy_text.empty()) energy_text = kEnergyHeader;
+    write_file_atomically(energy_path, energy_text);
+    rs.energy_csv_bytes = energy_text.size();
   }
   // Floor for the kinetic-energy runaway test: 1 % of (soil weight x soil height range).
   double energy_floor = 0;
@@ -99,10 +109,9 @@ RunSummary run(Model& model, const RunOptions& opt, const RunCallbacks& cb) {
       char line[256];
       std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g\n", rs.time, e.kinetic, e.potential,
                     e.plastic_dissipation, e.max_speed);
-      std::ofstream f(energy_path, std::ios::app);
-      f << line;
-      f.flush();
-      rs.energy_csv_bytes = fs::file_size(energy_path);
+      energy_text += line;
+      write_file_atomically(energy_path, energy_text);
+      rs.energy_csv_bytes = energy_text.size();
     }
   };
   auto maybe_output = [&](bool force) {

@@ -1,5 +1,5 @@
 // Scene loading in-process: SI conversion, defaults, what is accepted, errors collected with their JSON paths,
-// the report builder and atomic_write.
+// the report builder.
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
@@ -11,7 +11,6 @@
 #include <sstream>
 #include <string>
 
-#include "coupling/atomic_write.hpp"
 #include "coupling/json_reader.hpp"
 #include "coupling/report.hpp"
 #include "coupling/scene.hpp"
@@ -334,22 +333,6 @@ TEST_CASE("json reader: unknown keys suggest the closest known one", "[scene]") 
         "m.frictoin_angle_deg: unknown key (did you mean \"friction_angle_deg\"? allowed here: friction_angle_deg, "
         "cohesion_kPa)");
   CHECK(diagnostics.messages()[1] == "m.zzz: unknown key (allowed here: friction_angle_deg, cohesion_kPa)");
-}
-
-TEST_CASE("atomic_write replaces the file and leaves no temporary behind", "[io]") {
-  const fs::path folder = fs::temp_directory_path() / ("sphslope-atomic-" + std::to_string(::getpid()));
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  const fs::path file = folder / "report.json";
-  coupling::atomic_write(file, "first");
-  coupling::atomic_write(file, "second, longer content\n");
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  CHECK(text.str() == "second, longer content\n");
-  CHECK(std::distance(fs::directory_iterator(folder), fs::directory_iterator()) == 1);
-  CHECK_THROWS_AS(coupling::atomic_write(folder / "missing" / "x.json", "x"), std::system_error);
-  fs::remove_all(folder);
 }
 
 TEST_CASE("report: a critical surface in report units", "[report]") {

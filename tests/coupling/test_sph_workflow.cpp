@@ -19,6 +19,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/scene.hpp"
+#include "coupling/sph_setup.hpp"
+#include "sph/checkpoint.hpp"
+
 extern char** environ;
 
 namespace fs = std::filesystem;
@@ -156,6 +160,37 @@ TEST_CASE("an SPH run killed mid-way and resumed ends in the same state as an un
   CHECK(resumed["sph"]["steps_this_session"].get<long>() < whole["sph"]["steps"].get<long>());
   CHECK(file_bytes(killed / "checkpoint.bin") == file_bytes(dir / "whole/checkpoint.bin"));
   CHECK(file_bytes(killed / "energy.csv") == file_bytes(dir / "whole/energy.csv"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("an SPH run killed at any moment leaves a checkpoint that loads", "[sph][resume]") {
+  // Checkpoints every millisecond of wall time (about every step), SIGKILL at moments spread over ~1 s of
+  // stepping: each time, the checkpoint on disk must be a whole one (its checksum and sizes are checked by
+  // read_checkpoint), never torn.
+  const fs::path dir = fresh_dir("kill_any_moment");
+  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/bui2008_column_collapse.json");
+  scene["analyses"]["sph"]["particle_spacing_m"] = 0.005;
+  scene["analyses"]["sph"]["end_time_s"] = 5.0;  // long: it is killed well before
+  scene["analyses"]["sph"]["checkpoint_interval_s"] = 0.001;
+  write_json(dir / "scene.json", scene);
+  const coupling::Scene loaded = coupling::load_scene(dir / "scene.json");
+  for (int trial = 0; trial < 6; ++trial) {
+    const fs::path out = dir / ("out" + std::to_string(trial));
+    const pid_t pid = spawn_program({"run", (dir / "scene.json").string(), "-o", out.string()});
+    REQUIRE(pid > 0);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (!fs::exists(out / "checkpoint.bin") && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    std::this_thread::sleep_for(std::chrono::milliseconds(37 * trial * trial));
+    ::kill(pid, SIGKILL);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    INFO("trial " << trial);
+    REQUIRE(WIFSIGNALED(status));
+    sph::Model model = coupling::build_sph_model(loaded);
+    CHECK_NOTHROW(sph::read_checkpoint((out / "checkpoint.bin").string(), model));
+    CHECK(model.state.step > 0);
+  }
   fs::remove_all(dir);
 }
 

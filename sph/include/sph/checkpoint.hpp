@@ -5,7 +5,8 @@
 // Layout (little-endian host order, checked by an endianness marker):
 //   "SPHSLOPE-CKPT\0\0\0" (16 bytes) | u32 version | u32 0x01020304 | u64 particle count | u32 double arrays |
 //   u32 materials | f64 dx | f64 h_over_dx | run state | per-particle arrays | u64 FNV-1a checksum of all before.
-// Written atomically (temporary file + rename).
+// Written with sph::write_file_atomically: a killed run leaves the previous checkpoint or the new one, never a
+// torn file (the checksum would reject it anyway).
 #include <string>
 
 #include "sph/model.hpp"
