@@ -3,10 +3,14 @@
 // GCC 12 reports -Wmaybe-uninitialized inside its own AVX-512 intrinsics (the deliberately undefined registers of
 // _mm512_undefined_pd) when Eigen's SVD is compiled for an AVX-512 CPU; the warning is about the compiler's header,
 // not this code, so it is silenced for Eigen's headers only.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <Eigen/Dense>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -23,6 +23,31 @@
 
 namespace {
 
+// A program built for a newer CPU (CMake option SPHSLOPE_ARCH, "native" by default) would die on its first unknown
+// instruction with "Illegal instruction"; this says what happened and how to rebuild instead. It checks the
+// instruction sets the compiler was allowed to use.
+bool cpu_runs_this_build() {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  __builtin_cpu_init();
+#if defined(__AVX512F__)
+  if (!__builtin_cpu_supports("avx512f")) return false;
+#endif
+#if defined(__AVX2__)
+  if (!__builtin_cpu_supports("avx2")) return false;
+#endif
+#if defined(__FMA__)
+  if (!__builtin_cpu_supports("fma")) return false;
+#endif
+#if defined(__AVX__)
+  if (!__builtin_cpu_supports("avx")) return false;
+#endif
+#if defined(__SSE4_2__)
+  if (!__builtin_cpu_supports("sse4.2")) return false;
+#endif
+#endif
+  return true;
+}
+
 // The strength-reduction factor of safety next to the limit-equilibrium ones, on stdout.
 void print_srm(const nlohmann::json& srm) {
   if (!srm.contains("factor_of_safety") || !srm["factor_of_safety"].is_number()) {
@@ -140,6 +165,12 @@ int print_study(const std::filesystem::path& scene_file, const std::filesystem::
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (!cpu_runs_this_build()) {
+    std::cerr << "sphslope: this program was built for a CPU with instructions this one lacks (CMake option "
+                 "SPHSLOPE_ARCH, \"native\" by default, optimises for the build machine). Rebuild it here with "
+                 "scripts/build, or for any x86-64 CPU with scripts/build -DSPHSLOPE_ARCH=x86-64.\n";
+    return static_cast<int>(coupling::ExitStatus::failed);
+  }
   CLI::App app{"sphslope: geotechnical slope assessment (limit equilibrium and SPH) from a scene file.\n"
                "Exit status: 0 every requested analysis ran; 1 a run failed (report written with the reason);\n"
                "2 invalid input (nothing written; the message names the JSON path of the fault).",

@@ -4,7 +4,9 @@
 
 // g++ 12 reports a false "may be used uninitialized" inside CGAL's polygon algorithms when they are inlined
 // here; the warning is silenced for this file only.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 
