@@ -62,6 +62,8 @@ void print_srm(const nlohmann::json& srm) {
     for (const auto& [method, fs] : srm["lem_factor_of_safety"].items())
       if (fs.is_number()) std::printf("  limit equilibrium %-26s FS = %.3f\n", method.c_str(), fs.get<double>());
   std::fflush(stdout);
+  if (srm.contains("warnings"))
+    for (const auto& warning : srm["warnings"]) std::cerr << "srm: warning: " << warning.get<std::string>() << "\n";
 }
 
 int print_outcome(const std::filesystem::path& scene_file, const coupling::WorkflowResult& result,

@@ -116,6 +116,56 @@ void plan_steps(const std::vector<sph::Material>& materials, const sph::Settings
 
 }  // namespace
 
+namespace {
+
+const char* const section_load_names[] = {"water", "surcharges", "seismic"};
+
+// analyses.sph.ignore_loads: the section loads the user accepts SPH leaves out (each at most once).
+std::vector<std::string> read_ignored_loads(JsonReader& r) {
+  std::vector<std::string> names;
+  const nlohmann::json* list = r.array("ignore_loads", Need::optional);
+  if (list == nullptr) return names;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string path = index_path(r.path_of("ignore_loads"), i);
+    const auto name = read_string((*list)[i], path, r.diagnostics());
+    if (!name) continue;
+    if (std::find(std::begin(section_load_names), std::end(section_load_names), *name) == std::end(section_load_names))
+      r.diagnostics().error(path, "unknown load \"" + *name + "\" (allowed: water, surcharges, seismic)");
+    else if (std::find(names.begin(), names.end(), *name) != names.end())
+      r.diagnostics().error(path, "\"" + *name + "\" is listed twice");
+    else
+      names.push_back(*name);
+  }
+  return names;
+}
+
+// Until SPH carries a load, a scene asking SPH (or strength reduction) for a loaded section is refused unless
+// the user lists the load in analyses.sph.ignore_loads: SPH must never solve a different problem than limit
+// equilibrium without saying so.
+void check_unmodelled_loads(const Scene& scene, const SphAnalysis& analysis, Diagnostics& diagnostics) {
+  for (const SectionLoad& load : loads_sph_leaves_out(scene)) {
+    const auto& ignored = analysis.ignored_loads;
+    if (std::find(ignored.begin(), ignored.end(), load.name) != ignored.end()) continue;
+    diagnostics.error(load.path, "the SPH model does not carry " + load.name +
+                                     " yet: SPH (and strength reduction and the comparison) would analyse the "
+                                     "slope without it, unlike limit equilibrium. Remove analyses.sph, or add \"" +
+                                     load.name + "\" to analyses.sph.ignore_loads to run SPH without it (the "
+                                     "report then warns)");
+  }
+}
+
+}  // namespace
+
+std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
+  std::vector<SectionLoad> loads;
+  if (!scene.section) return loads;
+  const slope::Section& section = scene.section->section;
+  if (section.water) loads.push_back({"water", "section.water"});
+  if (!section.surcharges.empty()) loads.push_back({"surcharges", "section.surcharges"});
+  if (section.seismic_coefficient != 0.0) loads.push_back({"seismic", "section.seismic"});
+  return loads;
+}
+
 std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagnostics& diagnostics) {
   JsonReader r(block, "analyses.sph", diagnostics);
   const std::size_t errors_before = diagnostics.size();
@@ -194,6 +244,7 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   a.max_particles = static_cast<std::size_t>(r.number_or("max_particles", 5.0e6, Bounds::at_least(1.0)));
   a.max_steps = r.number_or("max_steps", 5.0e6, Bounds::at_least(1.0));
   const auto output_interval = r.number("output_interval_s", Need::optional, Bounds::positive());
+  a.ignored_loads = read_ignored_loads(r);
   r.finish();
   if (!spacing || !end_time || diagnostics.size() != errors_before) return std::nullopt;
   s.particle_spacing = *spacing;
@@ -343,6 +394,7 @@ void check_sph_scene(const Scene& scene, Diagnostics& diagnostics) {
     diagnostics.error("walls", "walls belong to particle scenes with \"bodies\"; for a slope section set "
                                "analyses.sph.walls.sides instead");
   }
+  if (analysis) check_unmodelled_loads(scene, *analysis, diagnostics);
   if (analysis && scene.section) {
     const double dx = analysis->settings.particle_spacing;
     const auto& section = scene.section->section;

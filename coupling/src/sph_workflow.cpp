@@ -165,6 +165,9 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   // created energy. Not applicable with a K0 initial stress, whose stored elastic energy is released as well.
   const double released = model.state.initial_potential_energy - summary.potential_energy;
   nlohmann::json warnings = nlohmann::json::array();
+  for (const SectionLoad& load : loads_sph_leaves_out(scene))  // only those the user listed get this far
+    warnings.push_back(load.path + " is not carried by the SPH model (analyses.sph.ignore_loads): this SPH result "
+                       "is for the slope without " + load.name + ", unlike the limit-equilibrium result");
   if (energies_finite && released > 0.0) {
     const double ratio = (summary.kinetic_energy + summary.plastic_dissipation) / released;
     report["energy_balance"] = {{"released_potential_J_m", released},

@@ -290,6 +290,11 @@ SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, 
   report["particle_spacing_m"] = pristine.settings.particle_spacing;
   report["soil_particles"] = size.soil_particles;
   report["lem_factor_of_safety"] = lem_fs_by_method;
+  nlohmann::json warnings = nlohmann::json::array();
+  for (const SectionLoad& load : loads_sph_leaves_out(scene))  // only those listed in analyses.sph.ignore_loads
+    warnings.push_back(load.path + " is not carried by the SPH model (analyses.sph.ignore_loads): FS_SPH is for "
+                       "the slope without " + load.name + ", the limit-equilibrium factors of safety are with it");
+  report["warnings"] = warnings;
   if (lem_bishop_fs) {
     report["lem_bishop"] = *lem_bishop_fs;
     if (b.bracketed) report["ratio_to_lem_bishop"] = b.factor_of_safety / *lem_bishop_fs;

@@ -124,6 +124,12 @@ StageOutcome run_compare(const Scene& scene, WorkflowResult& out, const std::opt
   const slope::Section& section = scene.section->section;
   failure = extract_sph_failure(*final_state, section.profile_lines.front().points, options);
   out.report["comparison"] = comparison_report(section, *failure, *out.lem, options);
+  // Loads SPH left out on request (analyses.sph.ignore_loads): the two surfaces answer different problems.
+  for (const SectionLoad& load : loads_sph_leaves_out(scene)) {
+    nlohmann::json& comparison = out.report["comparison"];
+    comparison["verdict"] = comparison["verdict"].get<std::string>() + " Caution: the SPH run leaves out " +
+                            load.name + " (" + load.path + "), the limit-equilibrium analysis includes it.";
+  }
   out.report["timing_s"]["compare"] = seconds_since(start);
   return outcome;
 }

@@ -235,7 +235,9 @@ TEST_CASE("scene: what is accepted", "[scene]") {
     json document = valid_example();
     document["section"]["materials"][1]["youngs_modulus_MPa"] = 20;
     document["section"]["materials"][1]["poisson_ratio"] = 0.25;
-    document["analyses"]["sph"] = json::parse(R"({"particle_spacing_m": 0.5, "end_time_s": 2})");
+    // the example section has water and a surcharge, which SPH may only leave out when told to
+    document["analyses"]["sph"] =
+        json::parse(R"({"particle_spacing_m": 0.5, "end_time_s": 2, "ignore_loads": ["water", "surcharges"]})");
     document["analyses"]["compare"] = json::parse(R"({"plastic_strain_threshold": 0.1})");
     const Scene scene = load(document);
     REQUIRE(scene.analyses.sph);
@@ -308,6 +310,34 @@ TEST_CASE("scene: geometry faults", "[scene]") {
     document["section"]["surcharges"][0]["to_x_m"] = 61;
     CHECK(mentions(errors_of(document), "section.surcharges[0]: must lie on the section (x 0 to 60 m)"));
   }
+}
+
+TEST_CASE("scene: SPH on a section with loads it does not carry is refused unless the user accepts it",
+          "[scene][sph]") {
+  // Until the SPH model carries pore water, surcharges and seismic loads, it must never analyse a different slope
+  // than limit equilibrium without saying so (docs/scene-format.md, analyses.sph.ignore_loads).
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/two_layer_water.json"));
+  scene["section"]["seismic"]["horizontal_coefficient"] = 0.1;
+  scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 1.0}};
+  try {
+    parse_scene(scene.dump());
+    FAIL("a loaded section was accepted for SPH");
+  } catch (const coupling::SceneError& error) {
+    std::string all;
+    for (const auto& message : error.messages()) all += message + "\n";
+    CHECK(all.find("section.water: the SPH model does not carry water") != std::string::npos);
+    CHECK(all.find("section.surcharges: the SPH model does not carry surcharges") != std::string::npos);
+    CHECK(all.find("section.seismic: the SPH model does not carry seismic") != std::string::npos);
+  }
+  scene["analyses"]["sph"]["ignore_loads"] = {"water", "surcharges", "seismic"};
+  CHECK_NOTHROW(parse_scene(scene.dump()));
+  scene["analyses"]["sph"]["ignore_loads"] = {"water", "surcharge"};
+  CHECK_THROWS_WITH(parse_scene(scene.dump()), Catch::Contains("analyses.sph.ignore_loads[1]"));
+  scene["section"].erase("water");
+  scene["section"].erase("surcharges");
+  scene["section"].erase("seismic");
+  scene["analyses"]["sph"].erase("ignore_loads");
+  CHECK_NOTHROW(parse_scene(scene.dump()));  // a dry, unloaded section needs no permission
 }
 
 TEST_CASE("scene: syntax errors give line and column", "[scene]") {

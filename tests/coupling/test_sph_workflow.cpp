@@ -194,6 +194,27 @@ TEST_CASE("an SPH run killed at any moment leaves a checkpoint that loads", "[sp
   fs::remove_all(dir);
 }
 
+TEST_CASE("SPH run without the loads the user let it leave out: the report warns in every block that depends on it",
+          "[sph][loads]") {
+  // cases/two_layer_water.json has a water table and a crest surcharge, which the SPH model does not carry yet;
+  // with analyses.sph.ignore_loads the run goes ahead and sph, srm and the comparison say what was left out.
+  const fs::path dir = fresh_dir("ignored_loads");
+  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/two_layer_water.json");
+  scene["analyses"]["lem"]["methods"] = {"bishop"};
+  scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 0.2}, {"ignore_loads", {"water", "surcharges"}}};
+  scene["analyses"]["compare"] = nlohmann::json::object();
+  write_json(dir / "scene.json", scene);
+  run_program("run \"" + (dir / "scene.json").string() + "\" -o \"" + (dir / "out").string() + "\"");
+  const nlohmann::json report = read_json(dir / "out/report.json");
+  REQUIRE(report["sph"]["warnings"].size() >= 2);
+  CHECK(report["sph"]["warnings"][0].get<std::string>().find("section.water is not carried") != std::string::npos);
+  CHECK(report["sph"]["warnings"][1].get<std::string>().find("section.surcharges is not carried") != std::string::npos);
+  const std::string verdict = report["comparison"]["verdict"];
+  CHECK(verdict.find("leaves out water (section.water)") != std::string::npos);
+  CHECK(verdict.find("leaves out surcharges (section.surcharges)") != std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted, and a checkpoint", "[sph][resume]") {
   const fs::path dir = fresh_dir("interrupt");
   nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/bui2008_column_collapse.json");

@@ -41,7 +41,16 @@ struct SphAnalysis {
   double memory_limit_bytes = 0.0;      // refuse a case whose estimate exceeds it
   std::size_t max_particles = 0;        // refuse more soil + wall particles than this
   double max_steps = 0.0;               // refuse a run that needs more time steps than this
+  std::vector<std::string> ignored_loads;  // section loads SPH may leave out ("water", "surcharges", "seismic")
 };
+
+// The loads of a slope section that the SPH model does not carry yet, each with the JSON path that defines it:
+// {"water", "section.water"}, {"surcharges", "section.surcharges"}, {"seismic", "section.seismic"}.
+struct SectionLoad {
+  std::string name;
+  std::string path;
+};
+std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene);
 
 // Reads analyses.sph (errors at "analyses.sph.<key>").
 std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagnostics& diagnostics);
