@@ -69,7 +69,9 @@ std::string format(const char* pattern, double a, double b = 0.0) {
 
 }  // namespace
 
-std::optional<ComparisonOptions> read_comparison_options(const nlohmann::json& block, Diagnostics& diagnostics) {
+std::optional<ComparisonOptions> read_comparison_options(const nlohmann::json& block,
+                                                         const std::vector<std::string>& lem_methods,
+                                                         Diagnostics& diagnostics) {
   JsonReader r(block, "analyses.compare", diagnostics);
   const std::size_t errors_before = diagnostics.size();
   ComparisonOptions options;
@@ -85,6 +87,8 @@ std::optional<ComparisonOptions> read_comparison_options(const nlohmann::json& b
     }
   }
   options.displacement_threshold = r.number_or("displacement_threshold_m", 0.0, Bounds::non_negative());
+  if (const nlohmann::json* acceptance = r.raw("acceptance", Need::optional, "an object"))
+    options.acceptance = read_acceptance(*acceptance, lem_methods, diagnostics);
   r.finish();
   if (diagnostics.size() != errors_before) return std::nullopt;
   return options;

@@ -5,7 +5,8 @@
 //   sphslope run SCENE [-o DIR]     every analysis of the scene; report in DIR (default runs/<scene stem>)
 //
 // Exit status: 0 every requested analysis ran; 1 a run failed (report written with the reason); 2 invalid input
-// (nothing written; the message names the JSON path of the fault). Errors go to stderr.
+// (nothing written; the message names the JSON path of the fault); 3 every analysis ran but the comparison did
+// not meet analyses.compare.acceptance (report written). Errors go to stderr.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -90,9 +91,12 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
   }
   if (result.report.is_object() && result.report.contains("srm")) print_srm(result.report["srm"]);
   for (const std::string& message : result.errors) std::cerr << "error: " << message << "\n";
+  for (const std::string& line : result.rejections) std::cerr << "not accepted: " << line << "\n";
   if (result.report_file) {
-    std::cerr << "report: " << result.report_file->string()
-              << (result.status == ExitStatus::ok ? "" : " (status: failed; the reasons are in the report)") << "\n";
+    const char* note = result.status == ExitStatus::ok             ? ""
+                       : result.status == ExitStatus::not_accepted ? " (status: not accepted; comparison.acceptance)"
+                                                                   : " (status: failed; the reasons are in the report)";
+    std::cerr << "report: " << result.report_file->string() << note << "\n";
   }
   return static_cast<int>(result.status);
 }
@@ -175,7 +179,8 @@ int main(int argc, char** argv) {
   }
   CLI::App app{"sphslope: geotechnical slope assessment (limit equilibrium and SPH) from a scene file.\n"
                "Exit status: 0 every requested analysis ran; 1 a run failed (report written with the reason);\n"
-               "2 invalid input (nothing written; the message names the JSON path of the fault).",
+               "2 invalid input (nothing written; the message names the JSON path of the fault);\n"
+               "3 every analysis ran but the comparison failed its acceptance criteria (report written).",
                "sphslope"};
   app.set_version_flag("--version", "sphslope " + std::string(coupling::program_version()));
   app.require_subcommand(1);

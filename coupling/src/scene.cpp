@@ -239,7 +239,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
   read_analyses(top, scene, has_section, diagnostics);
   top.finish();
   check_sph_scene(scene, diagnostics);
-  if (scene.analyses.compare) read_comparison_options(*scene.analyses.compare, diagnostics);
+  if (scene.analyses.compare) read_comparison_options(*scene.analyses.compare, lem_method_keys(scene), diagnostics);
   check_srm_scene(scene, diagnostics);
 
   if (!diagnostics.empty()) throw SceneError(diagnostics.messages());
@@ -281,6 +281,13 @@ Scene load_scene(const std::filesystem::path& file) {
   text << in.rdbuf();
   if (in.bad()) throw SceneError({"cannot read scene file \"" + file.string() + "\""});
   return parse_scene(text.str(), file);
+}
+
+std::vector<std::string> lem_method_keys(const Scene& scene) {
+  std::vector<std::string> keys;
+  if (scene.analyses.lem)
+    for (slope::Method method : scene.analyses.lem->methods) keys.emplace_back(slope::method_key(method));
+  return keys;
 }
 
 std::string summarize(const Scene& scene) {

@@ -120,7 +120,7 @@ StageOutcome run_compare(const Scene& scene, WorkflowResult& out, const std::opt
     return outcome;
   }
   Diagnostics diagnostics;
-  const ComparisonOptions options = *read_comparison_options(*scene.analyses.compare, diagnostics);
+  const ComparisonOptions options = *read_comparison_options(*scene.analyses.compare, lem_method_keys(scene), diagnostics);
   const slope::Section& section = scene.section->section;
   failure = extract_sph_failure(*final_state, section.profile_lines.front().points, options);
   out.report["comparison"] = comparison_report(section, *failure, *out.lem, options);
@@ -129,6 +129,15 @@ StageOutcome run_compare(const Scene& scene, WorkflowResult& out, const std::opt
     nlohmann::json& comparison = out.report["comparison"];
     comparison["verdict"] = comparison["verdict"].get<std::string>() + " Caution: the SPH run leaves out " +
                             load.name + " (" + load.path + "), the limit-equilibrium analysis includes it.";
+  }
+  if (options.acceptance) {
+    const double spacing = out.report["sph"].value("particle_spacing_m", 0.0);
+    const AcceptanceResult acceptance = evaluate_acceptance(*options.acceptance, out.report["comparison"], spacing);
+    out.report["comparison"]["acceptance"] = acceptance_json(acceptance);
+    if (!acceptance.accepted) {
+      outcome.status = ExitStatus::not_accepted;
+      outcome.errors = failed_criteria_lines(acceptance);
+    }
   }
   out.report["timing_s"]["compare"] = seconds_since(start);
   return outcome;
@@ -287,6 +296,10 @@ WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options) {
       out.errors = std::move(stage.errors);
       return false;
     }
+    if (stage.status == ExitStatus::not_accepted) {
+      if (out.status == ExitStatus::ok) out.status = ExitStatus::not_accepted;
+      out.rejections.insert(out.rejections.end(), stage.errors.begin(), stage.errors.end());
+    }
     if (stage.status == ExitStatus::failed) {
       out.status = ExitStatus::failed;
       failures.insert(failures.end(), stage.errors.begin(), stage.errors.end());
@@ -324,7 +337,7 @@ WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options) {
   if (out.report.contains("comparison") && out.report["comparison"].contains("verdict") && options.log)
     *options.log << "comparison: " << out.report["comparison"]["verdict"].get<std::string>() << "\n";
 
-  out.report["status"] = failures.empty() ? "ok" : "failed";
+  out.report["status"] = !failures.empty() ? "failed" : out.status == ExitStatus::not_accepted ? "not_accepted" : "ok";
   out.report["errors"] = failures;
   out.errors = failures;
   out.report["timing_s"]["total"] = seconds_since(start);

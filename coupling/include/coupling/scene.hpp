@@ -93,6 +93,9 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
 // The LEM settings used when the scene has no analyses.lem block (sphslope lem on such a scene).
 LemAnalysis default_lem_analysis();
 
+// Keys of the methods analyses.lem computes ("bishop", ...), in the scene's order; empty without analyses.lem.
+std::vector<std::string> lem_method_keys(const Scene& scene);
+
 // One line describing the scene, for "sphslope check": "section 0 to 60 m, 2 profile lines, ...".
 std::string summarize(const Scene& scene);
 

@@ -18,7 +18,8 @@
 
 namespace coupling {
 
-enum class ExitStatus : int { ok = 0, failed = 1, invalid_input = 2 };
+// 3: every analysis ran, but the comparison did not meet analyses.compare.acceptance (a run failure, 1, wins).
+enum class ExitStatus : int { ok = 0, failed = 1, invalid_input = 2, not_accepted = 3 };
 
 enum class Mode {
   check,  // validate only
@@ -37,6 +38,7 @@ struct WorkflowResult {
   ExitStatus status = ExitStatus::ok;
   std::optional<Scene> scene;                     // set once the scene is valid
   std::vector<std::string> errors;                // invalid input: "<json path>: ..."; failed run: the reasons
+  std::vector<std::string> rejections;            // not accepted: one line per failed acceptance criterion
   nlohmann::json report;                          // null when the input was invalid or in check mode
   std::optional<slope::SearchResult> lem;         // the limit-equilibrium result, for the table
   std::optional<std::filesystem::path> report_file;  // where report.json was written
