@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/batch.hpp"
 #include "coupling/report.hpp"
 #include "coupling/scene.hpp"
 #include "coupling/sph_workflow.hpp"
@@ -226,11 +227,48 @@ int main(int argc, char** argv) {
   bool no_lem_search = false;
   study->add_flag("--no-lem-search", no_lem_search, "Slope sections: skip the study of the limit-equilibrium search");
 
+  CLI::App* batch = app.add_subcommand(
+      "batch", "Run a set of scenes (a folder of *.json or a manifest), one run folder per scene, resumable; writes "
+               "DIR/summary.csv, DIR/summary.json and DIR/junit.xml. Exit status: 0 all ok, 3 some comparison not "
+               "accepted, 1 some scene failed or invalid (or interrupted), 2 invalid batch input.");
+  std::string batch_input;
+  batch->add_option("INPUT", batch_input, "A folder of scene files (*.json) or a manifest (one scene file per line; "
+                                          "# comments; paths relative to the manifest)")
+      ->required()
+      ->type_name("FOLDER|FILE");
+  batch->add_option("-o,--output", output_dir, "Output folder (default: runs/batch)")->type_name("DIR");
+  int jobs = 1;
+  batch->add_option("-j,--jobs", jobs, "Scenes run at once; the cores are shared out among them (default 1)")
+      ->check(CLI::PositiveNumber);
+  std::optional<std::size_t> batch_index;
+  batch->add_option("--index", batch_index, "Run only scene INDEX (0-based) of the list, e.g. a scheduler's array "
+                                            "index ($SLURM_ARRAY_TASK_ID); gather the summary afterwards with "
+                                            "--summary-only");
+  bool summary_only = false;
+  batch->add_flag("--summary-only", summary_only, "Run nothing: write the summary of the runs already in DIR");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     const int code = app.exit(error);  // prints help, the version or the usage error
     return code == 0 ? 0 : static_cast<int>(coupling::ExitStatus::invalid_input);
+  }
+
+  if (batch->parsed()) {
+    coupling::BatchOptions batch_options;
+    batch_options.input = batch_input;
+    batch_options.output_dir = output_dir.empty() ? std::filesystem::path("runs/batch") : std::filesystem::path(output_dir);
+    batch_options.jobs = jobs;
+    batch_options.index = batch_index;
+    batch_options.summary_only = summary_only;
+    batch_options.program = std::filesystem::read_symlink("/proc/self/exe");
+    batch_options.log = &std::cerr;
+    try {
+      return coupling::run_batch(batch_options);
+    } catch (const std::exception& error) {
+      std::cerr << "sphslope: unexpected failure: " << error.what() << "\n";
+      return static_cast<int>(coupling::ExitStatus::failed);
+    }
   }
 
   if (study->parsed()) {
