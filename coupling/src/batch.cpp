@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/svg.hpp"
 #include "sph/atomic_file.hpp"
 
 extern char** environ;
@@ -195,20 +196,6 @@ std::string summary_csv(const nlohmann::json& rows) {
     out << "," << csv_field(row.value("accepted", none)) << "," << csv_field(row["folder"]) << "\n";
   }
   return out.str();
-}
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 // JUnit XML: one test case per scene (the run) and one per acceptance criterion.
