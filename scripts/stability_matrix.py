@@ -309,6 +309,21 @@ def case_checks(stem, scene, result, report, energy, results):
                 (any("created energy" in w for w in sph.get("warnings", [])), "the report warns that energy was created"),
                 ("sph: warning:" in result["output"], "the warning is printed on stderr")]
 
+    if stem.startswith("sph_collapse_a"):
+        # true-2-D laws of Nguyen, Bui & Fukagawa (2015) for the aluminium-rod column; 10 % as in issue 14
+        checks = check_sph_finished(result, report, energy)
+        deposit = ((report or {}).get("sph") or {}).get("deposit")
+        if deposit:
+            L0, H0 = deposit["initial_length_m"], deposit["initial_height_m"]
+            a = H0 / L0
+            d_law = L0 * (1 + (3.25 * a ** 0.96 if a < 1.5 else 3.80 * a ** 0.73))
+            h_law = H0 if a < 0.65 else H0 / (1.42 * a ** (2 / 3))
+            for what, got, law in (("run-out d", deposit["final_length_m"], d_law),
+                                   ("final height", deposit["final_height_m"], h_law)):
+                checks.append((abs(got - law) <= 0.10 * law, f"{what} {got:.4f} m vs law {law:.4f} m (within 10 %)"))
+        else:
+            checks.append((False, "no deposit in the report"))
+        return checks
     if stem.startswith("sph_"):
         checks = check_sph_finished(result, report, energy)
         if not report or "sph" not in report:

@@ -270,6 +270,7 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   const double* rxx = w.rxx.data();
   const double* ryy = w.ryy.data();
   const double* rxy = w.rxy.data();
+  const double* is_soil = w.is_soil.data();
 
   const Index ns = static_cast<Index>(w.soil.size());
 #pragma omp parallel for schedule(dynamic, 256)  // gather per particle: results do not depend on the schedule
@@ -295,7 +296,13 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
         const double dvx = vxi - vx[j], dvy = vyi - vy[j];  // v_i - v_j
         const double mj = mass[j];
         const double vj = vol[j];
-        drho += mj * (dvx * gwx + dvy * gwy);
+        // Continuity with the walls' own velocity (at rest), not their ghost velocity: the ghost velocity only
+        // enforces the slip condition on the velocity gradient and the viscosity (Adami, Hu & Adams 2012,
+        // J. Comput. Phys. 231:7057, sec. 2.3). With the no-slip ghost velocity -v_avg in the continuity
+        // equation, a particle sliding down a wall next to the free surface, whose wall neighbours above see
+        // only it, lost density at a rate ~ 2 v |grad W| until it went negative (docs/stability.md).
+        const double svx = vxi - is_soil[j] * vx[j], svy = vyi - is_soil[j] * vy[j];
+        drho += mj * (svx * gwx + svy * gwy);
         // velocity gradient L_ab = sum V_j (v_j - v_i)_a dW/dx_b
         lxx -= vj * dvx * gwx;
         lxy -= vj * dvx * gwy;
