@@ -299,7 +299,10 @@ bool run_jobs(std::vector<Job>& jobs, const BatchOptions& options) {
     const char* outcome[] = {"ok", "failed", "invalid input", "not accepted"};
     const int code = *job.exit_status;
     std::ostringstream line;
-    line << progress(done, jobs.size()) << job.scene.string() << ": " << (code >= 0 && code <= 3 ? outcome[code] : "failed")
+    const char* what = batch_interrupted && code == 1 ? "interrupted (checkpoint kept)"
+                       : code >= 0 && code <= 3      ? outcome[code]
+                                                     : "failed";
+    line << progress(done, jobs.size()) << job.scene.string() << ": " << what
          << " (" << static_cast<int>(job.seconds) << " s; " << job.folder.string() << ".log)\n";
     say(line.str());
   }
