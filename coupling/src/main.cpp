@@ -169,6 +169,38 @@ int print_study(const std::filesystem::path& scene_file, const std::filesystem::
   return static_cast<int>(result.status);
 }
 
+// sphslope batch: its options are read straight into `options` (the output folder gets its default after parsing).
+CLI::App* add_batch_command(CLI::App& app, coupling::BatchOptions& options) {
+  CLI::App* batch = app.add_subcommand(
+      "batch", "Run a set of scenes (a folder of *.json or a manifest), one run folder per scene, resumable; writes "
+               "DIR/summary.csv, DIR/summary.json and DIR/junit.xml. Exit status: 0 all ok, 3 some comparison not "
+               "accepted, 1 some scene failed or invalid (or interrupted), 2 invalid batch input.");
+  batch->add_option("INPUT", options.input, "A folder of scene files (*.json) or a manifest (one scene file per line; "
+                                            "# comments; paths relative to the manifest)")
+      ->required()
+      ->type_name("FOLDER|FILE");
+  batch->add_option("-o,--output", options.output_dir, "Output folder (default: runs/batch)")->type_name("DIR");
+  batch->add_option("-j,--jobs", options.jobs, "Scenes run at once; the cores are shared out among them (default 1)")
+      ->check(CLI::PositiveNumber);
+  batch->add_option("--index", options.index, "Run only scene INDEX (0-based) of the list, e.g. a scheduler's array "
+                                              "index ($SLURM_ARRAY_TASK_ID); gather the summary afterwards with "
+                                              "--summary-only");
+  batch->add_flag("--summary-only", options.summary_only, "Run nothing: write the summary of the runs already in DIR");
+  return batch;
+}
+
+int run_batch_command(coupling::BatchOptions options) {
+  if (options.output_dir.empty()) options.output_dir = "runs/batch";
+  options.program = std::filesystem::read_symlink("/proc/self/exe");
+  options.log = &std::cerr;
+  try {
+    return coupling::run_batch(options);
+  } catch (const std::exception& error) {
+    std::cerr << "sphslope: unexpected failure: " << error.what() << "\n";
+    return static_cast<int>(coupling::ExitStatus::failed);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -227,25 +259,8 @@ int main(int argc, char** argv) {
   bool no_lem_search = false;
   study->add_flag("--no-lem-search", no_lem_search, "Slope sections: skip the study of the limit-equilibrium search");
 
-  CLI::App* batch = app.add_subcommand(
-      "batch", "Run a set of scenes (a folder of *.json or a manifest), one run folder per scene, resumable; writes "
-               "DIR/summary.csv, DIR/summary.json and DIR/junit.xml. Exit status: 0 all ok, 3 some comparison not "
-               "accepted, 1 some scene failed or invalid (or interrupted), 2 invalid batch input.");
-  std::string batch_input;
-  batch->add_option("INPUT", batch_input, "A folder of scene files (*.json) or a manifest (one scene file per line; "
-                                          "# comments; paths relative to the manifest)")
-      ->required()
-      ->type_name("FOLDER|FILE");
-  batch->add_option("-o,--output", output_dir, "Output folder (default: runs/batch)")->type_name("DIR");
-  int jobs = 1;
-  batch->add_option("-j,--jobs", jobs, "Scenes run at once; the cores are shared out among them (default 1)")
-      ->check(CLI::PositiveNumber);
-  std::optional<std::size_t> batch_index;
-  batch->add_option("--index", batch_index, "Run only scene INDEX (0-based) of the list, e.g. a scheduler's array "
-                                            "index ($SLURM_ARRAY_TASK_ID); gather the summary afterwards with "
-                                            "--summary-only");
-  bool summary_only = false;
-  batch->add_flag("--summary-only", summary_only, "Run nothing: write the summary of the runs already in DIR");
+  coupling::BatchOptions batch_options;
+  CLI::App* batch = add_batch_command(app, batch_options);
 
   try {
     app.parse(argc, argv);
@@ -254,22 +269,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : static_cast<int>(coupling::ExitStatus::invalid_input);
   }
 
-  if (batch->parsed()) {
-    coupling::BatchOptions batch_options;
-    batch_options.input = batch_input;
-    batch_options.output_dir = output_dir.empty() ? std::filesystem::path("runs/batch") : std::filesystem::path(output_dir);
-    batch_options.jobs = jobs;
-    batch_options.index = batch_index;
-    batch_options.summary_only = summary_only;
-    batch_options.program = std::filesystem::read_symlink("/proc/self/exe");
-    batch_options.log = &std::cerr;
-    try {
-      return coupling::run_batch(batch_options);
-    } catch (const std::exception& error) {
-      std::cerr << "sphslope: unexpected failure: " << error.what() << "\n";
-      return static_cast<int>(coupling::ExitStatus::failed);
-    }
-  }
+  if (batch->parsed()) return run_batch_command(batch_options);
 
   if (study->parsed()) {
     coupling::StudyOptions study_options;
