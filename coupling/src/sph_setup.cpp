@@ -71,6 +71,16 @@ double section_area(const slope::Section& section) {
   return area;
 }
 
+// A particle count estimated in floating point, as an integer. Absurd inputs (a spacing of 1e-50 m) give counts
+// no machine holds; they saturate at 1e15 so that the sums and the memory estimate built on them cannot overflow and
+// the size check refuses the case with its message.
+constexpr std::size_t particle_count_cap = 1'000'000'000'000'000;
+
+std::size_t particle_count(double count) {
+  if (!(count < static_cast<double>(particle_count_cap))) return particle_count_cap;
+  return static_cast<std::size_t>(std::ceil(std::max(count, 0.0)));
+}
+
 // Wall particles of a box, counted as add_box_walls lays them (layers of the kernel support around the box).
 std::size_t wall_estimate(double width, double height, const WallSides& sides, double dx, int wall_layers) {
   const double layers = wall_layers;
@@ -78,20 +88,22 @@ std::size_t wall_estimate(double width, double height, const WallSides& sides, d
   if (sides.bottom) count += (width / dx + 2.0 * layers) * layers;
   if (sides.left) count += (height / dx) * layers;
   if (sides.right) count += (height / dx) * layers;
-  return static_cast<std::size_t>(std::ceil(count));
+  return particle_count(count);
 }
 
 // Why a case of this many particles must be refused (particle or memory limit), or nothing.
 std::optional<std::string> size_refusal(const SphAnalysis& analysis, std::size_t particles) {
   const std::size_t bytes = sph::estimate_memory_bytes(particles);
+  const std::string count = particles >= particle_count_cap ? std::string("more than 1e15")
+                                                            : "about " + std::to_string(particles);
   if (analysis.max_particles > 0 && particles > analysis.max_particles) {
-    return "analyses.sph.particle_spacing_m: the case would need about " + std::to_string(particles) +
+    return "analyses.sph.particle_spacing_m: the case would need " + count +
            " particles, more than analyses.sph.max_particles = " + std::to_string(analysis.max_particles) +
            " (use a larger spacing or raise max_particles)";
   }
   if (static_cast<double>(bytes) > analysis.memory_limit_bytes) {
     return "analyses.sph.particle_spacing_m: the case would need about " +
-           format_number(static_cast<double>(bytes) / gibibyte) + " GiB for " + std::to_string(particles) +
+           format_number(static_cast<double>(bytes) / gibibyte) + " GiB for " + count +
            " particles, more than analyses.sph.max_memory_GiB = " + format_number(analysis.memory_limit_bytes / gibibyte) +
            " (use a larger spacing or raise max_memory_GiB)";
   }
@@ -452,7 +464,7 @@ std::optional<SphPlan> plan_sph(const Scene& scene, const SphAnalysis& analysis)
     }
     double top = section.bottom_y;
     for (const auto& p : section.profile_lines.front().points) top = std::max(top, p.y);
-    plan.soil_particles = static_cast<std::size_t>(std::ceil(section_area(section) / (dx * dx)));
+    plan.soil_particles = particle_count(section_area(section) / (dx * dx));
     plan.wall_particles = wall_estimate(section.x_max() - section.x_min(), top - section.bottom_y,
                                         analysis.section_walls, dx, analysis.wall_layers);
   } else if (scene.bodies) {
@@ -464,7 +476,7 @@ std::optional<SphPlan> plan_sph(const Scene& scene, const SphAnalysis& analysis)
       area += polygon_area(body.polygon);
       materials.push_back(to_sph_material(body.material));
     }
-    plan.soil_particles = static_cast<std::size_t>(std::ceil(area / (dx * dx)));
+    plan.soil_particles = particle_count(area / (dx * dx));
     if (scene.walls) {
       const auto walls = read_wall_box(*scene.walls, ignored);
       if (!walls) return std::nullopt;
@@ -484,7 +496,7 @@ std::vector<std::string> sph_refusals(const SphAnalysis& analysis, const SphPlan
   std::vector<std::string> out;
   if (auto why = size_refusal(analysis, plan.soil_particles + plan.wall_particles)) out.push_back(*why);
   if (plan.planned_steps > analysis.max_steps) {
-    out.push_back("analyses.sph: the run needs about " + std::to_string(std::llround(plan.planned_steps)) +
+    out.push_back("analyses.sph: the run needs about " + format_number(std::ceil(plan.planned_steps)) +
                   " time steps (P-wave speed " + format_number(plan.p_wave_speed) + " m/s, time step " +
                   format_number(plan.time_step) + " s for " + format_number(analysis.settings.end_time) +
                   " s), more than analyses.sph.max_steps = " + std::to_string(std::llround(analysis.max_steps)) +
@@ -513,7 +525,7 @@ sph::Model build_sph_model(const Scene& scene, SphSize* size) {
     for (const auto& p : section.profile_lines.front().points) top = std::max(top, p.y);
     const double width = section.x_max() - section.x_min(), height = top - section.bottom_y;
     // Refuse before allocating anything per particle.
-    const auto soil_estimate = static_cast<std::size_t>(std::ceil(section_area(section) / (dx * dx)));
+    const auto soil_estimate = particle_count(section_area(section) / (dx * dx));
     refuse_if_too_large(*analysis, soil_estimate + wall_estimate(width, height, analysis->section_walls, dx, analysis->wall_layers));
 
     for (const auto& m : scene.section->materials) model.materials.push_back(to_sph_material(m));
@@ -546,7 +558,7 @@ sph::Model build_sph_model(const Scene& scene, SphSize* size) {
     for (const auto& body : *bodies) area += polygon_area(body.polygon);
     std::size_t wall_count = 0;
     if (walls) wall_count = wall_estimate(walls->x_max - walls->x_min, walls->height, walls->sides, dx, analysis->wall_layers);
-    refuse_if_too_large(*analysis, static_cast<std::size_t>(std::ceil(area / (dx * dx))) + wall_count);
+    refuse_if_too_large(*analysis, particle_count(area / (dx * dx)) + wall_count);
 
     // Bodies share the lattice of the wall box (or of the first body's lower-left corner).
     sph::Point anchor{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};

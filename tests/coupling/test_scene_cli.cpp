@@ -97,6 +97,8 @@ const BadScene bad_scenes[] = {
     {"minimum_depth_negative.json", "check", "analyses.lem.search.minimum_depth_m: must be > 0 (got -1)"},
     {"grid_count_one.json", "check", "analyses.lem.search.centre_grid.nx: must be in [2, 200]"},
     {"sph_missing_elastic.json", "check", "section.materials[0]: material \"upper\" lacks youngs_modulus_MPa and poisson_ratio"},
+    // Found by scripts/fuzz: the particle and step counts of an absurd spacing overflowed their integer types.
+    {"spacing_absurdly_small.json", "check", "more than analyses.sph.max_particles = 5000000"},
     {"lem_without_section.json", "check", "analyses.lem: limit equilibrium needs a \"section\""},
     // Valid on its own; only the search itself finds that the limits admit no slip circle.
     {"no_valid_circle.json", "lem", "analyses.lem.search: the search limits admit no valid slip circle"},
