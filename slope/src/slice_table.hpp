@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "indexed_polyline.hpp"
 #include "slope/section.hpp"
 #include "slope/slices.hpp"
 
@@ -59,49 +60,26 @@ struct PreparedSection {
   double x_min = 0.0, x_max = 0.0, bottom_y = 0.0;
   double ground_y_min = 0.0, ground_y_max = 0.0;
   std::vector<Point> ground;
-  // profile lines ordered from the top (the ground surface) down; they may touch but not cross
-  std::vector<const std::vector<Point>*> lines;
+  // profile lines ordered from the top (the ground surface, lines[0]) down; they may touch but not cross
+  std::vector<IndexedPolyline> lines;
   std::vector<double> line_unit_weight, line_cohesion, line_tan_phi;
   std::vector<std::size_t> line_material;
   bool has_water = false;
-  std::vector<Point> piezometric_line;
+  IndexedPolyline piezometric_line;
   double water_unit_weight = 0.0;
   std::vector<Surcharge> surcharges;
   double seismic_coefficient = 0.0;
-  // x of every profile-line and piezometric-line vertex, surcharge end and piezometric line / ground crossing
+  // x where a slice must end whatever the circle: surcharge ends and where the piezometric line crosses the ground
+  // (the edge of ponded water). Vertices are not among them: the slices integrate the lines exactly.
   std::vector<double> fixed_breaks;
   // x of the ground vertices that lie on the rigid base (e.g. the toe of a slope standing on a firm base): no soil
   // on one side, so a slip surface may end there
   std::vector<double> base_contacts;
 
   explicit PreparedSection(const Section& section);
+  const IndexedPolyline& ground_line() const { return lines.front(); }
   double ground_at(double x) const;
 };
-
-// Heights of a polyline at non-decreasing x, O(1) amortised per query.
-struct PolylineCursor {
-  const std::vector<Point>* line = nullptr;
-  std::size_t segment = 0;
-  void reset(const std::vector<Point>& l) {
-    line = &l;
-    segment = 0;
-  }
-  double y(double x) {
-    const std::vector<Point>& p = *line;
-    const std::size_t last = p.size() - 1;
-    if (x <= p.front().x) return p.front().y;
-    if (x >= p.back().x) return p.back().y;
-    while (segment + 1 < last && p[segment + 1].x < x) ++segment;
-    const Point& a = p[segment];
-    const Point& b = p[segment + 1];
-    return a.y + (x - a.x) * (b.y - a.y) / (b.x - a.x);
-  }
-};
-
-// Appends to `out` the x of every point where the lower half of the circle cuts the polyline strictly inside
-// (x_from, x_to).
-void lower_arc_crossings(const std::vector<Point>& line, const Circle& circle, double x_from, double x_to,
-                         std::vector<double>& out);
 
 class Slicer {
  public:
@@ -111,10 +89,11 @@ class Slicer {
   Rejection slice(const Circle& circle, int target_slices, SliceTable& table);
 
  private:
+  void fill_slices(const Circle& circle, int dir, SliceTable& table);
+
   PreparedSection prepared_;
   std::vector<double> roots_, breaks_, bounds_, arc_y_, ground_y_, line_y_;
   std::vector<char> root_is_contact_;
-  std::vector<PolylineCursor> line_cursors_;
 };
 
 // Conversions between the table and the public SlipMass (one place each).

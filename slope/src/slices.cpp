@@ -1,13 +1,15 @@
 // Slicing the mass above a circular slip surface.
 //
 // Geometry: the slip surface is the lower half of the circle. The mass is the single region where the ground
-// surface lies above the arc. Slice boundaries are put at every profile-line vertex, piezometric-line vertex,
-// surcharge end, piezometric-line/ground crossing and at every point where a profile line (a material change)
-// or the piezometric line crosses the arc inside the mass; the intervals between these are divided into
-// near-equal slices so that the total is close to the target. Inside a slice the ground, every profile line and
-// the piezometric line are therefore straight, so areas and water loads evaluated at the slice centre line are
-// exact; the base is the chord of the arc between the slice boundaries (its normal at the chord midpoint passes
-// through the circle centre).
+// surface lies above the arc. Slice boundaries are put where the base must break whatever the slice count asks:
+// where a profile line (a material change) or the piezometric line crosses the arc inside the mass, at surcharge
+// ends and where the piezometric line crosses the ground (the edge of ponded water); the intervals between these
+// are divided into near-equal slices so that the total is close to the target. The polylines' vertices set no
+// boundaries: the weight of every layer, the ponded water and the mean ground height of a slice are integrals of
+// the polylines over the slice, exact for any number of vertices and found in O(log n) from cumulative areas. The
+// cost of a circle is therefore set by its slices, not by how finely the ground was surveyed. The base is the
+// chord of the arc between the slice boundaries (its normal at the chord midpoint passes through the circle
+// centre); pore pressure is taken at the chord midpoint.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -89,44 +91,45 @@ PreparedSection::PreparedSection(const Section& section) {
     ground_y_max = std::max(ground_y_max, p.y);
   }
 
-  // Order the profile lines from the top down. They do not cross, so comparing them at all vertices is enough;
+  // Order the profile lines from the top down. They do not cross, so comparing their mean heights is enough;
   // the ground surface stays first.
-  std::vector<double> xs;
-  for (const ProfileLine& line : section.profile_lines)
-    for (const Point& p : line.points) xs.push_back(p.x);
-  std::vector<double> level(section.profile_lines.size(), 0.0);
-  for (std::size_t k = 0; k < section.profile_lines.size(); ++k)
-    for (double x : xs) level[k] += polyline_y(section.profile_lines[k].points, x);
-  std::vector<std::size_t> order(section.profile_lines.size());
+  const std::size_t n_lines = section.profile_lines.size();
+  std::vector<double> level(n_lines, 0.0);
+  for (std::size_t k = 0; k < n_lines; ++k) {
+    lines.emplace_back(section.profile_lines[k].points);
+    level[k] = lines.back().integral(x_min, x_max);
+  }
+  std::vector<std::size_t> order(n_lines);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin() + 1, order.end(), [&](std::size_t a, std::size_t b) { return level[a] > level[b]; });
+  std::vector<IndexedPolyline> ordered;
   for (std::size_t k : order) {
     const ProfileLine& line = section.profile_lines[k];
     const Material& m = section.materials.at(line.material);
-    lines.push_back(&line.points);
+    ordered.push_back(std::move(lines[k]));
     line_unit_weight.push_back(m.unit_weight);
     line_cohesion.push_back(m.cohesion);
     line_tan_phi.push_back(std::tan(m.friction_angle));
     line_material.push_back(line.material);
   }
+  lines = std::move(ordered);
 
-  fixed_breaks = xs;
   if (section.water) {
     has_water = true;
-    piezometric_line = section.water->piezometric_line;
+    piezometric_line = IndexedPolyline(section.water->piezometric_line);
     water_unit_weight = section.water->unit_weight;
-    for (const Point& p : piezometric_line) fixed_breaks.push_back(p.x);
     // where the piezometric line crosses the ground surface (edge of ponded water)
     std::vector<double> knots;
     for (const Point& p : ground) knots.push_back(p.x);
-    for (const Point& p : piezometric_line) knots.push_back(std::clamp(p.x, x_min, x_max));
+    for (const Point& p : section.water->piezometric_line) knots.push_back(std::clamp(p.x, x_min, x_max));
     std::sort(knots.begin(), knots.end());
+    const IndexedPolyline& g = lines.front();
     for (std::size_t i = 0; i + 1 < knots.size(); ++i) {
       const double a = knots[i];
       const double b = knots[i + 1];
       if (!(b > a)) continue;
-      const double da = polyline_y(piezometric_line, a) - polyline_y(ground, a);
-      const double db = polyline_y(piezometric_line, b) - polyline_y(ground, b);
+      const double da = piezometric_line.y(a) - g.y(a);
+      const double db = piezometric_line.y(b) - g.y(b);
       if ((da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0)) fixed_breaks.push_back(a + (b - a) * da / (da - db));
     }
   }
@@ -143,42 +146,7 @@ PreparedSection::PreparedSection(const Section& section) {
   fixed_breaks.erase(std::unique(fixed_breaks.begin(), fixed_breaks.end()), fixed_breaks.end());
 }
 
-double PreparedSection::ground_at(double x) const { return polyline_y(ground, std::clamp(x, x_min, x_max)); }
-
-void lower_arc_crossings(const std::vector<Point>& line, const Circle& circle, double x_from, double x_to,
-                         std::vector<double>& out) {
-  const double r2 = circle.radius * circle.radius;
-  const double y_limit = circle.yc + 1e-12 * circle.radius;
-  // first segment that can reach x_from
-  auto first = std::upper_bound(line.begin(), line.end(), x_from, [](double v, const Point& p) { return v < p.x; });
-  std::size_t i = first == line.begin() ? 0 : static_cast<std::size_t>(first - line.begin()) - 1;
-  for (; i + 1 < line.size(); ++i) {
-    const Point& p0 = line[i];
-    const Point& p1 = line[i + 1];
-    if (p0.x >= x_to) break;
-    if (p1.x <= x_from) continue;
-    const double dx = p1.x - p0.x;
-    const double dy = p1.y - p0.y;
-    const double fx = p0.x - circle.xc;
-    const double fy = p0.y - circle.yc;
-    const double a = dx * dx + dy * dy;
-    const double b = 2.0 * (fx * dx + fy * dy);
-    const double c = fx * fx + fy * fy - r2;
-    const double disc = b * b - 4.0 * a * c;
-    if (disc < 0.0 || a <= 0.0) continue;
-    const double sq = std::sqrt(disc);
-    const double q = -0.5 * (b + (b >= 0.0 ? sq : -sq));
-    double ts[2] = {q / a, q != 0.0 ? c / q : q / a};
-    for (double t : ts) {
-      if (t < -1e-12 || t > 1.0 + 1e-12) continue;
-      t = std::clamp(t, 0.0, 1.0);
-      const double x = p0.x + t * dx;
-      const double y = p0.y + t * dy;
-      if (y > y_limit) continue;
-      if (x > x_from && x < x_to) out.push_back(x);
-    }
-  }
-}
+double PreparedSection::ground_at(double x) const { return lines.front().y(std::clamp(x, x_min, x_max)); }
 
 Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& table) {
   const PreparedSection& ps = prepared_;
@@ -203,7 +171,7 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
   const double x_hi = std::min(ps.x_max, xc + R);
   if (!(x_hi > x_lo)) return Rejection::misses_ground;
   roots_.clear();
-  lower_arc_crossings(ps.ground, circle, x_lo, x_hi, roots_);
+  ps.ground_line().lower_arc_crossings(circle, x_lo, x_hi, roots_);
   const std::size_t n_crossings = roots_.size();
   for (double x : ps.base_contacts)
     if (x > x_lo && x < x_hi) roots_.push_back(x);
@@ -288,8 +256,8 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
   for (auto it = std::upper_bound(ps.fixed_breaks.begin(), ps.fixed_breaks.end(), xl);
        it != ps.fixed_breaks.end() && *it < xr; ++it)
     breaks_.push_back(*it);
-  for (std::size_t k = 1; k < ps.lines.size(); ++k) lower_arc_crossings(*ps.lines[k], circle, xl, xr, breaks_);
-  if (ps.has_water) lower_arc_crossings(ps.piezometric_line, circle, xl, xr, breaks_);
+  for (std::size_t k = 1; k < ps.lines.size(); ++k) ps.lines[k].lower_arc_crossings(circle, xl, xr, breaks_);
+  if (ps.has_water) ps.piezometric_line.lower_arc_crossings(circle, xl, xr, breaks_);
   std::sort(breaks_.begin(), breaks_.end());
   breaks_.push_back(xr);
   const double target_width = span / std::max(1, target_slices);
@@ -311,14 +279,26 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
   const int n = static_cast<int>(bounds_.size()) - 1;
   if (n < 1) return Rejection::too_small;
 
+  fill_slices(circle, dir, table);
+  return Rejection::none;
+}
+
+// Steps 4 and 5 of slice(): the slices between bounds_, their geometry, weights and loads.
+void Slicer::fill_slices(const Circle& circle, int dir, SliceTable& table) {
+  const PreparedSection& ps = prepared_;
+  const IndexedPolyline& ground = ps.ground_line();
+  const double R2 = circle.radius * circle.radius;
+  auto arc = [&](double x) {
+    const double d = x - circle.xc;
+    return circle.yc - std::sqrt(std::max(0.0, R2 - d * d));
+  };
   // 4. Arc and ground at the boundaries.
+  const int n = static_cast<int>(bounds_.size()) - 1;
   arc_y_.resize(bounds_.size());
   ground_y_.resize(bounds_.size());
-  PolylineCursor ground_cursor;
-  ground_cursor.reset(ps.ground);
   for (std::size_t j = 0; j < bounds_.size(); ++j) {
     arc_y_[j] = arc(bounds_[j]);
-    ground_y_[j] = ground_cursor.y(bounds_[j]);
+    ground_y_[j] = ground.y(bounds_[j]);
   }
   arc_y_.front() = ground_y_.front();  // the ends lie on the ground
   arc_y_.back() = ground_y_.back();
@@ -327,19 +307,13 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
   table.resize(n);
   table.circle = circle;
   table.direction = dir;
-  const Point p_left{xl, ground_y_.front()};
-  const Point p_right{xr, ground_y_.back()};
+  const Point p_left{bounds_.front(), ground_y_.front()};
+  const Point p_right{bounds_.back(), ground_y_.back()};
   table.entry = dir > 0 ? p_left : p_right;
   table.exit = dir > 0 ? p_right : p_left;
   const double sdir = dir > 0 ? 1.0 : -1.0;
   const std::size_t n_lines = ps.lines.size();
-  if (n_lines > 1) {
-    line_cursors_.resize(n_lines);
-    line_y_.resize(n_lines + 1);
-    for (std::size_t k = 0; k < n_lines; ++k) line_cursors_[k].reset(*ps.lines[k]);
-  }
-  PolylineCursor water_cursor;
-  if (ps.has_water) water_cursor.reset(ps.piezometric_line);
+  line_y_.resize(n_lines + 1);
   const double kh = ps.seismic_coefficient;
   double max_depth = 0.0;
   for (int i = 0; i < n; ++i) {
@@ -352,8 +326,8 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
     const double l = std::sqrt(b * b + dy * dy);
     const double inv_l = 1.0 / l;
     const double xm = 0.5 * (x0 + x1);
-    const double ybm = 0.5 * (yb0 + yb1);
-    const double ytm = 0.5 * (ground_y_[i] + ground_y_[i + 1]);
+    const double ybm = 0.5 * (yb0 + yb1);  // the chord's mean height
+    const double ytm = ground.mean(x0, x1);  // the ground's mean height
     const double h = std::max(0.0, ytm - ybm);
     max_depth = std::max(max_depth, h);
     table.x_left[i] = x0;
@@ -366,28 +340,24 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
     table.base_y[i] = ybm;
     table.top_y[i] = ytm;
 
-    double weight;
-    std::size_t base_line = 0;
-    if (n_lines == 1) {
-      weight = ps.line_unit_weight[0] * b * h;
-    } else {
-      // layers at the centre line: line k's material fills [Y(k+1), Y(k)], the last one down to bottom_y
-      line_y_[0] = ytm;
-      for (std::size_t k = 1; k < n_lines; ++k) line_y_[k] = std::min(line_cursors_[k].y(xm), line_y_[k - 1]);
-      line_y_[n_lines] = std::min(ps.bottom_y, line_y_[n_lines - 1]);
-      weight = 0.0;
-      base_line = n_lines - 1;
-      for (std::size_t k = 0; k < n_lines; ++k) {
-        const double top = line_y_[k];
-        const double bottom = std::max(line_y_[k + 1], ybm);
-        if (top > bottom) weight += ps.line_unit_weight[k] * (top - bottom);
-        if (line_y_[k + 1] < ybm) {
-          base_line = k;
-          break;
-        }
+    // Layers from their mean heights over the slice: line k's material fills [Y(k+1), Y(k)], the last one down to
+    // bottom_y; the layer the chord lies in is cut at the chord. The chord crosses no line inside a slice (the
+    // crossings are boundaries), so these areas are exact.
+    line_y_[0] = ytm;
+    for (std::size_t k = 1; k < n_lines; ++k) line_y_[k] = std::min(ps.lines[k].mean(x0, x1), line_y_[k - 1]);
+    line_y_[n_lines] = std::min(ps.bottom_y, line_y_[n_lines - 1]);
+    double weight = 0.0;
+    std::size_t base_line = n_lines - 1;
+    for (std::size_t k = 0; k < n_lines; ++k) {
+      const double top = line_y_[k];
+      const double bottom = std::max(line_y_[k + 1], ybm);
+      if (top > bottom) weight += ps.line_unit_weight[k] * (top - bottom);
+      if (line_y_[k + 1] < ybm) {
+        base_line = k;
+        break;
       }
-      weight *= b;
     }
+    weight *= b;
     table.weight[i] = weight;
     table.material[i] = ps.line_material[base_line];
     table.cohesion[i] = ps.line_cohesion[base_line];
@@ -395,13 +365,17 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
 
     double u = 0.0, ponded = 0.0, thrust = 0.0;
     if (ps.has_water) {
-      const double hw = water_cursor.y(xm);
-      u = ps.water_unit_weight * std::max(0.0, hw - ybm);
-      const double depth = hw - ytm;
+      u = ps.water_unit_weight * std::max(0.0, ps.piezometric_line.y(xm) - ybm);
+      // The piezometric line does not cross the ground inside a slice (the crossings are boundaries).
+      const double depth = ps.piezometric_line.mean(x0, x1) - ytm;
       if (depth > 0.0) {
         ponded = ps.water_unit_weight * depth * b;
-        // pressure p normal to the ground y = G(x) pushes on the slice top with (p G', -p) per unit x
-        thrust = sdir * ponded * (ground_y_[i + 1] - ground_y_[i]) / b;
+        // Water pressure p = gw (hw - G) normal to the ground pushes on the slice top with p G' per unit x toward
+        // +x: gw (d0^2 - d1^2) / 2 from the water depths d at the slice ends, exact for a level water surface
+        // over any number of ground vertices.
+        const double d0 = std::max(0.0, ps.piezometric_line.y(x0) - ground_y_[i]);
+        const double d1 = std::max(0.0, ps.piezometric_line.y(x1) - ground_y_[i + 1]);
+        thrust = sdir * 0.5 * ps.water_unit_weight * (d0 * d0 - d1 * d1);
       }
     }
     table.pore_pressure[i] = u;
@@ -418,7 +392,6 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
   }
   table.max_depth = max_depth;
   table.compute_loads();
-  return Rejection::none;
 }
 
 void table_to_mass(const SliceTable& t, SlipMass& mass) {

@@ -96,15 +96,39 @@ TEST_CASE("slice weights add up to the closed-form circular-segment area", "[slo
   }
 }
 
-TEST_CASE("slice boundaries fall on every profile vertex and material change inside the mass", "[slope][slicing]") {
+// Weight of the soil between the ground and the chord of one slice, by a fine midpoint rule over the layers: an
+// independent check of the slicer's segment integration (which uses cumulative areas, not sampling).
+double sampled_weight(const slope::Section& s, const slope::Slice& sl, double unit_weight_top, double interface_y,
+                      double unit_weight_bottom) {
+  const int n = 20000;
+  const double slope_of_chord = std::tan(sl.base_angle);  // sliding toward +x
+  double weight = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double x = sl.x_left + (k + 0.5) * sl.width / n;
+    // the chord through (base_x, base_y); base_angle is measured against the sliding direction (+x here)
+    const double chord = sl.base_y - slope_of_chord * (x - sl.base_x);
+    const double ground = s.ground_y(x);
+    weight += unit_weight_top * std::max(0.0, ground - std::max(interface_y, chord)) +
+              unit_weight_bottom * std::max(0.0, std::min(interface_y, ground) - chord);
+  }
+  return weight * sl.width / n;
+}
+
+TEST_CASE("slice boundaries fall on material changes; vertices inside a slice are integrated exactly",
+          "[slope][slicing]") {
   // Two layers: the slope soil above y = 8 (horizontal interface below the toe), a stiffer clay below. The circle
-  // crosses the interface at x = xc -+ sqrt(R^2 - (yc - 8)^2); the crest (20) and toe (40) vertices are inside.
+  // crosses the interface at x = xc -+ sqrt(R^2 - (yc - 8)^2); the crest (20) and toe (40) vertices lie inside
+  // slices, which integrate the ground across them.
   slope::Section s = griffiths_lane_1999();
   s.materials.push_back(material("lower", 18.0, 30.0, 5.0));
   s.profile_lines.push_back(slope::ProfileLine{1, {{0, 8}, {60, 8}}});
   const slope::Circle circle{36.0, 30.0, 25.0};
   const auto mass = slope::slice_circle(s, circle, slope::SliceOptions{30});
   REQUIRE(mass);
+  REQUIRE(mass->direction == 1);
+  // 30 slices asked for, the interval split at the two interface crossings: at most one more per interval
+  CHECK(mass->slices.size() >= 29);
+  CHECK(mass->slices.size() <= 32);
   const double crossing_left = 36.0 - std::sqrt(625.0 - 484.0);
   const double crossing_right = 36.0 + std::sqrt(625.0 - 484.0);
   auto has_boundary = [&](double x) {
@@ -112,18 +136,43 @@ TEST_CASE("slice boundaries fall on every profile vertex and material change ins
       if (std::fabs(sl.x_left - x) < 1e-9 || std::fabs(sl.x_right - x) < 1e-9) return true;
     return false;
   };
-  CHECK(has_boundary(20.0));
-  CHECK(has_boundary(40.0));
   CHECK(has_boundary(crossing_left));
   CHECK(has_boundary(crossing_right));
+  int straddling = 0;
   for (const slope::Slice& sl : mass->slices) {
     const bool in_lower = sl.base_x > crossing_left && sl.base_x < crossing_right;
     CHECK(sl.base_material == (in_lower ? 1u : 0u));
     CHECK(sl.cohesion == Approx(in_lower ? 30e3 : 10e3));
-    // weight: 20 kN/m3 above y = 8, 18 kN/m3 below, at the slice centre line (exact for straight boundaries)
-    const double upper = sl.top_y - std::max(8.0, sl.base_y);
-    const double lower = std::max(0.0, 8.0 - sl.base_y);
-    CHECK(sl.weight == Approx((20e3 * upper + 18e3 * lower) * sl.width).epsilon(1e-12));
+    if ((sl.x_left < 20.0 && sl.x_right > 20.0) || (sl.x_left < 40.0 && sl.x_right > 40.0)) ++straddling;
+    CHECK(sl.weight == Approx(sampled_weight(s, sl, 20e3, 8.0, 18e3)).epsilon(1e-6));
+  }
+  CHECK(straddling == 2);
+}
+
+TEST_CASE("splitting the ground into collinear pieces changes no slice", "[slope][slicing]") {
+  slope::Section coarse = griffiths_lane_1999();
+  coarse.water = slope::Water{{{0, 16}, {25, 14}, {60, 11}}, 9810.0};
+  slope::Section fine = coarse;
+  std::vector<slope::Point> points;
+  const auto& ground = coarse.profile_lines.front().points;
+  for (std::size_t i = 0; i + 1 < ground.size(); ++i)
+    for (int k = 0; k < 997; ++k) {
+      const double t = k / 997.0;
+      points.push_back({ground[i].x + t * (ground[i + 1].x - ground[i].x), ground[i].y + t * (ground[i + 1].y - ground[i].y)});
+    }
+  points.push_back(ground.back());
+  fine.profile_lines.front().points = points;
+  const slope::Circle circle{36.0, 32.0, 22.0};
+  const auto a = slope::slice_circle(coarse, circle, {});
+  const auto b = slope::slice_circle(fine, circle, {});
+  REQUIRE(a);
+  REQUIRE(b);
+  REQUIRE(a->slices.size() == b->slices.size());
+  for (std::size_t i = 0; i < a->slices.size(); ++i) {
+    CHECK(b->slices[i].x_left == Approx(a->slices[i].x_left).epsilon(1e-12));
+    CHECK(b->slices[i].weight == Approx(a->slices[i].weight).epsilon(1e-9));
+    CHECK(b->slices[i].ponded_water_load == Approx(a->slices[i].ponded_water_load).margin(1e-6));
+    CHECK(b->slices[i].water_thrust == Approx(a->slices[i].water_thrust).margin(1e-6));
   }
 }
 
@@ -209,7 +258,7 @@ TEST_CASE("mirroring the section mirrors the slices and keeps every factor of sa
     const slope::Slice& a = right->slices[i];
     const slope::Slice& b = left->slices[n - 1 - i];
     CHECK(b.base_angle == Approx(a.base_angle).margin(1e-12));
-    CHECK(b.weight == Approx(a.weight).epsilon(1e-12));
+    CHECK(b.weight == Approx(a.weight).epsilon(1e-10));  // cumulative-area integrals round differently mirrored
     CHECK(b.water_thrust == Approx(a.water_thrust).margin(1e-6));
   }
   for (slope::Method method : slope::all_methods()) {
