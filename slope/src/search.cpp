@@ -2,7 +2,7 @@
 //
 // 1. Coarse search (no user settings needed):
 //    - entry-exit (default, or with entry/exit ranges and/or a radius range): points on the ground surface (an even
-//      grid over the whole section plus every ground vertex); for every pair where one point is higher than the
+//      grid over the whole section plus the vertices that shape the ground, at most as many as the grid); for every pair where one point is higher than the
 //      other, circles through both with the centre above the chord: half-angles from a near-chord circle to a
 //      near-semicircle, plus the circle through both points tangent to the rigid base (the deepest admissible one);
 //      with a radius range, radii from that range instead;
@@ -311,6 +311,51 @@ class Engine {
 
 // ---- coarse trial circles -------------------------------------------------------------------------------------
 
+// Indices of the ground vertices that shape the profile: the Douglas-Peucker simplification of the ground to
+// within `tolerance` (m), ends excluded. Collinear vertices are never kept, so splitting a segment changes nothing.
+std::vector<std::size_t> shape_vertices(const std::vector<Point>& ground, double tolerance) {
+  std::vector<std::size_t> kept;
+  std::vector<std::pair<std::size_t, std::size_t>> stack{{0, ground.size() - 1}};
+  while (!stack.empty()) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    if (b <= a + 1) continue;
+    const double ux = ground[b].x - ground[a].x;
+    const double uy = ground[b].y - ground[a].y;
+    const double length = std::hypot(ux, uy);
+    double farthest = -1.0;
+    std::size_t at = a;
+    for (std::size_t i = a + 1; i < b; ++i) {
+      const double d = std::fabs((ground[i].x - ground[a].x) * uy - (ground[i].y - ground[a].y) * ux) / length;
+      if (d > farthest) {
+        farthest = d;
+        at = i;
+      }
+    }
+    if (!(farthest > tolerance)) continue;
+    kept.push_back(at);
+    stack.push_back({a, at});
+    stack.push_back({at, b});
+  }
+  return kept;
+}
+
+// The ground vertices offered as entry and exit points besides the even grid: those that shape the profile (its
+// crest, toe and breaks of slope), at most `count` of them. The tolerance starts at 0.1 % of the relief and is
+// doubled until few enough remain, so a hand-drawn section keeps all its corners and a surveyed profile of tens
+// of thousands of vertices offers its main breaks only (the refinement then moves freely between vertices).
+std::vector<double> shape_vertex_xs(const detail::PreparedSection& ps, std::size_t count) {
+  const double relief = ps.ground_y_max - ps.ground_y_min;
+  std::vector<std::size_t> kept;
+  for (double tolerance = 1e-3 * relief;; tolerance *= 2.0) {
+    kept = shape_vertices(ps.ground, tolerance);
+    if (kept.size() <= count || !(tolerance < relief)) break;
+  }
+  std::vector<double> xs{ps.ground.front().x, ps.ground.back().x};
+  for (std::size_t i : kept) xs.push_back(ps.ground[i].x);
+  return xs;
+}
+
 std::vector<double> ground_samples(const detail::PreparedSection& ps, std::optional<Range> range, int count) {
   Range r{ps.x_min, ps.x_max};
   if (range) {
@@ -320,8 +365,8 @@ std::vector<double> ground_samples(const detail::PreparedSection& ps, std::optio
     if (r.min > r.max) return {};
   }
   std::vector<double> xs = linspace(r.min, r.max, count);
-  for (const Point& p : ps.ground)
-    if (p.x >= r.min && p.x <= r.max) xs.push_back(p.x);
+  for (double x : shape_vertex_xs(ps, static_cast<std::size_t>(std::max(count, 1))))
+    if (x >= r.min && x <= r.max) xs.push_back(x);
   std::sort(xs.begin(), xs.end());
   const double tol = 1e-6 * (ps.x_max - ps.x_min);
   xs.erase(std::unique(xs.begin(), xs.end(), [tol](double a, double b) { return b - a < tol; }), xs.end());
@@ -422,6 +467,112 @@ void nelder_mead(Refinement& r, const Circle& start, double step, double toleran
   gsl_vector_free(x);
 }
 
+// Candidate critical circles of one method, best first (FS, circle).
+using Candidates = std::vector<std::pair<double, Circle>>;
+
+void sort_candidates(Candidates& c) {
+  std::sort(c.begin(), c.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+}
+
+// Runs the two Nelder-Mead passes from `start` (FS `start_fs`) for method k; returns the best circle found.
+std::pair<double, Circle> refine_from(Engine& engine, std::size_t k, bool check_box, const Circle& start,
+                                      double start_fs, double chord) {
+  Refinement r{&engine, k, check_box, start_fs, start};
+  nelder_mead(r, start, 0.05 * chord, 1e-5 * chord);
+  nelder_mead(r, r.best_circle, 0.01 * chord, 1e-6 * chord);
+  return {r.best_fs, r.best_circle};
+}
+
+// The best coarse trial of method k and the results of refining up to three distinct good trials (entry or exit
+// more than 5 % of the section width apart). Empty when the method failed on every trial.
+Candidates refine_method(Engine& engine, std::size_t k, const std::vector<Trial>& trials,
+                         const std::vector<double>& fs, std::size_t n_methods, bool refine, bool check_box) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < trials.size(); ++i)
+    if (std::isfinite(fs[i * n_methods + k])) order.push_back(i);
+  if (order.empty()) return {};
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return fs[a * n_methods + k] < fs[b * n_methods + k]; });
+  Candidates candidates{{fs[order.front() * n_methods + k], trials[order.front()].circle}};
+  if (!refine) return candidates;
+  std::vector<std::size_t> starts;
+  const double separation = 0.05 * engine.width();
+  for (std::size_t i : order) {
+    bool distinct = true;
+    for (std::size_t s : starts) {
+      if (std::fabs(trials[i].entry.x - trials[s].entry.x) < separation &&
+          std::fabs(trials[i].exit.x - trials[s].exit.x) < separation)
+        distinct = false;
+    }
+    if (distinct) starts.push_back(i);
+    if (starts.size() == 3) break;
+  }
+  for (std::size_t s : starts) {
+    const Trial& trial = trials[s];
+    const double chord = std::hypot(trial.exit.x - trial.entry.x, trial.exit.y - trial.entry.y);
+    candidates.push_back(refine_from(engine, k, check_box, trial.circle, fs[s * n_methods + k], chord));
+  }
+  sort_candidates(candidates);
+  return candidates;
+}
+
+// For every method, the other methods' best circles: one that gives this method a lower FS than its own best
+// starts one more refinement.
+void cross_refine(Engine& engine, std::vector<Candidates>& found, bool check_box) {
+  std::vector<Circle> bests;
+  for (const Candidates& c : found)
+    if (!c.empty()) bests.push_back(c.front().second);
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    if (found[k].empty()) continue;
+    double best_other = found[k].front().first;
+    std::optional<Circle> start;
+    for (Circle circle : bests) {
+      if (engine.admit(circle, true, check_box) != Engine::Admit::ok) continue;
+      const double value = engine.evaluate(k);
+      if (std::isfinite(value) && value < best_other * (1.0 - 1e-9)) {
+        best_other = value;
+        start = circle;
+      }
+    }
+    if (!start) continue;
+    const detail::SliceTable& t = engine.table();
+    engine.admit(*start, true, check_box);
+    const double chord = std::hypot(t.exit.x - t.entry.x, t.exit.y - t.entry.y);
+    found[k].push_back(refine_from(engine, k, check_box, *start, best_other, chord));
+    sort_candidates(found[k]);
+  }
+}
+
+// The critical surface with its slices and forces, through the public path (same code as the trials; a
+// candidate that does not reproduce there, which only happens on ill-conditioned slivers, gives way to the next).
+CriticalSurface critical_surface(const Section& section, Method method, const Candidates& candidates,
+                                 const SearchOptions& options, const std::string& failure_summary) {
+  CriticalSurface critical;
+  critical.method = method;
+  if (candidates.empty()) {
+    critical.result.error = std::string(method_key(method)) + ": the method failed on every admissible trial circle (" +
+                            failure_summary + ")";
+    return critical;
+  }
+  for (const auto& [value, circle] : candidates) {
+    std::string reason;
+    std::optional<SlipMass> mass = slice_circle(section, circle, options.slicing, &reason);
+    if (!mass) {
+      if (critical.result.error.empty()) critical.result.error = std::string(method_key(method)) + ": " + reason;
+      continue;
+    }
+    FsResult fs_result = factor_of_safety(*mass, method, true);
+    if (!fs_result.factor_of_safety) {
+      if (critical.result.error.empty()) critical.result.error = fs_result.error;
+      continue;
+    }
+    critical.result = std::move(fs_result);
+    critical.mass = std::move(mass);
+    break;
+  }
+  return critical;
+}
+
 }  // namespace
 
 SearchResult search_critical(const Section& section, const std::vector<Method>& methods,
@@ -484,74 +635,15 @@ SearchResult search_critical(const Section& section, const std::vector<Method>& 
     return finish();
   }
 
-  // 2. Refinement, per method.
+  // 2. Refinement, per method; then each method tries the other methods' critical circles, and refines from one
+  //    that beats its own (on rough surveyed ground a refinement can stop in a local minimum another one avoided).
   const bool check_box = limits.centre_grid.has_value();
-  for (std::size_t k = 0; k < n_methods; ++k) {
-    CriticalSurface critical;
-    critical.method = methods[k];
-    std::vector<std::size_t> order;
-    for (std::size_t i = 0; i < trials.size(); ++i)
-      if (std::isfinite(fs[i * n_methods + k])) order.push_back(i);
-    if (order.empty()) {
-      critical.result.error = std::string(method_key(methods[k])) +
-                              ": the method failed on every admissible trial circle (" +
-                              engine.failure_summary(k) + ")";
-      result.methods.push_back(std::move(critical));
-      continue;
-    }
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return fs[a * n_methods + k] < fs[b * n_methods + k]; });
-    // candidate critical circles: the best coarse trial and the result of every refinement
-    std::vector<std::pair<double, Circle>> candidates_found{{fs[order.front() * n_methods + k],
-                                                             trials[order.front()].circle}};
-    if (options.refine) {
-      // up to three distinct starting circles (entry or exit more than 5 % of the section width apart)
-      std::vector<std::size_t> starts;
-      const double separation = 0.05 * engine.width();
-      for (std::size_t i : order) {
-        bool distinct = true;
-        for (std::size_t s : starts) {
-          if (std::fabs(trials[i].entry.x - trials[s].entry.x) < separation &&
-              std::fabs(trials[i].exit.x - trials[s].exit.x) < separation)
-            distinct = false;
-        }
-        if (distinct) starts.push_back(i);
-        if (starts.size() == 3) break;
-      }
-      for (std::size_t s : starts) {
-        Refinement r{&engine, k, check_box, std::numeric_limits<double>::infinity(), trials[s].circle};
-        const Trial& trial = trials[s];
-        const double chord = std::hypot(trial.exit.x - trial.entry.x, trial.exit.y - trial.entry.y);
-        r.best_circle = trial.circle;
-        r.best_fs = fs[s * n_methods + k];
-        nelder_mead(r, trial.circle, 0.05 * chord, 1e-5 * chord);
-        nelder_mead(r, r.best_circle, 0.01 * chord, 1e-6 * chord);
-        candidates_found.emplace_back(r.best_fs, r.best_circle);
-      }
-    }
-    std::sort(candidates_found.begin(), candidates_found.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    // The critical surface with its slices and forces, through the public path (same code as the trials; a
-    // candidate that does not reproduce there, which only happens on ill-conditioned slivers, gives way to the
-    // next one).
-    for (const auto& [value, circle] : candidates_found) {
-      std::string reason;
-      std::optional<SlipMass> mass = slice_circle(section, circle, options.slicing, &reason);
-      if (!mass) {
-        if (critical.result.error.empty()) critical.result.error = std::string(method_key(methods[k])) + ": " + reason;
-        continue;
-      }
-      FsResult fs_result = factor_of_safety(*mass, methods[k], true);
-      if (!fs_result.factor_of_safety) {
-        if (critical.result.error.empty()) critical.result.error = fs_result.error;
-        continue;
-      }
-      critical.result = std::move(fs_result);
-      critical.mass = std::move(mass);
-      break;
-    }
-    result.methods.push_back(std::move(critical));
-  }
+  std::vector<Candidates> found(n_methods);
+  for (std::size_t k = 0; k < n_methods; ++k)
+    found[k] = refine_method(engine, k, trials, fs, n_methods, options.refine, check_box);
+  if (options.refine) cross_refine(engine, found, check_box);
+  for (std::size_t k = 0; k < n_methods; ++k)
+    result.methods.push_back(critical_surface(section, methods[k], found[k], options, engine.failure_summary(k)));
   result.trial_surfaces = engine.evaluations();
   return finish();
 }

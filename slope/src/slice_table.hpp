@@ -18,7 +18,7 @@ enum class Rejection {
   misses_ground,         // the lower arc does not cut into the ground
   not_closed_lower_arc,  // the ground stays above the circle's lowest half: no closed mass on the lower arc
   beyond_section,        // the mass would extend past the left or right end of the section
-  several_masses,        // the circle cuts the ground surface more than twice
+  several_masses,        // the circle leaves and re-enters the ground by more than 1 % of the relief
   below_base,            // the arc passes below the rigid base bottom_y
   too_small,             // the mass is vanishingly small
   radius_too_large,      // radius above 1e4 section extents: a plane to within floating-point geometry
@@ -90,9 +90,10 @@ class Slicer {
 
  private:
   void fill_slices(const Circle& circle, int dir, SliceTable& table);
+  bool shallow_gap(const Circle& circle, double x0, double x1) const;
 
   PreparedSection prepared_;
-  std::vector<double> roots_, breaks_, bounds_, arc_y_, ground_y_, line_y_;
+  std::vector<double> roots_, gaps_, breaks_, bounds_, arc_y_, ground_y_, line_y_;
   std::vector<char> root_is_contact_;
 };
 

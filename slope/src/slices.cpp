@@ -28,7 +28,8 @@ const char* rejection_text(Rejection rejection) {
     case Rejection::not_closed_lower_arc:
       return "the ground surface stays above the circle's lower half (no closed mass on the lower arc)";
     case Rejection::beyond_section: return "the slip mass would extend beyond the end of the section";
-    case Rejection::several_masses: return "the circle cuts the ground surface more than twice";
+    case Rejection::several_masses:
+      return "the circle leaves the ground and re-enters it (by more than 1 % of the relief in between)";
     case Rejection::below_base: return "the circle passes below the rigid base (bottom_y)";
     case Rejection::too_small: return "the slip mass is vanishingly small";
     case Rejection::radius_too_large:
@@ -148,6 +149,22 @@ PreparedSection::PreparedSection(const Section& section) {
 
 double PreparedSection::ground_at(double x) const { return lines.front().y(std::clamp(x, x_min, x_max)); }
 
+// Whether the lower arc, above the ground between two crossings x0 < x1, stays within 1 % of the ground's relief
+// of it: the arc then merely grazes the roughness of a surveyed surface, and the masses on either side are one.
+// The arc is convex and the ground straight between vertices, so the largest gap is at a ground vertex.
+bool Slicer::shallow_gap(const Circle& circle, double x0, double x1) const {
+  const PreparedSection& ps = prepared_;
+  const double limit = 0.01 * (ps.ground_y_max - ps.ground_y_min);
+  const double r2 = circle.radius * circle.radius;
+  const auto& points = ps.ground_line().points();
+  auto it = std::upper_bound(points.begin(), points.end(), x0, [](double v, const Point& p) { return v < p.x; });
+  for (; it != points.end() && it->x < x1; ++it) {
+    const double d = it->x - circle.xc;
+    if (circle.yc - std::sqrt(std::max(0.0, r2 - d * d)) - it->y > limit) return false;
+  }
+  return true;
+}
+
 Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& table) {
   const PreparedSection& ps = prepared_;
   const double xc = circle.xc;
@@ -194,6 +211,7 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
   const double tol_x = 1e-10 * (ps.x_max - ps.x_min + 1.0) + 1e-14 * (R + std::fabs(xc));
   const double tol_base = 1e-9 * (1.0 + R + std::fabs(ps.bottom_y));
   double left = 0.0, right = 0.0;
+  gaps_.clear();
   bool open = false, found = false, left_is_root = false;
   bool left_is_contact = false, right_is_contact = false;
   int masses = 0;
@@ -208,7 +226,13 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
       const double mid = 0.5 * (a + b);
       const double g = ps.ground_at(mid);
       const bool positive = g > arc(mid) && g > ps.bottom_y + tol_base;
-      if (positive && !open) {  // a new positive stretch (adjacent positive stretches merge: tangent touch)
+      if (positive && !open && found && !right_is_contact && !a_is_contact && shallow_gap(circle, right, a)) {
+        // the arc rose above the ground only by a survey's roughness: one mass, the gap's slices empty
+        open = true;
+        found = false;
+        gaps_.push_back(right);
+        gaps_.push_back(a);
+      } else if (positive && !open) {  // a new positive stretch (adjacent positive stretches merge: tangent touch)
         open = true;
         left = a;
         left_is_root = a_is_root;
@@ -256,6 +280,7 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
   for (auto it = std::upper_bound(ps.fixed_breaks.begin(), ps.fixed_breaks.end(), xl);
        it != ps.fixed_breaks.end() && *it < xr; ++it)
     breaks_.push_back(*it);
+  breaks_.insert(breaks_.end(), gaps_.begin(), gaps_.end());
   for (std::size_t k = 1; k < ps.lines.size(); ++k) ps.lines[k].lower_arc_crossings(circle, xl, xr, breaks_);
   if (ps.has_water) ps.piezometric_line.lower_arc_crossings(circle, xl, xr, breaks_);
   std::sort(breaks_.begin(), breaks_.end());
@@ -360,6 +385,9 @@ void Slicer::fill_slices(const Circle& circle, int dir, SliceTable& table) {
     weight *= b;
     table.weight[i] = weight;
     table.material[i] = ps.line_material[base_line];
+    // A slice over a gap where the arc grazes above rough ground (shallow_gap) has no weight; its base keeps the
+    // strength of the soil beneath, as if the roughness were smoothed: with zero strength there the interslice
+    // force methods meet tension on these weightless slices and refuse the surface.
     table.cohesion[i] = ps.line_cohesion[base_line];
     table.tan_phi[i] = ps.line_tan_phi[base_line];
 

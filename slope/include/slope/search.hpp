@@ -37,7 +37,8 @@ struct SearchOptions {
   // ground surface relief (keeps cohesionless slopes from converging to vanishing surface ravelling).
   double minimum_depth = -1.0;
   // Points along the whole ground line at which the automatic search lets circles enter and exit (plus every
-  // vertex); a user entry/exit range gets 17/41 of them. More points: a finer and slower coarse search.
+  // vertex that shapes the ground, at most as many); a user entry/exit range gets 17/41 of them. More points: a
+  // finer and slower coarse search.
   int entry_exit_samples = 41;
 };
 
