@@ -19,11 +19,6 @@ nlohmann::json point(const slope::Point& p) { return nlohmann::json::array({p.x,
 // A finite number, or null (JSON has no NaN or infinity; never write a made-up number).
 nlohmann::json number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
-bool has_lambda(slope::Method method) {
-  return method == slope::Method::spencer || method == slope::Method::morgenstern_price ||
-         method == slope::Method::morgenstern_price_constant;
-}
-
 nlohmann::json slice_report(const slope::Section& section, const slope::Slice& slice,
                             const slope::SliceForces* forces) {
   nlohmann::json s;
@@ -77,7 +72,7 @@ nlohmann::json method_report(const slope::Section& section, const slope::Critica
     return m;
   }
   m["factor_of_safety"] = *result.factor_of_safety;
-  if (has_lambda(critical.method)) m["lambda"] = result.lambda;
+  if (slope::has_interslice_lambda(critical.method)) m["lambda"] = result.lambda;
   m["iterations"] = result.iterations;
 
   const slope::SlipMass& mass = *critical.mass;

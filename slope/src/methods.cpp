@@ -1,104 +1,34 @@
-// Method keys, dispatch and the public factor_of_safety().
+// Method keys and the public factor_of_safety(), through the method table (method_table.hpp).
 #include "slope/methods.hpp"
 
 #include <array>
 #include <cmath>
 #include <sstream>
 
-#include "method_kernels.hpp"
+#include "method_table.hpp"
 
 namespace slope {
 
-namespace {
-constexpr std::array<std::pair<Method, std::string_view>, 7> method_keys{{
-    {Method::ordinary, "ordinary"},
-    {Method::bishop, "bishop"},
-    {Method::janbu, "janbu"},
-    {Method::janbu_corrected, "janbu_corrected"},
-    {Method::spencer, "spencer"},
-    {Method::morgenstern_price, "morgenstern_price"},
-    {Method::morgenstern_price_constant, "morgenstern_price_constant"},
-}};
-}  // namespace
-
-std::string_view method_key(Method method) {
-  for (const auto& [m, key] : method_keys)
-    if (m == method) return key;
-  return "unknown";
-}
+std::string_view method_key(Method method) { return detail::method_row(method).key; }
 
 std::optional<Method> method_from_key(std::string_view key) {
-  for (const auto& [m, k] : method_keys)
-    if (k == key) return m;
+  for (const detail::MethodRow& row : detail::method_table())
+    if (row.key == key) return row.method;
   return std::nullopt;
 }
 
 const std::vector<Method>& all_methods() {
-  static const std::vector<Method> methods{Method::ordinary, Method::bishop, Method::janbu, Method::janbu_corrected,
-                                           Method::spencer, Method::morgenstern_price,
-                                           Method::morgenstern_price_constant};
+  static const std::vector<Method> methods = [] {
+    std::vector<Method> all;
+    for (const detail::MethodRow& row : detail::method_table()) all.push_back(row.method);
+    return all;
+  }();
   return methods;
 }
 
+bool has_interslice_lambda(Method method) { return detail::method_row(method).has_lambda; }
+
 namespace detail {
-
-void general_forces(const SliceTable& t, MethodWorkspace& ws, bool half_sine, double F, double lambda,
-                    std::vector<SliceForces>& forces);
-
-Outcome evaluate_method(const SliceTable& table, Method method, MethodWorkspace& ws, double guess) {
-  switch (method) {
-    case Method::ordinary: return ordinary_method(table);
-    case Method::bishop: return bishop_method(table, ws);
-    case Method::janbu: return janbu_method(table, ws);
-    case Method::janbu_corrected: {
-      Outcome out = janbu_method(table, ws);
-      if (out.ok()) {
-        out.value = out.factor_of_safety;  // the uncorrected value, for the slice forces
-        out.factor_of_safety *= janbu_correction_factor(table);
-        // f0 = 1 + b1 (d/L - 1.4 (d/L)^2) turns negative for d/L above about 1.6 (far outside Janbu's chart):
-        // never report such a product as a factor of safety.
-        if (!(out.factor_of_safety > 0.0) || !std::isfinite(out.factor_of_safety)) out.failure = Failure::not_positive;
-      }
-      return out;
-    }
-    case Method::spencer:
-    case Method::morgenstern_price_constant: return general_limit_equilibrium(table, ws, false, guess);
-    case Method::morgenstern_price: return general_limit_equilibrium(table, ws, true, guess);
-  }
-  return Outcome{0.0, 0.0, 0, Failure::not_converged};
-}
-
-void slice_forces(const SliceTable& t, Method method, const Outcome& outcome, MethodWorkspace& ws,
-                  std::vector<SliceForces>& forces) {
-  const double F = outcome.factor_of_safety;
-  switch (method) {
-    case Method::ordinary:
-    case Method::bishop: {
-      forces.assign(static_cast<std::size_t>(t.count), SliceForces{});
-      for (int i = 0; i < t.count; ++i) {
-        const double c = t.cos_a[i];
-        const double s = t.sin_a[i];
-        double effective_normal;
-        if (method == Method::ordinary) {
-          effective_normal = t.vertical[i] * c - t.horizontal[i] * s - t.pore_force[i];
-        } else {
-          const double m = c + s * t.tan_phi[i] / F;
-          effective_normal = (t.vertical[i] - t.pore_force[i] * c - t.cohesion_force[i] * s / F) / m;
-        }
-        SliceForces& f = forces[static_cast<std::size_t>(i)];
-        f.normal = effective_normal + t.pore_force[i];
-        f.shear = (t.cohesion_force[i] + effective_normal * t.tan_phi[i]) / F;
-        f.pore_force = t.pore_force[i];
-      }
-      return;
-    }
-    case Method::janbu: general_forces(t, ws, false, F, 0.0, forces); return;
-    case Method::janbu_corrected: general_forces(t, ws, false, outcome.value, 0.0, forces); return;
-    case Method::spencer:
-    case Method::morgenstern_price_constant: general_forces(t, ws, false, F, outcome.lambda, forces); return;
-    case Method::morgenstern_price: general_forces(t, ws, true, F, outcome.lambda, forces); return;
-  }
-}
 
 std::string describe_failure(const Outcome& outcome, const SliceTable& table) {
   std::ostringstream out;

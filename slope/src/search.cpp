@@ -24,7 +24,7 @@
 #include <limits>
 #include <sstream>
 
-#include "method_kernels.hpp"
+#include "method_table.hpp"
 #include "slice_table.hpp"
 
 namespace slope {
@@ -209,59 +209,20 @@ class Engine {
     return nan;
   }
 
-  // Every method on the current table, sharing work where methods coincide. fs[k] is NaN on failure.
+  // Every method on the current table; fs[k] is NaN on failure. Each set of equations is solved once (the method
+  // table's solution_of), and a method starts from another's factor of safety on the same circle (warm_start).
   void evaluate_all(double* fs) {
-    double bishop = nan, janbu = nan, spencer = nan, half_sine = nan;
-    bool have_bishop = false, have_janbu = false, have_spencer = false, have_half_sine = false;
-    detail::Outcome janbu_outcome;
-    auto bishop_value = [&](std::size_t k) {
-      if (!have_bishop) {
-        bishop = evaluate(k);
-        have_bishop = true;
-      }
-      return bishop;
-    };
+    solved_.fill(false);
     for (std::size_t k = 0; k < methods_.size(); ++k) {
-      switch (methods_[k]) {
-        case Method::ordinary: fs[k] = evaluate(k); break;
-        case Method::bishop: fs[k] = bishop_value(k); break;
-        case Method::janbu:
-        case Method::janbu_corrected: {
-          if (!have_janbu) {
-            ++evaluations_;
-            janbu_outcome = detail::janbu_method(table_, ws_);
-            janbu = janbu_outcome.ok() ? janbu_outcome.factor_of_safety : nan;
-            have_janbu = true;
-          } else {
-            ++evaluations_;
-          }
-          if (janbu_outcome.ok())
-            fs[k] = methods_[k] == Method::janbu ? janbu : janbu * detail::janbu_correction_factor(table_);
-          else {
-            record_failure(k, janbu_outcome);
-            fs[k] = nan;
-          }
-          break;
-        }
-        case Method::spencer:
-        case Method::morgenstern_price_constant:
-          if (!have_spencer) {
-            spencer = evaluate(k, have_bishop ? bishop : 0.0);
-            have_spencer = true;
-          } else {
-            ++evaluations_;
-          }
-          fs[k] = spencer;
-          break;
-        case Method::morgenstern_price:
-          if (!have_half_sine) {
-            half_sine = evaluate(k, have_spencer && std::isfinite(spencer) ? spencer : (have_bishop ? bishop : 0.0));
-            have_half_sine = true;
-          } else {
-            ++evaluations_;
-          }
-          fs[k] = half_sine;
-          break;
+      const detail::MethodRow& row = detail::method_row(methods_[k]);
+      ++evaluations_;
+      const detail::Outcome& solution = solution_of(row.solution_of);
+      const detail::Outcome o = row.from_solution ? row.from_solution(table_, solution) : solution;
+      if (o.ok()) {
+        fs[k] = o.factor_of_safety;
+      } else {
+        record_failure(k, o);
+        fs[k] = nan;
       }
     }
   }
@@ -291,6 +252,29 @@ class Engine {
   }
 
  private:
+  // The solution of a method's own equations on the current table, solved on first use per trial.
+  const detail::Outcome& solution_of(Method method) {
+    const std::size_t i = detail::method_index(method);
+    if (!solved_[i]) {
+      const detail::MethodRow& row = detail::method_table()[i];
+      solutions_[i] = row.solve(table_, ws_, warm_start(row));
+      solved_[i] = true;
+    }
+    return solutions_[i];
+  }
+
+  // The first of the row's warm-start methods already solved on this table with a finite factor of safety;
+  // 0 (the method's own start) when none is.
+  double warm_start(const detail::MethodRow& row) const {
+    for (const std::optional<Method>& m : row.warm_start) {
+      if (!m) continue;
+      const std::size_t i = detail::method_index(*m);
+      if (solved_[i] && solutions_[i].ok() && std::isfinite(solutions_[i].factor_of_safety))
+        return solutions_[i].factor_of_safety;
+    }
+    return 0.0;
+  }
+
   void record_failure(std::size_t method_index, const detail::Outcome& o) {
     const auto kind = static_cast<std::size_t>(o.failure);
     if (failures_[method_index][kind]++ == 0) failure_text_[method_index][kind] = detail::describe_failure(o, table_);
@@ -307,6 +291,8 @@ class Engine {
   long outside_limits_ = 0, too_shallow_ = 0;
   std::vector<std::array<long, failure_kinds>> failures_;
   std::vector<std::array<std::string, failure_kinds>> failure_text_;
+  std::array<detail::Outcome, detail::method_count> solutions_{};  // per method-table row, this trial's solutions
+  std::array<bool, detail::method_count> solved_{};
 };
 
 // ---- coarse trial circles -------------------------------------------------------------------------------------

@@ -23,6 +23,8 @@ enum class Method {
 std::string_view method_key(Method method);
 std::optional<Method> method_from_key(std::string_view key);
 const std::vector<Method>& all_methods();
+// Whether the method solves for an interslice-force inclination (Spencer tan(theta), Morgenstern-Price lambda).
+bool has_interslice_lambda(Method method);
 
 // Forces on one slice at the solution, per metre of slope width.
 struct SliceForces {
