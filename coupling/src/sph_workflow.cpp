@@ -193,6 +193,7 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   }
 
   const auto& p = model.particles;
+  const sph::ConstSoilArrays soil = model.soil();
   auto& snapshot = result.final_state;
   snapshot.spacing = model.settings.particle_spacing;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -201,9 +202,9 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
     snapshot.y.push_back(p.y[i]);
     snapshot.x0.push_back(p.x0[i]);
     snapshot.y0.push_back(p.y0[i]);
-    snapshot.plastic_strain.push_back(p.plastic_strain[i]);
-    snapshot.stress_xx.push_back(p.sxx[i]);
-    snapshot.stress_yy.push_back(p.syy[i]);
+    snapshot.plastic_strain.push_back(soil.plastic_strain[i]);
+    snapshot.stress_xx.push_back(soil.sxx[i]);
+    snapshot.stress_yy.push_back(soil.syy[i]);
   }
   // Largest displacement and accumulated plastic strain of any soil particle at the end (null if not finite).
   double max_displacement = 0.0, max_plastic_strain = 0.0;

@@ -38,7 +38,7 @@ Model make_column_collapse(const ColumnCollapseCase& c) {
 }
 
 DepositShape measure_deposit(const Model& model, double floor_y, double back_wall_x) {
-  const Particles& p = model.particles;
+  const ParticleSet& p = model.particles;
   const double dx = model.settings.particle_spacing;
   std::vector<double> xs, ys;
   for (std::size_t i = 0; i < p.size(); ++i)

@@ -64,12 +64,15 @@ struct Reader {
 
 void write_checkpoint(const std::string& path, const Model& model) {
   Writer w;
-  w.buf.reserve(model.particles.size() * (Particles::double_array_count * 8 + 16) + 4096);
+  ParticleSet& particles = const_cast<ParticleSet&>(model.particles);  // read only: for_each_* are not const
+  w.buf.reserve(model.particles.size() * (static_cast<std::size_t>(particles.double_array_count()) * 8 + 16) + 4096);
   w.buf.append(kMagic, 16);
   w.put<std::uint32_t>(checkpoint_version);
   w.put<std::uint32_t>(0x01020304u);
   w.put<std::uint64_t>(model.particles.size());
-  w.put<std::uint32_t>(Particles::double_array_count);
+  std::vector<std::string_view> names;
+  particles.for_each_checkpointed_double_array([&](std::string_view name, auto&) { names.push_back(name); });
+  w.put<std::uint32_t>(static_cast<std::uint32_t>(names.size()));
   w.put<std::uint32_t>(static_cast<std::uint32_t>(model.materials.size()));
   w.put<double>(model.settings.particle_spacing);
   w.put<double>(model.settings.h_over_dx);
@@ -83,7 +86,14 @@ void write_checkpoint(const std::string& path, const Model& model) {
   w.put_vec(s.frame_times);
   w.put<double>(s.initial_potential_energy);
   w.put<std::uint64_t>(s.energy_csv_bytes);
-  const_cast<Particles&>(model.particles).for_each_array([&](auto& a) { w.put_vec(a); });
+  for (std::string_view name : names) {  // the array names, so that a reader can match its own registry
+    w.put<std::uint32_t>(static_cast<std::uint32_t>(name.size()));
+    w.buf.append(name.data(), name.size());
+  }
+  particles.for_each_checkpointed_double_array([&](std::string_view, std::vector<double>& a) { w.put_vec(a); });
+  w.put_vec(model.particles.id);
+  w.put_vec(model.particles.material);
+  w.put_vec(model.particles.kind);
   w.put<std::uint64_t>(fnv1a(w.buf.data(), w.buf.size()));
   write_file_atomically(path, w.buf);
 }
@@ -109,7 +119,9 @@ void read_checkpoint(const std::string& path, Model& model) {
   const auto nmat = r.get<std::uint32_t>();
   const auto dx = r.get<double>();
   const auto hdx = r.get<double>();
-  if (n != model.particles.size() || ndouble != Particles::double_array_count || nmat != model.materials.size() ||
+  std::vector<std::string_view> own_names;
+  model.particles.for_each_checkpointed_double_array([&](std::string_view name, auto&) { own_names.push_back(name); });
+  if (n != model.particles.size() || ndouble != own_names.size() || nmat != model.materials.size() ||
       dx != model.settings.particle_spacing || hdx != model.settings.h_over_dx)
     throw std::runtime_error("checkpoint " + path + " does not belong to this model (particles " + std::to_string(n) +
                              " vs " + std::to_string(model.particles.size()) + ", materials " + std::to_string(nmat) +
@@ -124,9 +136,23 @@ void read_checkpoint(const std::string& path, Model& model) {
   r.get_vec(s.frame_times, static_cast<std::size_t>(-1));
   s.initial_potential_energy = r.get<double>();
   s.energy_csv_bytes = r.get<std::uint64_t>();
-  Particles p;
-  p.for_each_array([&](auto& a) { r.get_vec(a, n); });
-  model.particles = std::move(p);
+  for (std::string_view own : own_names) {
+    const auto length = r.get<std::uint32_t>();
+    r.need(length);
+    const std::string_view stored(buf.data() + r.pos, length);
+    r.pos += length;
+    if (stored != own)
+      throw std::runtime_error("checkpoint " + path + " holds the particle array '" + std::string(stored) +
+                               "' where this model has '" + std::string(own) + "' (written by another version?)");
+  }
+  ParticleSet& p = model.particles;
+  p.for_each_checkpointed_double_array([&](std::string_view, std::vector<double>& a) { r.get_vec(a, n); });
+  r.get_vec(p.id, n);
+  r.get_vec(p.material, n);
+  r.get_vec(p.kind, n);
+  // arrays a checkpoint does not keep (step workspace) are recomputed: size them, zero
+  for (FieldId f = 0; f < p.field_count(); ++f)
+    if (!p.spec(f).checkpoint) p.field(f).assign(n, 0.0);
   model.state = std::move(s);
 }
 

@@ -52,7 +52,7 @@ std::vector<Point> lattice_points_in_polygon(const std::vector<Point>& polygon, 
       x0, y0, x1, y1, dx, [&](double x, double y) { return point_in_polygon(polygon, x, y); }, anchor);
 }
 
-std::size_t add_soil(Particles& particles, const std::vector<Point>& points, double dx, std::uint16_t material,
+std::size_t add_soil(ParticleSet& particles, const std::vector<Point>& points, double dx, std::uint16_t material,
                      double density) {
   if (!(dx > 0) || !(density > 0)) throw std::invalid_argument("add_soil: dx and density must be > 0");
   particles.reserve(particles.size() + points.size());
@@ -62,7 +62,7 @@ std::size_t add_soil(Particles& particles, const std::vector<Point>& points, dou
 
 int wall_layers_for(double dx, double h) { return static_cast<int>(std::ceil(2.0 * h / dx - 1e-9)); }
 
-std::size_t add_box_walls(Particles& particles, const BoxWalls& box, double dx, double h, std::uint16_t material,
+std::size_t add_box_walls(ParticleSet& particles, const BoxWalls& box, double dx, double h, std::uint16_t material,
                           double density) {
   if (!(dx > 0) || !(h > 0) || !(density > 0)) throw std::invalid_argument("add_box_walls: dx, h, density must be > 0");
   if (!(box.x_max > box.x_min) || !(box.height > 0)) throw std::invalid_argument("add_box_walls: empty box");
@@ -77,8 +77,13 @@ std::size_t add_box_walls(Particles& particles, const BoxWalls& box, double dx, 
   std::size_t count = 0;
   const auto nx = static_cast<long long>(std::llround((box.x_max - box.x_min) / dx));
   const auto ny = static_cast<long long>(std::llround(box.height / dx));
+  // Inward unit normals: a field of the wall particles (the same spec as the soil model's registration).
+  const FieldId normal_x = particles.add_field({"wall_normal_x", true, false});
+  const FieldId normal_y = particles.add_field({"wall_normal_y", true, false});
   auto put = [&](double x, double y, double nxv, double nyv) {
-    particles.add(x, y, m, density, material, ParticleKind::wall, nxv, nyv);
+    const std::size_t i = particles.add(x, y, m, density, material, ParticleKind::wall);
+    particles.field(normal_x)[i] = nxv;
+    particles.field(normal_y)[i] = nyv;
     ++count;
   };
   if (box.bottom) {

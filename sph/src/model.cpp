@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sph/neighbour_search.hpp"
+#include "sph/soil_step.hpp"
 
 namespace sph {
 
@@ -50,7 +51,7 @@ void Model::validate() const {
   const auto& p = particles;
   const std::size_t n = p.size();
   bool sizes_ok = true;
-  const_cast<Particles&>(p).for_each_array([&](auto& a) { sizes_ok = sizes_ok && a.size() == n; });
+  const_cast<ParticleSet&>(p).for_each_array([&](auto& a) { sizes_ok = sizes_ok && a.size() == n; });
   require(sizes_ok, "model: particle arrays have inconsistent sizes");
   require(p.count(ParticleKind::soil) > 0, "model: no soil particles");
   for (std::size_t i = 0; i < n; ++i) {
@@ -92,9 +93,15 @@ double time_step_estimate(const Model& model) {
 }
 
 std::size_t estimate_memory_bytes(std::size_t n) {
-  const std::size_t per_particle_state = Particles::double_array_count * sizeof(double) + 4 + 2 + 1;
-  const std::size_t state = 2 * n * per_particle_state;                    // particles + reorder back buffer
-  const std::size_t workspace = n * (2 * 7 + 11) * sizeof(double)           // half-step values (+ back), scratch
+  // The arrays a soil model carries: the particle set with the soil's state block, and the stepper's half-step
+  // values (SoilStep registers them in the set too); both are reordered through back buffers.
+  Model prototype;
+  const auto state_doubles = static_cast<std::size_t>(prototype.particles.double_array_count());
+  SoilStep::register_workspace(prototype.particles);
+  const auto workspace_doubles = static_cast<std::size_t>(prototype.particles.double_array_count()) - state_doubles;
+  const std::size_t per_particle_state = state_doubles * sizeof(double) + 4 + 2 + 1;
+  const std::size_t state = 2 * n * per_particle_state;                    // particles + reorder back buffers
+  const std::size_t workspace = n * (2 * workspace_doubles + 11) * sizeof(double)  // half-step values (+ back), scratch
                                 + n * 2 * sizeof(std::uint32_t);            // index lists, moved list
   const std::size_t output = n * (per_particle_state + 200);               // checkpoint buffer, VTU buffer
   return state + workspace + CellList::estimate_bytes(n) + output + (std::size_t{1} << 20);

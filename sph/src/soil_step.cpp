@@ -1,5 +1,7 @@
 #include "sph/soil_step.hpp"
 
+#include "soil/terms.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,6 +12,7 @@
 namespace sph {
 
 namespace {
+using namespace soil_terms;
 constexpr std::size_t kBlock = 1024;  // fixed block size: reductions are independent of the thread count
 
 using Index = std::int64_t;
@@ -19,30 +22,42 @@ struct SoilStep::Impl {
   CellList cells;
   // index lists (sorted positions), rebuilt after every sort
   std::vector<std::uint32_t> soil, walls;
-  // half-step values (reordered with the particles)
-  std::vector<double> vxh, vyh, rhoh, sxxh, syyh, szzh, sxyh;
+  // half-step values: registered in the particle set (not checkpointed), so the sort reorders them
+  FieldId vxh, vyh, rhoh, sxxh, syyh, szzh, sxyh;
   // per-evaluation scratch (recomputed after every sort)
   std::vector<double> pxx, pyy, pxy, volume, sound, is_soil;  // sigma/rho^2, m/rho, c, 0/1
   std::vector<double> rxx, ryy, rxy;                           // artificial stress R/rho^2 terms
   std::vector<double> xsph_dx, xsph_dy;                        // XSPH velocity corrections
-  // reorder back buffers (same layout as the particles and the carried arrays)
-  Particles back;
-  std::vector<double> back_carried[7];
+  // reorder back buffers, one per double array of the particle set, and for the integer arrays
+  std::vector<std::vector<double>> back;
+  std::vector<std::uint32_t> back_id;
+  std::vector<std::uint16_t> back_material;
+  std::vector<std::uint8_t> back_kind;
+  std::vector<std::vector<double>*> front;  // the set's double arrays, in registry order (rebuilt per sort)
+  std::vector<double*> src, dst;
   std::vector<std::uint32_t> moved;  // sorted positions whose particle changes in this sort
   std::vector<double> block_a, block_b, block_c;
   void (*eval)(SoilStep&, Model&, Impl&) = nullptr;
   double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
   double gravity_x = 0.0, gravity_y = 0.0;  // gravity of the current evaluation (ramped: at its time), m/s^2
-
-  template <class F>
-  void for_each_carried_array(F&& f) {
-    f(vxh); f(vyh); f(rhoh); f(sxxh); f(syyh); f(szzh); f(sxyh);
-  }
 };
 
 namespace {
 
-void index_kinds(const Particles& p, SoilStep::Impl& w) {
+// Raw pointers to the half-step values (registered in the particle set); valid until the next sort.
+struct HalfStep {
+  double *vxh, *vyh, *rhoh, *sxxh, *syyh, *szzh, *sxyh;
+  HalfStep(ParticleSet& p, const SoilStep::Impl& w)
+      : vxh(p.field(w.vxh).data()),
+        vyh(p.field(w.vyh).data()),
+        rhoh(p.field(w.rhoh).data()),
+        sxxh(p.field(w.sxxh).data()),
+        syyh(p.field(w.syyh).data()),
+        szzh(p.field(w.szzh).data()),
+        sxyh(p.field(w.sxyh).data()) {}
+};
+
+void index_kinds(const ParticleSet& p, SoilStep::Impl& w) {
   w.soil.clear();
   w.walls.clear();
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -53,27 +68,26 @@ void index_kinds(const Particles& p, SoilStep::Impl& w) {
 }
 
 void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
-  Particles& p = model.particles;
+  ParticleSet& p = model.particles;
   const std::size_t n = p.size();
   w.cells.build(p.x.data(), p.y.data(), n, cell_size);
   const std::uint32_t* order = w.cells.order().data();
-  // Reorder every per-particle array (state and carried half-step values) by the sort permutation.
-  constexpr int kCarried = 7;
-  constexpr int kDoubles = Particles::double_array_count + kCarried;
-  std::vector<double>* front[kDoubles];
-  std::vector<double>* back[kDoubles];
-  int f = 0;
-  p.for_each_double_array([&](std::vector<double>& a) { front[f++] = &a; });
-  w.for_each_carried_array([&](std::vector<double>& a) { front[f++] = &a; });
-  f = 0;
-  w.back.for_each_double_array([&](std::vector<double>& a) { back[f++] = &a; });
-  for (auto& a : w.back_carried) back[f++] = &a;
-  double* src[kDoubles];
-  double* dst[kDoubles];
+  // Reorder every per-particle array of the set (core, the soil's state block, the half-step values) by the sort
+  // permutation.
+  w.front.clear();
+  p.for_each_double_array([&](std::vector<double>& a) { w.front.push_back(&a); });
+  const int kDoubles = static_cast<int>(w.front.size());
+  w.back.resize(w.front.size());
+  w.src.resize(w.front.size());
+  w.dst.resize(w.front.size());
   for (int k = 0; k < kDoubles; ++k) {
-    src[k] = front[k]->data();
-    dst[k] = back[k]->data();
+    w.back[k].resize(n);
+    w.src[k] = w.front[k]->data();
+    w.dst[k] = w.back[k].data();
   }
+  double* const* src = w.src.data();
+  double* const* dst = w.dst.data();
+  std::vector<double>* const* front = w.front.data();
   const Index nn = static_cast<Index>(n);
   // Only the entries whose position changes need moving: the stable sort of a state sorted at the previous step
   // is mostly the identity, and the set of moved indices is closed under the permutation.
@@ -96,18 +110,18 @@ void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
         const auto j = static_cast<std::size_t>(jj);
         const std::uint32_t o = order[moved[j]];
         for (int a = 0; a < kDoubles; ++a) dst[a][j] = src[a][o];
-        w.back.id[j] = p.id[o];
-        w.back.material[j] = p.material[o];
-        w.back.kind[j] = p.kind[o];
+        w.back_id[j] = p.id[o];
+        w.back_material[j] = p.material[o];
+        w.back_kind[j] = p.kind[o];
       }
 #pragma omp for schedule(static)
       for (Index jj = 0; jj < nm; ++jj) {
         const auto j = static_cast<std::size_t>(jj);
         const std::uint32_t k = moved[j];
         for (int a = 0; a < kDoubles; ++a) src[a][k] = dst[a][j];
-        p.id[k] = w.back.id[j];
-        p.material[k] = w.back.material[j];
-        p.kind[k] = w.back.kind[j];
+        p.id[k] = w.back_id[j];
+        p.material[k] = w.back_material[j];
+        p.kind[k] = w.back_kind[j];
       }
     }
     if (kinds_change) index_kinds(p, w);
@@ -117,9 +131,9 @@ void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
   const std::uint32_t* src_id = p.id.data();
   const std::uint16_t* src_mat = p.material.data();
   const std::uint8_t* src_kind = p.kind.data();
-  std::uint32_t* dst_id = w.back.id.data();
-  std::uint16_t* dst_mat = w.back.material.data();
-  std::uint8_t* dst_kind = w.back.kind.data();
+  std::uint32_t* dst_id = w.back_id.data();
+  std::uint16_t* dst_mat = w.back_material.data();
+  std::uint8_t* dst_kind = w.back_kind.data();
 #pragma omp parallel for schedule(static)
   for (Index kk = 0; kk < nn; ++kk) {
     const auto k = static_cast<std::size_t>(kk);
@@ -129,10 +143,10 @@ void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
     dst_mat[k] = src_mat[o];
     dst_kind[k] = src_kind[o];
   }
-  for (int k = 0; k < kDoubles; ++k) front[k]->swap(*back[k]);
-  p.id.swap(w.back.id);
-  p.material.swap(w.back.material);
-  p.kind.swap(w.back.kind);
+  for (int k = 0; k < kDoubles; ++k) front[k]->swap(w.back[static_cast<std::size_t>(k)]);
+  p.id.swap(w.back_id);
+  p.material.swap(w.back_material);
+  p.kind.swap(w.back_kind);
   index_kinds(p, w);
 }
 
@@ -140,7 +154,8 @@ void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
 // normal components, and a ghost velocity (no-slip: -v_avg; free-slip: v_avg mirrored in the wall normal).
 template <class Kernel>
 void wall_pass(Model& model, SoilStep::Impl& w, const Kernel& kernel) {
-  Particles& p = model.particles;
+  ParticleSet& p = model.particles;
+  const SoilArrays sa = model.soil();
   const double support2 = kernel.support() * kernel.support();
   const double gx = w.gravity_x, gy = w.gravity_y;  // the soil's current load (ramped gravity included)
   const bool no_slip = model.settings.wall_slip == WallSlip::no_slip;
@@ -159,10 +174,10 @@ void wall_pass(Model& model, SoilStep::Impl& w, const Kernel& kernel) {
       if (r2 >= support2 || is_soil[j] == 0.0) return;  // walls never read other walls (no data race)
       const double wgt = kernel.value(std::sqrt(r2));
       sw += wgt;
-      sxx += p.sxx[j] * wgt;
-      syy += p.syy[j] * wgt;
-      szz += p.szz[j] * wgt;
-      sxy += p.sxy[j] * wgt;
+      sxx += sa.sxx[j] * wgt;
+      syy += sa.syy[j] * wgt;
+      szz += sa.szz[j] * wgt;
+      sxy += sa.sxy[j] * wgt;
       hydro += p.rho[j] * (gx * dx + gy * dy) * wgt;  // rho_f g.(x_w - x_f)
       svx += p.vx[j] * wgt;
       svy += p.vy[j] * wgt;
@@ -173,32 +188,32 @@ void wall_pass(Model& model, SoilStep::Impl& w, const Kernel& kernel) {
       const double ax = svx * inv, ay = svy * inv;
       if (no_slip) {
         // shear traction continuous across the wall; ghost velocity opposite to the soil's (2 v_wall - v, v_wall = 0)
-        p.sxx[i] = axx;
-        p.syy[i] = ayy;
-        p.sxy[i] = axy;
+        sa.sxx[i] = axx;
+        sa.syy[i] = ayy;
+        sa.sxy[i] = axy;
         p.vx[i] = -ax;
         p.vy[i] = -ay;
       } else {
         // free slip: mirror stress and velocity in the wall, Q = I - 2 n n: sigma_w = Q sigma Q (the
         // normal-tangential shear changes sign, so the wall transmits no shear traction), v_w = Q v
-        const double nx = p.wall_nx[i], ny = p.wall_ny[i];
+        const double nx = sa.wall_nx[i], ny = sa.wall_ny[i];
         const double q11 = 1.0 - 2.0 * nx * nx, q12 = -2.0 * nx * ny, q22 = 1.0 - 2.0 * ny * ny;
         // (Q S Q) for symmetric S = [axx axy; axy ayy]
         const double t11 = q11 * axx + q12 * axy, t12 = q11 * axy + q12 * ayy;
         const double t21 = q12 * axx + q22 * axy, t22 = q12 * axy + q22 * ayy;
-        p.sxx[i] = t11 * q11 + t12 * q12;
-        p.sxy[i] = t11 * q12 + t12 * q22;
-        p.syy[i] = t21 * q12 + t22 * q22;
+        sa.sxx[i] = t11 * q11 + t12 * q12;
+        sa.sxy[i] = t11 * q12 + t12 * q22;
+        sa.syy[i] = t21 * q12 + t22 * q22;
         const double vn = ax * nx + ay * ny;
         p.vx[i] = ax - 2.0 * vn * nx;
         p.vy[i] = ay - 2.0 * vn * ny;
       }
       // Adami et al. (2012) hydrostatic correction of the normal stresses: sigma_w -= sum rho_f g.(x_w - x_f) W / sum W
-      p.sxx[i] -= hydro * inv;
-      p.syy[i] -= hydro * inv;
-      p.szz[i] = (szz - hydro) * inv;
+      sa.sxx[i] -= hydro * inv;
+      sa.syy[i] -= hydro * inv;
+      sa.szz[i] = (szz - hydro) * inv;
     } else {
-      p.sxx[i] = p.syy[i] = p.szz[i] = p.sxy[i] = 0.0;
+      sa.sxx[i] = sa.syy[i] = sa.szz[i] = sa.sxy[i] = 0.0;
       p.vx[i] = p.vy[i] = 0.0;
     }
   }
@@ -207,21 +222,22 @@ void wall_pass(Model& model, SoilStep::Impl& w, const Kernel& kernel) {
 // Per-particle quantities used by the pair loop (all particles, soil and wall).
 void prepare_pass(Model& model, SoilStep::Impl& w, const std::vector<MaterialConstants>& mc, bool artificial_stress,
                   double epsilon) {
-  Particles& p = model.particles;
+  ParticleSet& p = model.particles;
+  const SoilArrays sa = model.soil();
   const Index n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
     const double inv_rho = 1.0 / p.rho[i];
     const double inv_rho2 = inv_rho * inv_rho;
-    w.pxx[i] = p.sxx[i] * inv_rho2;
-    w.pyy[i] = p.syy[i] * inv_rho2;
-    w.pxy[i] = p.sxy[i] * inv_rho2;
+    w.pxx[i] = sa.sxx[i] * inv_rho2;
+    w.pyy[i] = sa.syy[i] * inv_rho2;
+    w.pxy[i] = sa.sxy[i] * inv_rho2;
     w.volume[i] = p.mass[i] * inv_rho;
     w.sound[i] = mc[p.material[i]].sound_speed;
     if (artificial_stress) {
       // Gray, Monaghan & Swift (2001): principal in-plane stresses; R' = -eps sigma'/rho^2 for tension.
-      const double a = p.sxx[i], b = p.syy[i], c = p.sxy[i];
+      const double a = sa.sxx[i], b = sa.syy[i], c = sa.sxy[i];
       const double mean = 0.5 * (a + b);
       const double rad = std::sqrt(0.25 * (a - b) * (a - b) + c * c);
       const double s1 = mean + rad, s2 = mean - rad;
@@ -239,12 +255,13 @@ void prepare_pass(Model& model, SoilStep::Impl& w, const std::vector<MaterialCon
 // Rates for every soil particle; pairs are gathered from the perspective of i (no write conflicts).
 template <class Kernel, bool kArtificialStress, bool kXsph>
 void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
-  Particles& p = model.particles;
+  ParticleSet& p = model.particles;
   const Settings& st = model.settings;
   const Kernel kernel(self.smoothing_length());
   sort_and_index(model, w, kernel.support());
   wall_pass(model, w, kernel);
   prepare_pass(model, w, self.material_constants(), kArtificialStress, st.artificial_stress.epsilon);
+  const SoilArrays sa = model.soil();  // after the sort: it may have swapped the arrays' buffers
 
   const double h = kernel.h();
   const double support2 = kernel.support() * kernel.support();
@@ -282,7 +299,8 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
     if constexpr (kArtificialStress) {
       rxxi = rxx[i]; ryyi = ryy[i]; rxyi = rxy[i];
     }
-    double drho = 0, axi = 0, ayi = 0, lxx = 0, lxy = 0, lyx = 0, lyy = 0, xsx = 0, xsy = 0;
+    double drho = 0, axi = 0, ayi = 0, xsx = 0, xsy = 0;
+    VelocityGradient gradient;
     IndexRange ranges[3];
     const int nr = w.cells.candidate_ranges(i, ranges);
     for (int rr = 0; rr < nr; ++rr) {
@@ -292,57 +310,45 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
         if (r2 >= support2) continue;
         const double r = std::sqrt(r2);
         const double F = kernel.gradient_factor(r);
-        const double gwx = F * dx, gwy = F * dy;  // grad_i W_ij
-        const double dvx = vxi - vx[j], dvy = vyi - vy[j];  // v_i - v_j
+        const PairGeometry g{dx, dy, r2, r, F * dx, F * dy};
+        const double dvx = vxi - vx[j], dvy = vyi - vy[j];  // v_i - v_j (a wall: its ghost velocity)
         const double mj = mass[j];
-        const double vj = vol[j];
-        // Continuity with the walls' own velocity (at rest), not their ghost velocity: the ghost velocity only
-        // enforces the slip condition on the velocity gradient and the viscosity (Adami, Hu & Adams 2012,
-        // J. Comput. Phys. 231:7057, sec. 2.3). With the no-slip ghost velocity -v_avg in the continuity
-        // equation, a particle sliding down a wall next to the free surface, whose wall neighbours above see
-        // only it, lost density at a rate ~ 2 v |grad W| until it went negative (docs/stability.md).
-        const double svx = vxi - is_soil[j] * vx[j], svy = vyi - is_soil[j] * vy[j];
-        drho += mj * (svx * gwx + svy * gwy);
-        // velocity gradient L_ab = sum V_j (v_j - v_i)_a dW/dx_b
-        lxx -= vj * dvx * gwx;
-        lxy -= vj * dvx * gwy;
-        lyx -= vj * dvy * gwx;
-        lyy -= vj * dvy * gwy;
-        // Monaghan artificial viscosity, approaching pairs only (v_ij . x_ij < 0)
-        const double vr = std::min(dvx * dx + dvy * dy, 0.0);
-        const double mu = h * vr / (r2 + eta2);
-        const double rho_bar = 0.5 * (rhoi + rho[j]);
-        const double pi_ij = (-alpha * 0.5 * (ci + snd[j]) * mu + beta * mu * mu) / rho_bar;
+        // [C] with the walls' own velocity (at rest): with the no-slip ghost velocity -v_avg here, a particle
+        // sliding down a wall next to the free surface, whose wall neighbours above see only it, lost density at a
+        // rate ~ 2 v |grad W| until it went negative (docs/stability.md).
+        drho += continuity(mj, vxi - is_soil[j] * vx[j], vyi - is_soil[j] * vy[j], g);
+        gradient.add(vol[j], dvx, dvy, g);
+        const double rho_bar = mean_density(rhoi, rho[j]);
+        const double pi_ij = artificial_viscosity(h, eta2, alpha, beta, ci, snd[j], rho_bar, dvx, dvy, g);
         double txx = pxxi + pxx[j] - pi_ij;
         double tyy = pyyi + pyy[j] - pi_ij;
         double txy = pxyi + pxy[j];
         if constexpr (kArtificialStress) {
-          const double f = kernel.value(r) * inv_w_dx;
-          const double fn = f > 0 ? std::exp(as_n * std::log(f)) : 0.0;
+          const double fn = artificial_stress_weight(kernel.value(r), inv_w_dx, as_n);
           txx += fn * (rxxi + rxx[j]);
           tyy += fn * (ryyi + ryy[j]);
           txy += fn * (rxyi + rxy[j]);
         }
-        axi += mj * (txx * gwx + txy * gwy);
-        ayi += mj * (txy * gwx + tyy * gwy);
+        momentum(mj, txx, tyy, txy, g, axi, ayi);
         if constexpr (kXsph) {
-          const double wv = mj / rho_bar * kernel.value(r);
+          const double wv = xsph_weight(mj, rho_bar, kernel.value(r));
           xsx -= wv * dvx;
           xsy -= wv * dvy;
         }
       }
     }
-    p.drho[i] = drho;
-    p.ax[i] = axi + gx - damping * vxi;
-    p.ay[i] = ayi + gy - damping * vyi;
-    const Stress s{p.sxx[i], p.syy[i], p.szz[i], p.sxy[i]};
-    const StressRate sr = stress_rate(mc[p.material[i]], s, lxx, lyy, 0.5 * (lxy + lyx), 0.5 * (lxy - lyx));
-    p.dsxx[i] = sr.rate.xx;
-    p.dsyy[i] = sr.rate.yy;
-    p.dszz[i] = sr.rate.zz;
-    p.dsxy[i] = sr.rate.xy;
-    p.dplastic_strain[i] = sr.plastic_strain_rate;
-    p.dplastic_work[i] = sr.plastic_work_rate / rhoi;
+    sa.drho[i] = drho;
+    sa.ax[i] = axi + gx - damping * vxi;
+    sa.ay[i] = ayi + gy - damping * vyi;
+    const Stress s{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
+    const StressRate sr = stress_rate(mc[p.material[i]], s, gradient.xx, gradient.yy, 0.5 * (gradient.xy + gradient.yx),
+                                      0.5 * (gradient.xy - gradient.yx));
+    sa.dsxx[i] = sr.rate.xx;
+    sa.dsyy[i] = sr.rate.yy;
+    sa.dszz[i] = sr.rate.zz;
+    sa.dsxy[i] = sr.rate.xy;
+    sa.dplastic_strain[i] = sr.plastic_strain_rate;
+    sa.dplastic_work[i] = sr.plastic_work_rate / rhoi;
     if constexpr (kXsph) {
       w.xsph_dx[i] = chi * xsx;
       w.xsph_dy[i] = chi * xsy;
@@ -396,12 +402,14 @@ SoilStep::SoilStep(Model& model) : model_(model), impl_(std::make_unique<Impl>()
   artificial_stress_ = model_.uses_artificial_stress();
   auto& w = *impl_;
   const std::size_t n = model_.particles.size();
-  w.for_each_carried_array([n](std::vector<double>& a) { a.assign(n, 0.0); });
+  register_workspace(model_.particles, &w);
   for (auto* a : {&w.pxx, &w.pyy, &w.pxy, &w.volume, &w.sound, &w.is_soil, &w.rxx, &w.ryy, &w.rxy, &w.xsph_dx,
                   &w.xsph_dy})
     a->assign(n, 0.0);
-  w.back.for_each_array([n](auto& a) { a.assign(n, {}); });
-  for (auto& a : w.back_carried) a.assign(n, 0.0);
+  w.back.assign(static_cast<std::size_t>(model_.particles.double_array_count()), std::vector<double>(n, 0.0));
+  w.back_id.assign(n, 0);
+  w.back_material.assign(n, 0);
+  w.back_kind.assign(n, 0);
   w.moved.reserve(n);
   index_kinds(model_.particles, w);  // valid for the current order; sorts keep them up to date
   w.soil.reserve(n);
@@ -419,8 +427,28 @@ SoilStep::SoilStep(Model& model) : model_(model), impl_(std::make_unique<Impl>()
 
 SoilStep::~SoilStep() = default;
 
+void SoilStep::register_workspace(ParticleSet& particles, Impl* impl) {
+  // Half-step values live only within a step (written before the step's sort, read after it): reordered with the
+  // particles, never checkpointed or written to frames.
+  auto workspace = [&](const char* name) { return particles.add_field({name, false, false}); };
+  const FieldId vxh = workspace("half_step_vx"), vyh = workspace("half_step_vy"),
+                rhoh = workspace("half_step_density"), sxxh = workspace("half_step_stress_xx"),
+                syyh = workspace("half_step_stress_yy"), szzh = workspace("half_step_stress_zz"),
+                sxyh = workspace("half_step_stress_xy");
+  if (impl) {
+    impl->vxh = vxh;
+    impl->vyh = vyh;
+    impl->rhoh = rhoh;
+    impl->sxxh = sxxh;
+    impl->syyh = syyh;
+    impl->szzh = szzh;
+    impl->sxyh = sxyh;
+  }
+}
+
 void SoilStep::apply_geostatic_stress() {
-  Particles& p = model_.particles;
+  ParticleSet& p = model_.particles;
+  const SoilArrays sa = model_.soil();
   const double g = -model_.settings.gravity_y;
   const double dx = model_.settings.particle_spacing;
   std::vector<std::uint32_t> soil;
@@ -449,13 +477,13 @@ void SoilStep::apply_geostatic_stress() {
     const double syy = -(above + 0.5 * rho_g_dx);
     above += rho_g_dx;
     const double k0 = mc_[p.material[i]].k0;
-    p.syy[i] = syy;
-    p.sxx[i] = k0 * syy;
-    p.szz[i] = k0 * syy;
-    p.sxy[i] = 0.0;
-    Stress s{p.sxx[i], p.syy[i], p.szz[i], p.sxy[i]};
+    sa.syy[i] = syy;
+    sa.sxx[i] = k0 * syy;
+    sa.szz[i] = k0 * syy;
+    sa.sxy[i] = 0.0;
+    Stress s{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
     return_to_yield_surface(mc_[p.material[i]], s);  // a K0 state may violate the yield criterion near faces
-    p.sxx[i] = s.xx; p.syy[i] = s.yy; p.szz[i] = s.zz; p.sxy[i] = s.xy;
+    sa.sxx[i] = s.xx; sa.syy[i] = s.yy; sa.szz[i] = s.zz; sa.sxy[i] = s.xy;
   }
 }
 
@@ -487,14 +515,15 @@ void SoilStep::initialise() {
 }
 
 double SoilStep::stable_time_step() const {
-  const Particles& p = model_.particles;
+  const ParticleSet& p = model_.particles;
+  const SoilArrays sa = model_.soil();
   const auto& soil = impl_->soil;
   const Index ns = static_cast<Index>(soil.size());
   double a2max = 0, v2max = 0;
 #pragma omp parallel for schedule(static) reduction(max : a2max, v2max)
   for (Index k = 0; k < ns; ++k) {
     const std::size_t i = soil[static_cast<std::size_t>(k)];
-    a2max = std::max(a2max, p.ax[i] * p.ax[i] + p.ay[i] * p.ay[i]);
+    a2max = std::max(a2max, sa.ax[i] * sa.ax[i] + sa.ay[i] * sa.ay[i]);
     v2max = std::max(v2max, p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
   }
   const Settings& st = model_.settings;
@@ -507,53 +536,57 @@ double SoilStep::stable_time_step() const {
 }
 
 void SoilStep::advance(double dt) {
-  Particles& p = model_.particles;
+  ParticleSet& p = model_.particles;
   auto& w = *impl_;
   const double half = 0.5 * dt;
   {
+    const SoilArrays sa = model_.soil();
+    const HalfStep hs(p, w);
     const Index ns = static_cast<Index>(w.soil.size());
 #pragma omp parallel for schedule(static)
     for (Index k = 0; k < ns; ++k) {
       const std::size_t i = w.soil[static_cast<std::size_t>(k)];
-      const double vxh = p.vx[i] + half * p.ax[i];
-      const double vyh = p.vy[i] + half * p.ay[i];
-      w.vxh[i] = vxh;
-      w.vyh[i] = vyh;
+      const double vxh = p.vx[i] + half * sa.ax[i];
+      const double vyh = p.vy[i] + half * sa.ay[i];
+      hs.vxh[i] = vxh;
+      hs.vyh[i] = vyh;
       p.x[i] += dt * vxh;
       p.y[i] += dt * vyh;
-      p.vx[i] += dt * p.ax[i];
-      p.vy[i] += dt * p.ay[i];
-      w.rhoh[i] = p.rho[i] + half * p.drho[i];
-      p.rho[i] += dt * p.drho[i];
-      w.sxxh[i] = p.sxx[i] + half * p.dsxx[i];
-      w.syyh[i] = p.syy[i] + half * p.dsyy[i];
-      w.szzh[i] = p.szz[i] + half * p.dszz[i];
-      w.sxyh[i] = p.sxy[i] + half * p.dsxy[i];
-      Stress s{p.sxx[i] + dt * p.dsxx[i], p.syy[i] + dt * p.dsyy[i], p.szz[i] + dt * p.dszz[i],
-               p.sxy[i] + dt * p.dsxy[i]};
+      p.vx[i] += dt * sa.ax[i];
+      p.vy[i] += dt * sa.ay[i];
+      hs.rhoh[i] = p.rho[i] + half * sa.drho[i];
+      p.rho[i] += dt * sa.drho[i];
+      hs.sxxh[i] = sa.sxx[i] + half * sa.dsxx[i];
+      hs.syyh[i] = sa.syy[i] + half * sa.dsyy[i];
+      hs.szzh[i] = sa.szz[i] + half * sa.dszz[i];
+      hs.sxyh[i] = sa.sxy[i] + half * sa.dsxy[i];
+      Stress s{sa.sxx[i] + dt * sa.dsxx[i], sa.syy[i] + dt * sa.dsyy[i], sa.szz[i] + dt * sa.dszz[i],
+               sa.sxy[i] + dt * sa.dsxy[i]};
       return_to_yield_surface(mc_[p.material[i]], s);
-      p.sxx[i] = s.xx; p.syy[i] = s.yy; p.szz[i] = s.zz; p.sxy[i] = s.xy;
-      p.plastic_strain[i] += half * p.dplastic_strain[i];
-      p.plastic_work[i] += half * p.dplastic_work[i];
+      sa.sxx[i] = s.xx; sa.syy[i] = s.yy; sa.szz[i] = s.zz; sa.sxy[i] = s.xy;
+      sa.plastic_strain[i] += half * sa.dplastic_strain[i];
+      sa.plastic_work[i] += half * sa.dplastic_work[i];
     }
   }
   // sorts (index lists change), extrapolates walls, computes rates at the predicted state, at the step's end time
   evaluate_at(model_.state.time + dt);
   {
+    const SoilArrays sa = model_.soil();  // the sort may have swapped the arrays' buffers
+    const HalfStep hs(p, w);
     const bool xsph = model_.settings.xsph.enabled;
     const Index ns = static_cast<Index>(w.soil.size());
 #pragma omp parallel for schedule(static)
     for (Index k = 0; k < ns; ++k) {
       const std::size_t i = w.soil[static_cast<std::size_t>(k)];
-      p.vx[i] = w.vxh[i] + half * p.ax[i];
-      p.vy[i] = w.vyh[i] + half * p.ay[i];
-      p.rho[i] = w.rhoh[i] + half * p.drho[i];
-      Stress s{w.sxxh[i] + half * p.dsxx[i], w.syyh[i] + half * p.dsyy[i], w.szzh[i] + half * p.dszz[i],
-               w.sxyh[i] + half * p.dsxy[i]};
+      p.vx[i] = hs.vxh[i] + half * sa.ax[i];
+      p.vy[i] = hs.vyh[i] + half * sa.ay[i];
+      p.rho[i] = hs.rhoh[i] + half * sa.drho[i];
+      Stress s{hs.sxxh[i] + half * sa.dsxx[i], hs.syyh[i] + half * sa.dsyy[i], hs.szzh[i] + half * sa.dszz[i],
+               hs.sxyh[i] + half * sa.dsxy[i]};
       const ReturnResult rr = return_to_yield_surface(mc_[p.material[i]], s);
-      p.sxx[i] = s.xx; p.syy[i] = s.yy; p.szz[i] = s.zz; p.sxy[i] = s.xy;
-      p.plastic_strain[i] += half * p.dplastic_strain[i] + rr.plastic_strain;
-      p.plastic_work[i] += half * p.dplastic_work[i] + rr.plastic_work / p.rho[i];
+      sa.sxx[i] = s.xx; sa.syy[i] = s.yy; sa.szz[i] = s.zz; sa.sxy[i] = s.xy;
+      sa.plastic_strain[i] += half * sa.dplastic_strain[i] + rr.plastic_strain;
+      sa.plastic_work[i] += half * sa.dplastic_work[i] + rr.plastic_work / p.rho[i];
       if (xsph) {
         p.x[i] += dt * w.xsph_dx[i];
         p.y[i] += dt * w.xsph_dy[i];
@@ -564,8 +597,16 @@ void SoilStep::advance(double dt) {
   model_.state.step += 1;
 }
 
+std::vector<DerivedField> SoilStep::derived_outputs() const {
+  const SoilArrays sa = model_.soil();
+  DerivedField pressure{"pressure", std::vector<double>(model_.particles.size())};
+  for (std::size_t i = 0; i < model_.particles.size(); ++i) pressure.values[i] = -(sa.sxx[i] + sa.syy[i] + sa.szz[i]) / 3.0;
+  return {pressure};
+}
+
 Energies SoilStep::energies() const {
-  const Particles& p = model_.particles;
+  const ParticleSet& p = model_.particles;
+  const SoilArrays sa = model_.soil();
   auto& w = *impl_;
   const double gx = model_.settings.gravity_x, gy = model_.settings.gravity_y;
   Energies e;
@@ -574,7 +615,7 @@ Energies SoilStep::energies() const {
       [&](std::size_t i, double& ke, double& pe, double& pw) {
         ke += 0.5 * p.mass[i] * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
         pe -= p.mass[i] * (gx * p.x[i] + gy * p.y[i]);
-        pw += p.mass[i] * p.plastic_work[i];
+        pw += p.mass[i] * sa.plastic_work[i];
       },
       e.kinetic, e.potential, e.plastic_dissipation);
   double v2 = 0;
@@ -589,7 +630,8 @@ Energies SoilStep::energies() const {
 }
 
 Health SoilStep::check_health() const {
-  const Particles& p = model_.particles;
+  const ParticleSet& p = model_.particles;
+  const SoilArrays sa = model_.soil();
   const auto& soil = impl_->soil;
   const Index ns = static_cast<Index>(soil.size());
   const double vlimit = model_.settings.blow_up_speed_factor * c_max_;
@@ -598,8 +640,8 @@ Health SoilStep::check_health() const {
 #pragma omp parallel for schedule(static) reduction(min : first_bad)
   for (Index k = 0; k < ns; ++k) {
     const std::size_t i = soil[static_cast<std::size_t>(k)];
-    const double sum = p.x[i] + p.y[i] + p.vx[i] + p.vy[i] + p.rho[i] + p.sxx[i] + p.syy[i] + p.szz[i] + p.sxy[i] +
-                       p.plastic_strain[i];
+    const double sum = p.x[i] + p.y[i] + p.vx[i] + p.vy[i] + p.rho[i] + sa.sxx[i] + sa.syy[i] + sa.szz[i] + sa.sxy[i] +
+                       sa.plastic_strain[i];
     const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
     if (!std::isfinite(sum) || !(v2 <= v2lim) || !(p.rho[i] > 0)) first_bad = std::min(first_bad, k);
   }
@@ -613,8 +655,8 @@ Health SoilStep::check_health() const {
      << " (at x = " << p.x[i] << ", y = " << p.y[i] << ") ";
   struct Field { const char* name; double v; };
   const Field fields[] = {{"x", p.x[i]}, {"y", p.y[i]}, {"vx", p.vx[i]}, {"vy", p.vy[i]}, {"density", p.rho[i]},
-                          {"stress_xx", p.sxx[i]}, {"stress_yy", p.syy[i]}, {"stress_zz", p.szz[i]},
-                          {"stress_xy", p.sxy[i]}, {"plastic_strain", p.plastic_strain[i]}};
+                          {"stress_xx", sa.sxx[i]}, {"stress_yy", sa.syy[i]}, {"stress_zz", sa.szz[i]},
+                          {"stress_xy", sa.sxy[i]}, {"plastic_strain", sa.plastic_strain[i]}};
   bool named = false;
   for (const auto& f : fields)
     if (!std::isfinite(f.v)) {

@@ -29,7 +29,7 @@ struct Appended {
 
 }  // namespace
 
-void write_vtu(const std::string& path, const Particles& p, double time) {
+void write_vtu(const std::string& path, const ParticleSet& p, double time, const std::vector<DerivedField>& derived) {
   const std::size_t n = p.size();
   std::vector<double> v3(3 * n);
   for (std::size_t i = 0; i < n; ++i) { v3[3 * i] = p.x[i]; v3[3 * i + 1] = p.y[i]; v3[3 * i + 2] = 0; }
@@ -51,14 +51,10 @@ void write_vtu(const std::string& path, const Particles& p, double time) {
   all.add("velocity", "Float64", 3, v3);
   for (std::size_t i = 0; i < n; ++i) { v3[3 * i] = p.x[i] - p.x0[i]; v3[3 * i + 1] = p.y[i] - p.y0[i]; v3[3 * i + 2] = 0; }
   all.add("displacement", "Float64", 3, v3);
-  all.add("stress_xx", "Float64", 1, p.sxx);
-  all.add("stress_yy", "Float64", 1, p.syy);
-  all.add("stress_zz", "Float64", 1, p.szz);
-  all.add("stress_xy", "Float64", 1, p.sxy);
-  std::vector<double> pressure(n);
-  for (std::size_t i = 0; i < n; ++i) pressure[i] = -(p.sxx[i] + p.syy[i] + p.szz[i]) / 3.0;
-  all.add("pressure", "Float64", 1, pressure);
-  all.add("plastic_strain", "Float64", 1, p.plastic_strain);
+  // the physics' own arrays, as registered, then the quantities it derives for output
+  for (FieldId f = 0; f < p.field_count(); ++f)
+    if (p.spec(f).write_vtu) all.add(p.spec(f).name.c_str(), "Float64", 1, p.field(f));
+  for (const DerivedField& d : derived) all.add(d.name.c_str(), "Float64", 1, d.values);
   all.add("density", "Float64", 1, p.rho);
   std::vector<std::int32_t> mat(p.material.begin(), p.material.end()), kind(p.kind.begin(), p.kind.end());
   all.add("material", "Int32", 1, mat);

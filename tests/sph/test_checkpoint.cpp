@@ -113,7 +113,7 @@ TEST_CASE("the step gives the same state for 1 and 2 threads (no order-dependent
   omp_set_num_threads(before);
   std::size_t mismatches = 0;
   for (std::size_t i = 0; i < a.particles.size(); ++i)
-    mismatches += (a.particles.x[i] != b.particles.x[i]) + (a.particles.sxx[i] != b.particles.sxx[i]) +
+    mismatches += (a.particles.x[i] != b.particles.x[i]) + (a.soil().sxx[i] != b.soil().sxx[i]) +
                   (a.particles.vy[i] != b.particles.vy[i]) + (a.particles.id[i] != b.particles.id[i]);
   CHECK(mismatches == 0);
 }

@@ -45,14 +45,15 @@ sph::Model elastic_column(sph::GravityMode mode, double damping) {
 
 void check_profile(const sph::Model& m, double H) {
   const auto& p = m.particles;
+  const auto soil = m.soil();
   const double dx = m.settings.particle_spacing, g = 9.81, rho = 2000, k0 = 0.3 / 0.7;
   std::map<long, std::pair<double, int>> syy, sxx;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.kind[i] != 0) continue;
     const long row = std::lround((p.y0[i] - 0.5 * dx) / dx);
-    syy[row].first += p.syy[i];
+    syy[row].first += soil.syy[i];
     syy[row].second += 1;
-    sxx[row].first += p.sxx[i];
+    sxx[row].first += soil.sxx[i];
     sxx[row].second += 1;
   }
   int checked = 0;
@@ -105,7 +106,8 @@ TEST_CASE("elastic column study", "[.study]") {
     uy += m.particles.y[i] - m.particles.y0[i]; ++n; }
   std::printf("T=%g: vmax %g mean uy %g KE %g\n", T, vmax, uy / n, sum.kinetic_energy);
   const auto& p = m.particles;
+  const auto soil = m.soil();
   for (std::size_t i = 0; i < p.size(); ++i)
     if (p.kind[i] == 0 && std::fabs(p.x0[i] - (std::getenv("SPH_X") ? std::atof(std::getenv("SPH_X")) : 0.2375)) < 1e-9 && std::lround(p.y0[i] / 0.025 - 0.5) % 8 == 0)
-      std::printf("  y0 %.4f  syy %.1f exact %.1f sxx %.1f sxy %.1f rho %.2f\n", p.y0[i], p.syy[i], -2000 * 9.81 * (1 - p.y0[i]), p.sxx[i], p.sxy[i], p.rho[i]);
+      std::printf("  y0 %.4f  syy %.1f exact %.1f sxx %.1f sxy %.1f rho %.2f\n", p.y0[i], soil.syy[i], -2000 * 9.81 * (1 - p.y0[i]), soil.sxx[i], soil.sxy[i], p.rho[i]);
 }

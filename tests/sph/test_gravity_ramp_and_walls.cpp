@@ -125,7 +125,7 @@ TEST_CASE("a run interrupted during the gravity ramp resumes bitwise", "[sph][gr
 }
 
 TEST_CASE("walls thinner than the kernel support are refused", "[sph][fill]") {
-  sph::Particles p;
+  sph::ParticleSet p;
   sph::BoxWalls box;
   const double dx = 0.1, h = 0.12;  // 2h = 2.4 dx: 3 layers needed
   REQUIRE(sph::wall_layers_for(dx, h) == 3);
@@ -134,7 +134,7 @@ TEST_CASE("walls thinner than the kernel support are refused", "[sph][fill]") {
   CHECK(p.size() == 0);
   box.layers = 4;  // thicker than needed is allowed
   const std::size_t n4 = sph::add_box_walls(p, box, dx, h, 0, 2000);
-  sph::Particles q;
+  sph::ParticleSet q;
   box.layers = 0;  // default: the kernel support
   const std::size_t n3 = sph::add_box_walls(q, box, dx, h, 0, 2000);
   CHECK(n4 > n3);

@@ -35,7 +35,7 @@ TEST_CASE("polygon fill is cell-centred and walls cover the kernel support", "[s
   const std::vector<sph::Point> section{{0, 0}, {20, 0}, {10, 10}, {0, 10}};
   const auto pts = sph::lattice_points_in_polygon(section, 0.2);
   CHECK(pts.size() == 3725);
-  sph::Particles p;
+  sph::ParticleSet p;
   const double dx = 0.1, h = 0.13;
   sph::BoxWalls box;
   box.x_min = 0; box.x_max = 1; box.y_min = 0; box.height = 0.5;
@@ -44,8 +44,10 @@ TEST_CASE("polygon fill is cell-centred and walls cover the kernel support", "[s
   CHECK(layers == 3);
   // bottom: (10 + 2*3) * 3 ; sides: 5 rows * 3 layers * 2
   CHECK(n == static_cast<std::size_t>((10 + 2 * layers) * layers + 5 * layers * 2));
+  const auto& normal_x = p.field(*p.find_field("wall_normal_x"));
+  const auto& normal_y = p.field(*p.find_field("wall_normal_y"));
   for (std::size_t i = 0; i < p.size(); ++i) {
-    CHECK(std::hypot(p.wall_nx[i], p.wall_ny[i]) == Approx(1.0));
+    CHECK(std::hypot(normal_x[i], normal_y[i]) == Approx(1.0));
     CHECK(p.mass[i] == Approx(2000 * dx * dx));
   }
 }

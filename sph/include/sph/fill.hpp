@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "sph/particles.hpp"
+#include "sph/engine/particle_set.hpp"
 
 namespace sph {
 
@@ -26,7 +26,7 @@ std::vector<Point> lattice_points_in_polygon(const std::vector<Point>& polygon, 
 bool point_in_polygon(const std::vector<Point>& polygon, double x, double y);
 
 // Appends soil particles at the given points: mass = density dx^2 (per metre width). Returns the count.
-std::size_t add_soil(Particles& particles, const std::vector<Point>& points, double dx, std::uint16_t material,
+std::size_t add_soil(ParticleSet& particles, const std::vector<Point>& points, double dx, std::uint16_t material,
                      double density);
 
 // Fixed wall particles around the inner box [x_min, x_max] x [y_min, y_min + height]:
@@ -40,7 +40,7 @@ struct BoxWalls {
 };
 
 // Appends the wall particles (kind wall, mass density dx^2, inward unit normals). Returns the count.
-std::size_t add_box_walls(Particles& particles, const BoxWalls& box, double dx, double h, std::uint16_t material,
+std::size_t add_box_walls(ParticleSet& particles, const BoxWalls& box, double dx, double h, std::uint16_t material,
                           double density);
 
 // Wall layer count that covers the kernel support 2h.

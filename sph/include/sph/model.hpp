@@ -8,7 +8,9 @@
 
 #include "sph/kernel.hpp"
 #include "sph/material.hpp"
-#include "sph/particles.hpp"
+#include "sph/engine/particle_set.hpp"
+#include "sph/engine/stepper.hpp"
+#include "sph/soil/fields.hpp"
 
 namespace sph {
 
@@ -70,21 +72,9 @@ struct Settings {
   void validate() const;
 };
 
-// Simulation clock and output bookkeeping; part of the checkpoint.
-struct RunState {
-  double time = 0.0;
-  std::uint64_t step = 0;
-  bool rates_valid = false;         // rates in Particles correspond to the current state
-  bool initial_stress_applied = false;
-  double next_output_time = 0.0;
-  std::uint64_t frames_written = 0;
-  std::vector<double> frame_times;
-  double initial_potential_energy = 0.0;
-  std::uint64_t energy_csv_bytes = 0;  // bytes of energy.csv that belong to this state
-};
-
 struct Model {
-  Particles particles;
+  ParticleSet particles;
+  SoilFields fields = SoilFields::register_in(particles);  // the soil's state block in `particles`
   std::vector<Material> materials;
   Settings settings;
   RunState state;
@@ -92,14 +82,16 @@ struct Model {
   // Validates settings, materials and particles (material ids in range, positive masses, ...).
   void validate() const;
   bool uses_artificial_stress() const;
+  SoilArrays soil() { return SoilArrays(particles, fields); }
+  ConstSoilArrays soil() const { return ConstSoilArrays(particles, fields); }
 };
 
 // Time step of the model at rest (the CFL bound of SoilStep::stable_time_step with |v| = 0, |a| = 0):
 // cfl h / (c_max (1 + 1.2 alpha)), c_max the largest P-wave speed of the materials. Use it to plan runs.
 double time_step_estimate(const Model& model);
 
-// Upper estimate of the memory (bytes) needed to simulate n particles (particles, step workspace,
-// neighbour search, output buffers). Use it to refuse a case before allocating.
+// Upper estimate of the memory (bytes) needed to simulate n particles (the registered arrays of a soil model and
+// its step workspace, neighbour search, output buffers). Use it to refuse a case before allocating.
 std::size_t estimate_memory_bytes(std::size_t n_particles);
 
 }  // namespace sph

@@ -14,44 +14,34 @@
 #include <string>
 #include <vector>
 
+#include "sph/engine/stepper.hpp"
 #include "sph/model.hpp"
 #include "sph/neighbour_search.hpp"
 
 namespace sph {
 
-struct Energies {
-  double kinetic = 0;            // [J/m]
-  double potential = 0;          // -sum m g.x over soil, datum x = 0  [J/m]
-  double plastic_dissipation = 0;// sum m * plastic work per mass [J/m]
-  double max_speed = 0;          // [m/s]
-};
-
-struct Health {
-  bool ok = true;
-  std::string diagnostic;  // names the particle (original id), field and step when !ok
-};
-
-class SoilStep {
+class SoilStep : public Stepper {
  public:
   // Validates the model, derives material constants and allocates all work arrays.
   explicit SoilStep(Model& model);
-  ~SoilStep();
+  ~SoilStep() override;
   SoilStep(const SoilStep&) = delete;
   SoilStep& operator=(const SoilStep&) = delete;
 
   // Prepares the state at the current time: applies the geostatic stress (once, if requested),
   // sorts particles by cell and evaluates the rates if the model does not carry valid rates.
-  void initialise();
+  void initialise() override;
 
   // Stable time step from the current rates: min(cfl h / (c(1 + 1.2 alpha) + |v|max (1 + 2.4 beta)),
   // acceleration_safety sqrt(h / |a|max)).
-  double stable_time_step() const;
+  double stable_time_step() const override;
 
   // Advances the model by dt (time and step counter included).
-  void advance(double dt);
+  void advance(double dt) override;
 
-  Energies energies() const;
-  Health check_health() const;  // NaN/Inf in soil fields, speed above blow_up_speed_factor * c
+  Energies energies() const override;
+  Health check_health() const override;  // NaN/Inf in soil fields, speed above blow_up_speed_factor * c
+  std::vector<DerivedField> derived_outputs() const override;  // pressure = -I1/3 [Pa] for the frames
 
   double smoothing_length() const { return h_; }
   double max_sound_speed() const { return c_max_; }
@@ -68,6 +58,10 @@ class SoilStep {
   void apply_geostatic_stress();
 
   struct Impl;
+
+  // Registers the stepper's workspace arrays (half-step values) in a particle set, or finds them; with `impl`,
+  // records their ids there. Public so that the memory estimate counts them.
+  static void register_workspace(ParticleSet& particles, Impl* impl = nullptr);
 
  private:
   Model& model_;
