@@ -1,6 +1,6 @@
 #include "sph/soil_step.hpp"
 
-#include "soil/terms.hpp"
+#include "terms.hpp"
 
 #include <algorithm>
 #include <cmath>

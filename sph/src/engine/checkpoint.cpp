@@ -1,4 +1,4 @@
-#include "sph/checkpoint.hpp"
+#include "sph/engine/checkpoint.hpp"
 
 #include <cstring>
 #include <fstream>
@@ -62,21 +62,21 @@ struct Reader {
 
 }  // namespace
 
-void write_checkpoint(const std::string& path, const Model& model) {
+void write_checkpoint(const std::string& path, const ParticleSet& set, const RunState& s,
+                      const CheckpointFingerprint& fingerprint) {
   Writer w;
-  ParticleSet& particles = const_cast<ParticleSet&>(model.particles);  // read only: for_each_* are not const
-  w.buf.reserve(model.particles.size() * (static_cast<std::size_t>(particles.double_array_count()) * 8 + 16) + 4096);
+  ParticleSet& particles = const_cast<ParticleSet&>(set);  // read only: for_each_* are not const
+  w.buf.reserve(set.size() * (static_cast<std::size_t>(particles.double_array_count()) * 8 + 16) + 4096);
   w.buf.append(kMagic, 16);
   w.put<std::uint32_t>(checkpoint_version);
   w.put<std::uint32_t>(0x01020304u);
-  w.put<std::uint64_t>(model.particles.size());
+  w.put<std::uint64_t>(set.size());
   std::vector<std::string_view> names;
   particles.for_each_checkpointed_double_array([&](std::string_view name, auto&) { names.push_back(name); });
   w.put<std::uint32_t>(static_cast<std::uint32_t>(names.size()));
-  w.put<std::uint32_t>(static_cast<std::uint32_t>(model.materials.size()));
-  w.put<double>(model.settings.particle_spacing);
-  w.put<double>(model.settings.h_over_dx);
-  const RunState& s = model.state;
+  w.put<std::uint32_t>(fingerprint.materials);
+  w.put<double>(fingerprint.particle_spacing);
+  w.put<double>(fingerprint.h_over_dx);
   w.put<double>(s.time);
   w.put<std::uint64_t>(s.step);
   w.put<std::uint8_t>(s.rates_valid ? 1 : 0);
@@ -91,14 +91,15 @@ void write_checkpoint(const std::string& path, const Model& model) {
     w.buf.append(name.data(), name.size());
   }
   particles.for_each_checkpointed_double_array([&](std::string_view, std::vector<double>& a) { w.put_vec(a); });
-  w.put_vec(model.particles.id);
-  w.put_vec(model.particles.material);
-  w.put_vec(model.particles.kind);
+  w.put_vec(set.id);
+  w.put_vec(set.material);
+  w.put_vec(set.kind);
   w.put<std::uint64_t>(fnv1a(w.buf.data(), w.buf.size()));
   write_file_atomically(path, w.buf);
 }
 
-void read_checkpoint(const std::string& path, Model& model) {
+void read_checkpoint(const std::string& path, ParticleSet& set, RunState& state,
+                     const CheckpointFingerprint& expected) {
   std::ifstream f(path, std::ios::binary);
   if (!f) throw std::runtime_error("cannot open checkpoint " + path);
   const std::string buf((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
@@ -120,12 +121,12 @@ void read_checkpoint(const std::string& path, Model& model) {
   const auto dx = r.get<double>();
   const auto hdx = r.get<double>();
   std::vector<std::string_view> own_names;
-  model.particles.for_each_checkpointed_double_array([&](std::string_view name, auto&) { own_names.push_back(name); });
-  if (n != model.particles.size() || ndouble != own_names.size() || nmat != model.materials.size() ||
-      dx != model.settings.particle_spacing || hdx != model.settings.h_over_dx)
+  set.for_each_checkpointed_double_array([&](std::string_view name, auto&) { own_names.push_back(name); });
+  if (n != set.size() || ndouble != own_names.size() || nmat != expected.materials ||
+      dx != expected.particle_spacing || hdx != expected.h_over_dx)
     throw std::runtime_error("checkpoint " + path + " does not belong to this model (particles " + std::to_string(n) +
-                             " vs " + std::to_string(model.particles.size()) + ", materials " + std::to_string(nmat) +
-                             " vs " + std::to_string(model.materials.size()) + ", or dx / h_over_dx differ)");
+                             " vs " + std::to_string(set.size()) + ", materials " + std::to_string(nmat) + " vs " +
+                             std::to_string(expected.materials) + ", or dx / h_over_dx differ)");
   RunState s;
   s.time = r.get<double>();
   s.step = r.get<std::uint64_t>();
@@ -145,7 +146,7 @@ void read_checkpoint(const std::string& path, Model& model) {
       throw std::runtime_error("checkpoint " + path + " holds the particle array '" + std::string(stored) +
                                "' where this model has '" + std::string(own) + "' (written by another version?)");
   }
-  ParticleSet& p = model.particles;
+  ParticleSet& p = set;
   p.for_each_checkpointed_double_array([&](std::string_view, std::vector<double>& a) { r.get_vec(a, n); });
   r.get_vec(p.id, n);
   r.get_vec(p.material, n);
@@ -153,7 +154,7 @@ void read_checkpoint(const std::string& path, Model& model) {
   // arrays a checkpoint does not keep (step workspace) are recomputed: size them, zero
   for (FieldId f = 0; f < p.field_count(); ++f)
     if (!p.spec(f).checkpoint) p.field(f).assign(n, 0.0);
-  model.state = std::move(s);
+  state = std::move(s);
 }
 
 }  // namespace sph

@@ -1,0 +1,20 @@
+#include "sph/checkpoint.hpp"
+
+namespace sph {
+
+namespace {
+CheckpointFingerprint fingerprint(const Model& model) {
+  return {static_cast<std::uint32_t>(model.materials.size()), model.settings.particle_spacing,
+          model.settings.h_over_dx};
+}
+}  // namespace
+
+void write_checkpoint(const std::string& path, const Model& model) {
+  write_checkpoint(path, model.particles, model.state, fingerprint(model));
+}
+
+void read_checkpoint(const std::string& path, Model& model) {
+  read_checkpoint(path, model.particles, model.state, fingerprint(model));
+}
+
+}  // namespace sph
