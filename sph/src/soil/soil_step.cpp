@@ -1,5 +1,6 @@
 #include "sph/soil_step.hpp"
 
+#include "sph/engine/cell_sort.hpp"
 #include "terms.hpp"
 
 #include <algorithm>
@@ -19,7 +20,7 @@ using Index = std::int64_t;
 }  // namespace
 
 struct SoilStep::Impl {
-  CellList cells;
+  CellSortedSet sorted;  // the particles sorted by cell, and the cell list
   // index lists (sorted positions), rebuilt after every sort
   std::vector<std::uint32_t> soil, walls;
   // half-step values: registered in the particle set (not checkpointed), so the sort reorders them
@@ -28,14 +29,6 @@ struct SoilStep::Impl {
   std::vector<double> pxx, pyy, pxy, volume, sound, is_soil;  // sigma/rho^2, m/rho, c, 0/1
   std::vector<double> rxx, ryy, rxy;                           // artificial stress R/rho^2 terms
   std::vector<double> xsph_dx, xsph_dy;                        // XSPH velocity corrections
-  // reorder back buffers, one per double array of the particle set, and for the integer arrays
-  std::vector<std::vector<double>> back;
-  std::vector<std::uint32_t> back_id;
-  std::vector<std::uint16_t> back_material;
-  std::vector<std::uint8_t> back_kind;
-  std::vector<std::vector<double>*> front;  // the set's double arrays, in registry order (rebuilt per sort)
-  std::vector<double*> src, dst;
-  std::vector<std::uint32_t> moved;  // sorted positions whose particle changes in this sort
   std::vector<double> block_a, block_b, block_c;
   void (*eval)(SoilStep&, Model&, Impl&) = nullptr;
   double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
@@ -67,87 +60,9 @@ void index_kinds(const ParticleSet& p, SoilStep::Impl& w) {
   }
 }
 
+// Sorts the particles by cell (every registered array follows) and keeps the soil/wall index lists current.
 void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
-  ParticleSet& p = model.particles;
-  const std::size_t n = p.size();
-  w.cells.build(p.x.data(), p.y.data(), n, cell_size);
-  const std::uint32_t* order = w.cells.order().data();
-  // Reorder every per-particle array of the set (core, the soil's state block, the half-step values) by the sort
-  // permutation.
-  w.front.clear();
-  p.for_each_double_array([&](std::vector<double>& a) { w.front.push_back(&a); });
-  const int kDoubles = static_cast<int>(w.front.size());
-  w.back.resize(w.front.size());
-  w.src.resize(w.front.size());
-  w.dst.resize(w.front.size());
-  for (int k = 0; k < kDoubles; ++k) {
-    w.back[k].resize(n);
-    w.src[k] = w.front[k]->data();
-    w.dst[k] = w.back[k].data();
-  }
-  double* const* src = w.src.data();
-  double* const* dst = w.dst.data();
-  std::vector<double>* const* front = w.front.data();
-  const Index nn = static_cast<Index>(n);
-  // Only the entries whose position changes need moving: the stable sort of a state sorted at the previous step
-  // is mostly the identity, and the set of moved indices is closed under the permutation.
-  w.moved.clear();
-  for (std::size_t k = 0; k < n; ++k)
-    if (order[k] != k) w.moved.push_back(static_cast<std::uint32_t>(k));
-  const Index nm = static_cast<Index>(w.moved.size());
-  const std::uint32_t* moved = w.moved.data();
-  if (nm == 0) return;  // same order: particle arrays and index lists are unchanged
-  if (2 * nm < nn) {
-    // the soil/wall index lists only change if a moved position changes kind
-    bool kinds_change = false;
-    for (Index jj = 0; jj < nm && !kinds_change; ++jj)
-      kinds_change = p.kind[moved[jj]] != p.kind[order[moved[jj]]];
-    // sparse: gather the moved entries into the back buffers (compact), then scatter them back in place
-#pragma omp parallel
-    {
-#pragma omp for schedule(static)
-      for (Index jj = 0; jj < nm; ++jj) {
-        const auto j = static_cast<std::size_t>(jj);
-        const std::uint32_t o = order[moved[j]];
-        for (int a = 0; a < kDoubles; ++a) dst[a][j] = src[a][o];
-        w.back_id[j] = p.id[o];
-        w.back_material[j] = p.material[o];
-        w.back_kind[j] = p.kind[o];
-      }
-#pragma omp for schedule(static)
-      for (Index jj = 0; jj < nm; ++jj) {
-        const auto j = static_cast<std::size_t>(jj);
-        const std::uint32_t k = moved[j];
-        for (int a = 0; a < kDoubles; ++a) src[a][k] = dst[a][j];
-        p.id[k] = w.back_id[j];
-        p.material[k] = w.back_material[j];
-        p.kind[k] = w.back_kind[j];
-      }
-    }
-    if (kinds_change) index_kinds(p, w);
-    return;
-  }
-  // dense: gather everything into the back buffers, then swap
-  const std::uint32_t* src_id = p.id.data();
-  const std::uint16_t* src_mat = p.material.data();
-  const std::uint8_t* src_kind = p.kind.data();
-  std::uint32_t* dst_id = w.back_id.data();
-  std::uint16_t* dst_mat = w.back_material.data();
-  std::uint8_t* dst_kind = w.back_kind.data();
-#pragma omp parallel for schedule(static)
-  for (Index kk = 0; kk < nn; ++kk) {
-    const auto k = static_cast<std::size_t>(kk);
-    const std::uint32_t o = order[k];
-    for (int a = 0; a < kDoubles; ++a) dst[a][k] = src[a][o];
-    dst_id[k] = src_id[o];
-    dst_mat[k] = src_mat[o];
-    dst_kind[k] = src_kind[o];
-  }
-  for (int k = 0; k < kDoubles; ++k) front[k]->swap(w.back[static_cast<std::size_t>(k)]);
-  p.id.swap(w.back_id);
-  p.material.swap(w.back_material);
-  p.kind.swap(w.back_kind);
-  index_kinds(p, w);
+  if (w.sorted.sort(model.particles, cell_size) == CellSortedSet::Change::kinds_moved) index_kinds(model.particles, w);
 }
 
 // Wall particles: Shepard-weighted soil stress with the Adami et al. (2012) hydrostatic correction on the
@@ -168,7 +83,7 @@ void wall_pass(Model& model, SoilStep::Impl& w, const Kernel& kernel) {
     const std::size_t i = w.walls[static_cast<std::size_t>(k)];
     const double xi = x[i], yi = y[i];
     double sw = 0, sxx = 0, syy = 0, szz = 0, sxy = 0, hydro = 0, svx = 0, svy = 0;
-    w.cells.for_each_candidate(i, [&](std::uint32_t j) {
+    w.sorted.cells().for_each_candidate(i, [&](std::uint32_t j) {
       const double dx = xi - x[j], dy = yi - y[j];
       const double r2 = dx * dx + dy * dy;
       if (r2 >= support2 || is_soil[j] == 0.0) return;  // walls never read other walls (no data race)
@@ -302,7 +217,7 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
     double drho = 0, axi = 0, ayi = 0, xsx = 0, xsy = 0;
     VelocityGradient gradient;
     IndexRange ranges[3];
-    const int nr = w.cells.candidate_ranges(i, ranges);
+    const int nr = w.sorted.cells().candidate_ranges(i, ranges);
     for (int rr = 0; rr < nr; ++rr) {
       for (std::uint32_t j = ranges[rr].begin; j < ranges[rr].end; ++j) {
         const double dx = xi - x[j], dy = yi - y[j];
@@ -406,11 +321,7 @@ SoilStep::SoilStep(Model& model) : model_(model), impl_(std::make_unique<Impl>()
   for (auto* a : {&w.pxx, &w.pyy, &w.pxy, &w.volume, &w.sound, &w.is_soil, &w.rxx, &w.ryy, &w.rxy, &w.xsph_dx,
                   &w.xsph_dy})
     a->assign(n, 0.0);
-  w.back.assign(static_cast<std::size_t>(model_.particles.double_array_count()), std::vector<double>(n, 0.0));
-  w.back_id.assign(n, 0);
-  w.back_material.assign(n, 0);
-  w.back_kind.assign(n, 0);
-  w.moved.reserve(n);
+  w.sorted.reserve(model_.particles);
   index_kinds(model_.particles, w);  // valid for the current order; sorts keep them up to date
   w.soil.reserve(n);
   w.walls.reserve(n);
