@@ -167,6 +167,75 @@ void prepare_pass(Model& model, SoilStep::Impl& w, const std::vector<MaterialCon
   }
 }
 
+// What the pair sums read, gathered once per evaluation (after the sort, the wall pass and the prepare pass).
+struct PairInputs {
+  const double *x, *y, *vx, *vy, *rho, *mass;
+  const double *pxx, *pyy, *pxy, *vol, *snd, *rxx, *ryy, *rxy, *is_soil;  // prepare_pass
+  double h, support2, eta2, alpha, beta, inv_w_dx, as_n;
+
+  PairInputs(const ParticleSet& p, const SoilStep::Impl& w, const Settings& st, double h_, double support)
+      : x(p.x.data()), y(p.y.data()), vx(p.vx.data()), vy(p.vy.data()), rho(p.rho.data()), mass(p.mass.data()),
+        pxx(w.pxx.data()), pyy(w.pyy.data()), pxy(w.pxy.data()), vol(w.volume.data()), snd(w.sound.data()),
+        rxx(w.rxx.data()), ryy(w.ryy.data()), rxy(w.rxy.data()), is_soil(w.is_soil.data()), h(h_),
+        support2(support * support), eta2(st.viscosity.eta_factor * h_ * h_), alpha(st.viscosity.alpha),
+        beta(st.viscosity.beta), inv_w_dx(1.0 / w.w_dx), as_n(st.artificial_stress.exponent) {}
+};
+
+// The sums over the neighbours of one particle.
+struct PairSums {
+  double drho = 0, ax = 0, ay = 0, xsph_x = 0, xsph_y = 0;
+  VelocityGradient gradient;
+};
+
+// Gathers the pair terms of particle i over its neighbours [C, L, AV, AS, M, X].
+template <class Kernel, bool kArtificialStress, bool kXsph>
+PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, const CellList& cells) {
+  const double xi = in.x[i], yi = in.y[i], vxi = in.vx[i], vyi = in.vy[i], rhoi = in.rho[i], ci = in.snd[i];
+  const double pxxi = in.pxx[i], pyyi = in.pyy[i], pxyi = in.pxy[i];
+  double rxxi = 0, ryyi = 0, rxyi = 0;
+  if constexpr (kArtificialStress) {
+    rxxi = in.rxx[i]; ryyi = in.ryy[i]; rxyi = in.rxy[i];
+  }
+  PairSums sum;
+  IndexRange ranges[3];
+  const int nr = cells.candidate_ranges(i, ranges);
+  for (int rr = 0; rr < nr; ++rr) {
+    for (std::uint32_t j = ranges[rr].begin; j < ranges[rr].end; ++j) {
+      const double dx = xi - in.x[j], dy = yi - in.y[j];
+      const double r2 = dx * dx + dy * dy;
+      if (r2 >= in.support2) continue;
+      const double r = std::sqrt(r2);
+      const double F = kernel.gradient_factor(r);
+      const PairGeometry g{dx, dy, r2, r, F * dx, F * dy};
+      const double dvx = vxi - in.vx[j], dvy = vyi - in.vy[j];  // v_i - v_j (a wall: its ghost velocity)
+      const double mj = in.mass[j];
+      // [C] with the walls' own velocity (at rest): with the no-slip ghost velocity -v_avg here, a particle sliding
+      // down a wall next to the free surface, whose wall neighbours above see only it, lost density at a rate
+      // ~ 2 v |grad W| until it went negative (docs/stability.md).
+      sum.drho += continuity(mj, vxi - in.is_soil[j] * in.vx[j], vyi - in.is_soil[j] * in.vy[j], g);
+      sum.gradient.add(in.vol[j], dvx, dvy, g);
+      const double rho_bar = mean_density(rhoi, in.rho[j]);
+      const double pi_ij = artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
+      double txx = pxxi + in.pxx[j] - pi_ij;
+      double tyy = pyyi + in.pyy[j] - pi_ij;
+      double txy = pxyi + in.pxy[j];
+      if constexpr (kArtificialStress) {
+        const double fn = artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n);
+        txx += fn * (rxxi + in.rxx[j]);
+        tyy += fn * (ryyi + in.ryy[j]);
+        txy += fn * (rxyi + in.rxy[j]);
+      }
+      momentum(mj, txx, tyy, txy, g, sum.ax, sum.ay);
+      if constexpr (kXsph) {
+        const double wv = xsph_weight(mj, rho_bar, kernel.value(r));
+        sum.xsph_x -= wv * dvx;
+        sum.xsph_y -= wv * dvy;
+      }
+    }
+  }
+  return sum;
+}
+
 // Rates for every soil particle; pairs are gathered from the perspective of i (no write conflicts).
 template <class Kernel, bool kArtificialStress, bool kXsph>
 void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
@@ -177,96 +246,34 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   wall_pass(model, w, kernel);
   prepare_pass(model, w, self.material_constants(), kArtificialStress, st.artificial_stress.epsilon);
   const SoilArrays sa = model.soil();  // after the sort: it may have swapped the arrays' buffers
-
-  const double h = kernel.h();
-  const double support2 = kernel.support() * kernel.support();
-  const double eta2 = st.viscosity.eta_factor * h * h;
-  const double alpha = st.viscosity.alpha, beta = st.viscosity.beta;
-  const double inv_w_dx = 1.0 / w.w_dx;
-  const double as_n = st.artificial_stress.exponent;
+  const PairInputs in(p, w, st, kernel.h(), kernel.support());
   const double chi = st.xsph.chi;
   const double gx = w.gravity_x, gy = w.gravity_y, damping = st.damping;
   const auto& mc = self.material_constants();
-
-  const double* x = p.x.data();
-  const double* y = p.y.data();
-  const double* vx = p.vx.data();
-  const double* vy = p.vy.data();
-  const double* rho = p.rho.data();
-  const double* mass = p.mass.data();
-  const double* pxx = w.pxx.data();
-  const double* pyy = w.pyy.data();
-  const double* pxy = w.pxy.data();
-  const double* vol = w.volume.data();
-  const double* snd = w.sound.data();
-  const double* rxx = w.rxx.data();
-  const double* ryy = w.ryy.data();
-  const double* rxy = w.rxy.data();
-  const double* is_soil = w.is_soil.data();
+  const CellList& cells = w.sorted.cells();
 
   const Index ns = static_cast<Index>(w.soil.size());
 #pragma omp parallel for schedule(dynamic, 256)  // gather per particle: results do not depend on the schedule
   for (Index k = 0; k < ns; ++k) {
     const std::size_t i = w.soil[static_cast<std::size_t>(k)];
-    const double xi = x[i], yi = y[i], vxi = vx[i], vyi = vy[i], rhoi = rho[i], ci = snd[i];
-    const double pxxi = pxx[i], pyyi = pyy[i], pxyi = pxy[i];
-    double rxxi = 0, ryyi = 0, rxyi = 0;
-    if constexpr (kArtificialStress) {
-      rxxi = rxx[i]; ryyi = ryy[i]; rxyi = rxy[i];
-    }
-    double drho = 0, axi = 0, ayi = 0, xsx = 0, xsy = 0;
-    VelocityGradient gradient;
-    IndexRange ranges[3];
-    const int nr = w.sorted.cells().candidate_ranges(i, ranges);
-    for (int rr = 0; rr < nr; ++rr) {
-      for (std::uint32_t j = ranges[rr].begin; j < ranges[rr].end; ++j) {
-        const double dx = xi - x[j], dy = yi - y[j];
-        const double r2 = dx * dx + dy * dy;
-        if (r2 >= support2) continue;
-        const double r = std::sqrt(r2);
-        const double F = kernel.gradient_factor(r);
-        const PairGeometry g{dx, dy, r2, r, F * dx, F * dy};
-        const double dvx = vxi - vx[j], dvy = vyi - vy[j];  // v_i - v_j (a wall: its ghost velocity)
-        const double mj = mass[j];
-        // [C] with the walls' own velocity (at rest): with the no-slip ghost velocity -v_avg here, a particle
-        // sliding down a wall next to the free surface, whose wall neighbours above see only it, lost density at a
-        // rate ~ 2 v |grad W| until it went negative (docs/stability.md).
-        drho += continuity(mj, vxi - is_soil[j] * vx[j], vyi - is_soil[j] * vy[j], g);
-        gradient.add(vol[j], dvx, dvy, g);
-        const double rho_bar = mean_density(rhoi, rho[j]);
-        const double pi_ij = artificial_viscosity(h, eta2, alpha, beta, ci, snd[j], rho_bar, dvx, dvy, g);
-        double txx = pxxi + pxx[j] - pi_ij;
-        double tyy = pyyi + pyy[j] - pi_ij;
-        double txy = pxyi + pxy[j];
-        if constexpr (kArtificialStress) {
-          const double fn = artificial_stress_weight(kernel.value(r), inv_w_dx, as_n);
-          txx += fn * (rxxi + rxx[j]);
-          tyy += fn * (ryyi + ryy[j]);
-          txy += fn * (rxyi + rxy[j]);
-        }
-        momentum(mj, txx, tyy, txy, g, axi, ayi);
-        if constexpr (kXsph) {
-          const double wv = xsph_weight(mj, rho_bar, kernel.value(r));
-          xsx -= wv * dvx;
-          xsy -= wv * dvy;
-        }
-      }
-    }
-    sa.drho[i] = drho;
-    sa.ax[i] = axi + gx - damping * vxi;
-    sa.ay[i] = ayi + gy - damping * vyi;
+    const PairSums sum = pair_sums<Kernel, kArtificialStress, kXsph>(i, in, kernel, cells);
+    const double vxi = p.vx[i], vyi = p.vy[i];
+    sa.drho[i] = sum.drho;
+    sa.ax[i] = sum.ax + gx - damping * vxi;
+    sa.ay[i] = sum.ay + gy - damping * vyi;
+    // [L] strain rate and spin, [E, P, J] the stress rate of the material
+    const VelocityGradient& L = sum.gradient;
     const Stress s{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
-    const StressRate sr = stress_rate(mc[p.material[i]], s, gradient.xx, gradient.yy, 0.5 * (gradient.xy + gradient.yx),
-                                      0.5 * (gradient.xy - gradient.yx));
+    const StressRate sr = stress_rate(mc[p.material[i]], s, L.xx, L.yy, 0.5 * (L.xy + L.yx), 0.5 * (L.xy - L.yx));
     sa.dsxx[i] = sr.rate.xx;
     sa.dsyy[i] = sr.rate.yy;
     sa.dszz[i] = sr.rate.zz;
     sa.dsxy[i] = sr.rate.xy;
     sa.dplastic_strain[i] = sr.plastic_strain_rate;
-    sa.dplastic_work[i] = sr.plastic_work_rate / rhoi;
+    sa.dplastic_work[i] = sr.plastic_work_rate / p.rho[i];
     if constexpr (kXsph) {
-      w.xsph_dx[i] = chi * xsx;
-      w.xsph_dy[i] = chi * xsy;
+      w.xsph_dx[i] = chi * sum.xsph_x;
+      w.xsph_dy[i] = chi * sum.xsph_y;
     }
   }
 }
