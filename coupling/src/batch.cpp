@@ -21,7 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/svg.hpp"
-#include "sph/atomic_file.hpp"
+#include "sph/engine/atomic_file.hpp"
 
 extern char** environ;
 

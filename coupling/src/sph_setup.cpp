@@ -17,8 +17,8 @@
 
 #include "coupling/sliding_mass.hpp"
 #include "scene_internal.hpp"
-#include "sph/fill.hpp"
-#include "sph/kernel.hpp"
+#include "sph/engine/fill.hpp"
+#include "sph/engine/kernel.hpp"
 
 namespace coupling {
 

@@ -10,8 +10,8 @@
 
 #include "coupling/json_reader.hpp"
 #include "coupling/sph_setup.hpp"
-#include "sph/checkpoint.hpp"
-#include "sph/integrator/run.hpp"
+#include "sph/soil/checkpoint.hpp"
+#include "sph/soil/run.hpp"
 
 namespace coupling {
 

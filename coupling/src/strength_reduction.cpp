@@ -10,7 +10,7 @@
 
 #include "coupling/sph_setup.hpp"
 #include "coupling/sph_workflow.hpp"
-#include "sph/integrator/run.hpp"
+#include "sph/soil/run.hpp"
 
 namespace coupling {
 

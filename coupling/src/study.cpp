@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "sph/atomic_file.hpp"
+#include "sph/engine/atomic_file.hpp"
 #include "coupling/convergence.hpp"
 #include "coupling/json_reader.hpp"
 #include "coupling/report.hpp"

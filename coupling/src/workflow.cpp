@@ -7,7 +7,7 @@
 #include <ostream>
 #include <system_error>
 
-#include "sph/atomic_file.hpp"
+#include "sph/engine/atomic_file.hpp"
 #include "coupling/comparison.hpp"
 #include "coupling/figures.hpp"
 #include "coupling/report.hpp"

@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "sph/benchmarks.hpp"
-#include "sph/soil_step.hpp"
+#include "sph/soil/benchmarks.hpp"
+#include "sph/soil/soil_step.hpp"
 
 int main(int argc, char** argv) {
   const double target = argc > 1 ? std::atof(argv[1]) : 50000.0;

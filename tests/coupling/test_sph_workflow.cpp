@@ -21,7 +21,7 @@
 
 #include "coupling/scene.hpp"
 #include "coupling/sph_setup.hpp"
-#include "sph/checkpoint.hpp"
+#include "sph/soil/checkpoint.hpp"
 
 extern char** environ;
 

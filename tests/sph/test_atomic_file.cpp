@@ -14,7 +14,7 @@
 #include <system_error>
 #include <thread>
 
-#include "sph/atomic_file.hpp"
+#include "sph/engine/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "sph/benchmarks.hpp"
-#include "sph/checkpoint.hpp"
-#include "sph/integrator/run.hpp"
+#include "sph/soil/benchmarks.hpp"
+#include "sph/soil/checkpoint.hpp"
+#include "sph/soil/run.hpp"
 
 namespace {
 sph::Model small_collapse() {

@@ -19,8 +19,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "sph/benchmarks.hpp"
-#include "sph/integrator/run.hpp"
+#include "sph/soil/benchmarks.hpp"
+#include "sph/soil/run.hpp"
 
 TEST_CASE("granular column collapse (Bui et al. 2008) deposit matches the experiments' scaling laws",
           "[sph][validation][collapse]") {

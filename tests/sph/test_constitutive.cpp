@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "sph/material.hpp"
+#include "sph/soil/material.hpp"
 
 using namespace sph;
 

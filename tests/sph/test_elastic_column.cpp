@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <map>
 
-#include "sph/fill.hpp"
-#include "sph/integrator/run.hpp"
+#include "sph/engine/fill.hpp"
+#include "sph/soil/run.hpp"
 
 namespace {
 

@@ -11,10 +11,10 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "sph/checkpoint.hpp"
-#include "sph/fill.hpp"
-#include "sph/integrator/run.hpp"
-#include "sph/soil_step.hpp"
+#include "sph/soil/checkpoint.hpp"
+#include "sph/engine/fill.hpp"
+#include "sph/soil/run.hpp"
+#include "sph/soil/soil_step.hpp"
 
 namespace {
 

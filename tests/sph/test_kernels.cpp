@@ -7,8 +7,8 @@
 #include <cmath>
 #include <random>
 
-#include "sph/kernel.hpp"
-#include "sph/neighbour_search.hpp"
+#include "sph/engine/kernel.hpp"
+#include "sph/engine/neighbour_search.hpp"
 
 namespace {
 

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "sph/benchmarks.hpp"
-#include "sph/integrator/run.hpp"
+#include "sph/soil/benchmarks.hpp"
+#include "sph/soil/run.hpp"
 
 namespace fs = std::filesystem;
 

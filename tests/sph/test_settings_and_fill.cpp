@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "sph/fill.hpp"
-#include "sph/model.hpp"
+#include "sph/engine/fill.hpp"
+#include "sph/soil/model.hpp"
 
 TEST_CASE("invalid settings are refused with a message naming the setting", "[sph][settings]") {
   sph::Settings s;

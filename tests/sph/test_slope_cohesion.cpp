@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "sph/fill.hpp"
-#include "sph/integrator/run.hpp"
+#include "sph/engine/fill.hpp"
+#include "sph/soil/run.hpp"
 
 namespace {
 

@@ -11,7 +11,7 @@
 
 #include "coupling/json_reader.hpp"
 #include "coupling/scene.hpp"
-#include "sph/model.hpp"
+#include "sph/soil/model.hpp"
 
 namespace coupling {
 

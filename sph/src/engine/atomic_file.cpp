@@ -1,4 +1,4 @@
-#include "sph/atomic_file.hpp"
+#include "sph/engine/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>

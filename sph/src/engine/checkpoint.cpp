@@ -5,7 +5,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "sph/atomic_file.hpp"
+#include "sph/engine/atomic_file.hpp"
 
 namespace sph {
 

@@ -1,4 +1,4 @@
-#include "sph/fill.hpp"
+#include "sph/engine/fill.hpp"
 
 #include <algorithm>
 #include <cmath>

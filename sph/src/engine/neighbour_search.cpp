@@ -1,4 +1,4 @@
-#include "sph/neighbour_search.hpp"
+#include "sph/engine/neighbour_search.hpp"
 
 #include <algorithm>
 #include <cmath>

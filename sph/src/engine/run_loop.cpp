@@ -9,8 +9,8 @@
 #include <optional>
 #include <sstream>
 
-#include "sph/atomic_file.hpp"
-#include "sph/vtk_output.hpp"
+#include "sph/engine/atomic_file.hpp"
+#include "sph/engine/vtk_output.hpp"
 
 namespace sph {
 

@@ -1,6 +1,6 @@
-#include "sph/vtk_output.hpp"
+#include "sph/engine/vtk_output.hpp"
 
-#include "sph/atomic_file.hpp"
+#include "sph/engine/atomic_file.hpp"
 
 #include <cstdint>
 #include <cstdio>

@@ -1,10 +1,10 @@
-#include "sph/benchmarks.hpp"
+#include "sph/soil/benchmarks.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "sph/fill.hpp"
-#include "sph/neighbour_search.hpp"
+#include "sph/engine/fill.hpp"
+#include "sph/engine/neighbour_search.hpp"
 
 namespace sph {
 

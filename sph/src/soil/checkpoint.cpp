@@ -1,4 +1,4 @@
-#include "sph/checkpoint.hpp"
+#include "sph/soil/checkpoint.hpp"
 
 namespace sph {
 

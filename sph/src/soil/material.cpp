@@ -1,4 +1,4 @@
-#include "sph/material.hpp"
+#include "sph/soil/material.hpp"
 
 #include <stdexcept>
 

@@ -1,12 +1,12 @@
-#include "sph/model.hpp"
+#include "sph/soil/model.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "sph/neighbour_search.hpp"
-#include "sph/soil_step.hpp"
+#include "sph/engine/neighbour_search.hpp"
+#include "sph/soil/soil_step.hpp"
 
 namespace sph {
 

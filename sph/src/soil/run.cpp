@@ -1,10 +1,10 @@
-#include "sph/integrator/run.hpp"
+#include "sph/soil/run.hpp"
 
 #include <cmath>
 #include <limits>
 
-#include "sph/checkpoint.hpp"
-#include "sph/soil_step.hpp"
+#include "sph/soil/checkpoint.hpp"
+#include "sph/soil/soil_step.hpp"
 
 namespace sph {
 

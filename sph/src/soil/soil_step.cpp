@@ -1,4 +1,4 @@
-#include "sph/soil_step.hpp"
+#include "sph/soil/soil_step.hpp"
 
 #include "sph/engine/cell_sort.hpp"
 #include "terms.hpp"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "sph/engine/particle_set.hpp"
-#include "sph/neighbour_search.hpp"
+#include "sph/engine/neighbour_search.hpp"
 
 namespace sph {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "sph/engine/particle_set.hpp"
-#include "sph/vtk_output.hpp"
+#include "sph/engine/vtk_output.hpp"
 
 namespace sph {
 

@@ -3,7 +3,7 @@
 // history, checkpoints, progress, blow-up guard, observers). To resume, call read_checkpoint(path, model) first,
 // then run() with the same options.
 #include "sph/engine/run_loop.hpp"
-#include "sph/model.hpp"
+#include "sph/soil/model.hpp"
 
 namespace sph {
 

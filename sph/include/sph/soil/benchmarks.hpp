@@ -1,6 +1,6 @@
 #pragma once
 // Reference problems shared by the tests and the benchmark program (no file I/O, no slopes).
-#include "sph/model.hpp"
+#include "sph/soil/model.hpp"
 
 namespace sph {
 

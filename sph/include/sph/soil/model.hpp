@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "sph/kernel.hpp"
-#include "sph/material.hpp"
+#include "sph/engine/kernel.hpp"
+#include "sph/soil/material.hpp"
 #include "sph/engine/particle_set.hpp"
 #include "sph/engine/stepper.hpp"
 #include "sph/soil/fields.hpp"

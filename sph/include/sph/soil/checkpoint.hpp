@@ -4,7 +4,7 @@
 #include <string>
 
 #include "sph/engine/checkpoint.hpp"
-#include "sph/model.hpp"
+#include "sph/soil/model.hpp"
 
 namespace sph {
 

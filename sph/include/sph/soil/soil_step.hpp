@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "sph/engine/stepper.hpp"
-#include "sph/model.hpp"
-#include "sph/neighbour_search.hpp"
+#include "sph/soil/model.hpp"
+#include "sph/engine/neighbour_search.hpp"
 
 namespace sph {
 
