@@ -29,7 +29,7 @@
 #include "coupling/scene.hpp"
 #include "coupling/sph_setup.hpp"
 #include "slope/search.hpp"
-#include "sph/integrator/run.hpp"
+#include "sph/soil/run.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -125,12 +125,14 @@ SphState state_of(const sph::Model& model) {
   SphState state;
   state.step = model.state.step;
   state.time = model.state.time;
-  const sph::Particles& p = model.particles;
+  const sph::ParticleSet& p = model.particles;
+  const sph::ConstSoilArrays soil = model.soil();
   for (std::size_t i = 0; i < p.size(); ++i) {
     ParticleRow row;
     row.id = p.id[i];
     row.kind = static_cast<int>(p.kind[i]);
-    row.values = {p.x[i], p.y[i], p.vx[i], p.vy[i], p.rho[i], p.sxx[i], p.syy[i], p.szz[i], p.sxy[i], p.plastic_strain[i]};
+    row.values = {p.x[i], p.y[i], p.vx[i], p.vy[i], p.rho[i], soil.sxx[i], soil.syy[i], soil.szz[i], soil.sxy[i],
+                  soil.plastic_strain[i]};
     state.particles[row.id] = row;
   }
   return state;
