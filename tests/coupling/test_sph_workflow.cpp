@@ -86,7 +86,7 @@ pid_t spawn_program(std::vector<std::string> args) {
 
 TEST_CASE("thesis slope 2, coarse: the SPH failure surface runs from behind the crest to the toe, close to the LEM "
           "circle",
-          "[sph][compare]") {
+          "[sph][compare][cli]") {
   // Source: shared/seeds/seed-002 section 4.2 (thesis slope 2, 45 deg, H = 10 m, c = 11 kPa, phi = 20 deg); the
   // thesis finds (Fig. 5-24 b) that its SPH surface and the Geo-Studio critical surface start and end at the same
   // points. Here at dx = 0.5 m (20 particles over the height) and 3 s of collapse.
@@ -124,7 +124,7 @@ TEST_CASE("thesis slope 2, coarse: the SPH failure surface runs from behind the 
   fs::remove_all(dir);
 }
 
-TEST_CASE("an SPH run killed mid-way and resumed ends in the same state as an uninterrupted run", "[sph][resume]") {
+TEST_CASE("an SPH run killed mid-way and resumed ends in the same state as an uninterrupted run", "[sph][resume][cli]") {
   // The column collapse of Bui et al. (2008) at dx = 5 mm (800 particles), 0.4 s, checkpoints every 0.1 s of
   // wall time. The killed run is stopped with SIGKILL (no chance to write anything more) once its first
   // checkpoint exists; `--resume` must then reach bitwise the same final checkpoint as the uninterrupted run.
@@ -163,7 +163,7 @@ TEST_CASE("an SPH run killed mid-way and resumed ends in the same state as an un
   fs::remove_all(dir);
 }
 
-TEST_CASE("an SPH run killed at any moment leaves a checkpoint that loads", "[sph][resume]") {
+TEST_CASE("an SPH run killed at any moment leaves a checkpoint that loads", "[sph][resume][cli]") {
   // Checkpoints every millisecond of wall time (about every step), SIGKILL at moments spread over ~1 s of
   // stepping: each time, the checkpoint on disk must be a whole one (its checksum and sizes are checked by
   // read_checkpoint), never torn.
@@ -195,7 +195,7 @@ TEST_CASE("an SPH run killed at any moment leaves a checkpoint that loads", "[sp
 }
 
 TEST_CASE("SPH run without the loads the user let it leave out: the report warns in every block that depends on it",
-          "[sph][loads]") {
+          "[sph][loads][cli]") {
   // cases/two_layer_water.json has a water table and a crest surcharge, which the SPH model does not carry yet;
   // with analyses.sph.ignore_loads the run goes ahead and sph, srm and the comparison say what was left out.
   const fs::path dir = fresh_dir("ignored_loads");
@@ -215,7 +215,7 @@ TEST_CASE("SPH run without the loads the user let it leave out: the report warns
   fs::remove_all(dir);
 }
 
-TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted, and a checkpoint", "[sph][resume]") {
+TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted, and a checkpoint", "[sph][resume][cli]") {
   const fs::path dir = fresh_dir("interrupt");
   nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/bui2008_column_collapse.json");
   scene["analyses"]["sph"]["particle_spacing_m"] = 0.005;
@@ -245,7 +245,7 @@ TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted
 #include "coupling/scene.hpp"
 #include "coupling/sph_setup.hpp"
 
-TEST_CASE("the thesis slopes fill with the thesis's particle counts", "[sph][fill]") {
+TEST_CASE("the thesis slopes fill with the thesis's particle counts", "[sph][fill][validation]") {
   // Source: shared/seeds/seed-002 section 4 (Tables 5-1, 5-3, 5-5): 3200, 3725 and 7100 soil particles at
   // 0.025, 0.2 and 0.25 m. The geometry of slopes 2 and 3 was inferred from these counts (see the cases' notes).
   const std::pair<const char*, std::size_t> cases[] = {

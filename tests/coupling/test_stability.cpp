@@ -144,7 +144,7 @@ json run_variant(const json& scene, const TemporaryFolder& folder, const std::st
 
 // ---- refusals: exit 2, a message naming the JSON path and the figures, nothing written ----
 
-TEST_CASE("stability: refused cases stop before running, say why, and write nothing", "[stability][refusal]") {
+TEST_CASE("stability: refused cases stop before running, say why, and write nothing", "[stability][refusal][cli]") {
   struct Refusal {
     const char* stem;
     std::vector<std::string> words;
@@ -172,7 +172,7 @@ TEST_CASE("stability: refused cases stop before running, say why, and write noth
   }
 }
 
-TEST_CASE("stability: the stiff-soil refusal states the planned step count", "[stability][refusal]") {
+TEST_CASE("stability: the stiff-soil refusal states the planned step count", "[stability][refusal][cli]") {
   // E = 1 GPa, nu = 0.25, rho = 2100 kg/m3: P-wave speed sqrt(M / rho) = 756 m/s (M = E (1 - nu) / ((1 + nu)
   // (1 - 2 nu))); dt = cfl h / (c (1 + 1.2 alpha)) = 0.2 x 0.024 / (756 x 1.12) = 5.67e-6 s; 60 s -> 1.06e7 steps.
   TemporaryFolder folder("stability-stiff");
@@ -186,7 +186,7 @@ TEST_CASE("stability: the stiff-soil refusal states the planned step count", "[s
   CHECK(planned > 5e6);
 }
 
-TEST_CASE("stability: a spacing that would exceed the memory limit is refused before allocating", "[stability][refusal]") {
+TEST_CASE("stability: a spacing that would exceed the memory limit is refused before allocating", "[stability][refusal][cli]") {
   // 3.8e7 particles would need about 37 GiB; the refusal must come from the estimate, not from an allocation:
   // the program's peak memory stays that of an empty run (a few MiB), far below one particle array (300 MiB).
   TemporaryFolder folder("stability-memory");
@@ -197,7 +197,7 @@ TEST_CASE("stability: a spacing that would exceed the memory limit is refused be
 
 // ---- SPH runs that must finish (or stop) sensibly ----
 
-TEST_CASE("stability: a very cohesive slope barely moves and never yields", "[stability][sph]") {
+TEST_CASE("stability: a very cohesive slope barely moves and never yields", "[stability][sph][cli]") {
   // c = 1 MPa (LEM FS far above 1), E = 100 MPa, nu = 0.3, sudden gravity: only the elastic response remains.
   // One-dimensional settlement of the crest column under its own weight: delta = gamma H^2 / (2 M), M the P-wave
   // (oedometric) modulus; sudden loading of an undamped body overshoots it by up to a factor 2, and the free face
@@ -220,7 +220,7 @@ TEST_CASE("stability: a very cohesive slope barely moves and never yields", "[st
 
 TEST_CASE("stability: ramped gravity loads a stable slope with less kinetic energy and no more plastic strain "
           "than sudden gravity",
-          "[stability][sph][gravity]") {
+          "[stability][sph][gravity][cli]") {
   // Same slope (c = 40 kPa, phi = 20 deg, LEM Bishop FS well above 1), 4 s; the ramp lasts 2 s, about 2.7 times
   // the first shear-mode period T1 = 4H/Vs = 0.75 s. Both must stay in place (below 2 % of H = 0.2 m).
   TemporaryFolder folder("stability-gravity");
@@ -245,7 +245,7 @@ TEST_CASE("stability: ramped gravity loads a stable slope with less kinetic ener
 
 TEST_CASE("stability: failing slopes of extreme materials finish, fail as LEM says, and stay within the energy "
           "released",
-          "[stability][sph]") {
+          "[stability][sph][cli]") {
   // Each has an LEM Bishop FS below 1 and must move more than 0.5 m (5 % of the 10 m slopes; 12 % of the 4 m face).
   // Energy: kinetic energy + plastic work cannot exceed the potential energy released (elastic energy and viscous
   // losses are >= 0); 5 % margin for the time discretisation.
@@ -272,7 +272,7 @@ TEST_CASE("stability: failing slopes of extreme materials finish, fail as LEM sa
 
 TEST_CASE("stability: columns of a = 1 (2.5 mm) and a = 2 (5 mm) slide down a no-slip back wall without blowing up "
           "and match the true-2-D laws",
-          "[stability][sph][collapse]") {
+          "[stability][sph][collapse][cli]") {
   // Both blew up before the continuity equation used the walls' own velocity (non-positive density next to the back
   // wall near the free surface; shared/references/sph-collapse-blowup.md). Reference: Nguyen, Bui & Fukagawa (2015),
   // arXiv:1512.05180, aluminium rods: h_f = h_0 / (1.42 a^(2/3)); (d - d_0)/d_0 = 3.25 a^0.96 (a < 1.5),
@@ -300,7 +300,7 @@ TEST_CASE("stability: columns of a = 1 (2.5 mm) and a = 2 (5 mm) slide down a no
 }
 
 TEST_CASE("stability: a very soft soil stops with the blow-up diagnostic and no comparison from the diverged state",
-          "[stability][sph]") {
+          "[stability][sph][cli]") {
   TemporaryFolder folder("stability-soft");
   const Run run = run_case("run", case_file("sph_very_soft_soil_blow_up"), folder.path / "out");
   INFO(run.output);
@@ -316,7 +316,7 @@ TEST_CASE("stability: a very soft soil stops with the blow-up diagnostic and no 
   CHECK(report["comparison"].contains("error"));
 }
 
-TEST_CASE("stability: a run that creates energy finishes with a warning, not silently", "[stability][sph]") {
+TEST_CASE("stability: a run that creates energy finishes with a warning, not silently", "[stability][sph][cli]") {
   TemporaryFolder folder("stability-energy");
   const Run run = run_case("run", case_file("sph_energy_created_warning"), folder.path / "out");
   REQUIRE(run.status == 0);
@@ -329,7 +329,7 @@ TEST_CASE("stability: a run that creates energy finishes with a warning, not sil
 
 // ---- limit equilibrium ----
 
-TEST_CASE("stability: vertical cut in undrained clay matches Taylor's stability number", "[stability][lem]") {
+TEST_CASE("stability: vertical cut in undrained clay matches Taylor's stability number", "[stability][lem][cli]") {
   // Taylor (1937): beta = 90 deg, phi = 0: N = c/(F gamma H) = 0.261 -> FS = 30/(0.261 x 20 x 6) = 0.958 (toe
   // circles; chart read to about 1 %: 2 % tolerance). For phi = 0, Ordinary, Bishop, Spencer and M-P are all exact
   // moment equilibrium on a circle. The force-equilibrium Janbu methods approach the Culmann plane 4c/(gamma H) = 1.
@@ -351,7 +351,7 @@ TEST_CASE("stability: vertical cut in undrained clay matches Taylor's stability 
 }
 
 TEST_CASE("stability: vertical cut in a c-phi soil lies between the Rankine lower bound and the Culmann plane",
-          "[stability][lem]") {
+          "[stability][lem][cli]") {
   // H = 6 m, c = 20 kPa, phi = 20 deg, gamma = 20 kN/m3. Culmann / Rankine: H_crit = 4 c/gamma tan(45 + phi/2);
   // F is the factor on c and tan(phi) that makes H_crit(F) = 6 m (0.964). The Rankine stress field without tension
   // (H = 2 c/gamma tan(45 + phi/2), Drucker & Prager 1952) gives a lower bound of the collapse height (F ~ 0.5).
@@ -381,7 +381,7 @@ TEST_CASE("stability: vertical cut in a c-phi soil lies between the Rankine lowe
   for (const char* m : {"spencer", "morgenstern_price", "morgenstern_price_constant"}) CHECK(fs_of(report, m) >= 0.9 * plane);
 }
 
-TEST_CASE("stability: phi = 0 slope at 60 deg matches Taylor's chart", "[stability][lem]") {
+TEST_CASE("stability: phi = 0 slope at 60 deg matches Taylor's chart", "[stability][lem][cli]") {
   // Taylor (1937): beta = 60 deg, phi = 0, toe circle: N = 0.191 -> FS = 38.2 / (0.191 x 20 x 10) = 1.000.
   TemporaryFolder folder("stability-taylor60");
   REQUIRE(run_case("lem", case_file("lem_phi0_taylor_60deg"), folder.path / "out").status == 0);
@@ -391,7 +391,7 @@ TEST_CASE("stability: phi = 0 slope at 60 deg matches Taylor's chart", "[stabili
   CHECK(fs_of(report, "ordinary") == Approx(1.0).epsilon(0.02));
 }
 
-TEST_CASE("stability: a very flat slope has FS >> 1, at the infinite-slope value", "[stability][lem]") {
+TEST_CASE("stability: a very flat slope has FS >> 1, at the infinite-slope value", "[stability][lem][cli]") {
   // 1:20, c = 0, phi = 30 deg: FS = tan(phi)/tan(beta) = 11.55 for the infinite slope; shallow circles approach it
   // from above (5 %).
   TemporaryFolder folder("stability-flat");
@@ -406,7 +406,7 @@ TEST_CASE("stability: a very flat slope has FS >> 1, at the infinite-slope value
   }
 }
 
-TEST_CASE("stability: a submerged slope has the factor of safety of the buoyant dry slope", "[stability][lem]") {
+TEST_CASE("stability: a submerged slope has the factor of safety of the buoyant dry slope", "[stability][lem][cli]") {
   // Still water above the crest acts through buoyancy only: effective-stress FS = FS of the dry slope with
   // gamma' = gamma - gamma_w (1 % for the methods with interslice or Bishop normal forces). The Ordinary method is
   // known to be conservative under high pore pressures (N' = W cos a - u l; Whitman & Bailey 1967): it must only
@@ -429,7 +429,7 @@ TEST_CASE("stability: a submerged slope has the factor of safety of the buoyant 
 }
 
 TEST_CASE("stability: circles near a rigid base stay above it and cannot beat the deep-base minimum",
-          "[stability][lem]") {
+          "[stability][lem][cli]") {
   // Restricting the admissible surfaces can only raise the minimum: FS(base 0.5 m below the toe) >= FS(base 20 m
   // below), to the search's resolution (0.5 %). No critical circle may dip below the base inside its span.
   TemporaryFolder folder("stability-base");
@@ -451,7 +451,7 @@ TEST_CASE("stability: circles near a rigid base stay above it and cannot beat th
 }
 
 TEST_CASE("stability: a thin weak layer lowers the factor of safety and the critical circles reach it",
-          "[stability][lem]") {
+          "[stability][lem][cli]") {
   TemporaryFolder folder("stability-weak");
   const json scene = read_json(case_file("lem_thin_weak_layer"));
   const json weak = run_variant(scene, folder, "weak");

@@ -118,7 +118,7 @@ TEST_CASE("srm: scene keys are validated with their JSON paths", "[srm]") {
   CHECK(mentions(errors_of({{"sph", sph}, {"srm", 3}}), "analyses.srm"));
 }
 
-TEST_CASE("srm: Griffiths & Lane example 1 at 1 m spacing is within 15 % of LEM Bishop", "[srm]") {
+TEST_CASE("srm: Griffiths & Lane example 1 at 1 m spacing is within 15 % of LEM Bishop", "[srm][validation]") {
   // Reference: Griffiths & Lane (1999), FE strength reduction about 1.4, Bishop 1.38; our LEM Bishop 1.378.
   // At 1 m spacing (10 particles over the 10 m height) SPH measured 1.316 in [1.296, 1.335] (-4.5 %); the
   // tolerance of 15 % allows for the coarse resolution (the failure surface is resolved by a few particles).

@@ -120,7 +120,7 @@ TEST_CASE("m_alpha below 0.2 near the toe is reported, not turned into a number"
   CHECK(slope::factor_of_safety(mass, slope::Method::ordinary).factor_of_safety.has_value());
 }
 
-TEST_CASE("phi = 0: Bishop equals the Ordinary method on a circle", "[slope][methods][closed-form]") {
+TEST_CASE("phi = 0: Bishop equals the Ordinary method on a circle", "[slope][methods][closed-form][validation]") {
   // With tan phi = 0, m_a = cos a and both reduce to F = sum(c l R) / sum(W x) (Bishop 1955).
   slope::Section s = griffiths_lane_1999();
   s.materials[0] = material("clay", 18.0, 40.0, 0.0);
@@ -136,7 +136,7 @@ TEST_CASE("phi = 0: Bishop equals the Ordinary method on a circle", "[slope][met
   }
 }
 
-TEST_CASE("infinite-slope limit: a very flat circle in a long uniform slope", "[slope][methods][closed-form]") {
+TEST_CASE("infinite-slope limit: a very flat circle in a long uniform slope", "[slope][methods][closed-form][validation]") {
   // Infinite slope, c' = 0 (e.g. Duncan, Wright & Brandon 2014, ch. 6): F = tan(phi') / tan(beta); with pore
   // pressure ratio ru = u / (gamma z): F = (1 - ru sec^2 beta) tan(phi') / tan(beta); with a horizontal seismic
   // coefficient kh: F = (cos beta - kh sin beta) tan(phi') / (sin beta + kh cos beta). Every method tends to it.

@@ -47,7 +47,7 @@ slope::Section fredlund_krahn(bool piezometric_line) {
 }  // namespace
 
 TEST_CASE("Fredlund & Krahn (1977) specified circle, case 1 (dry) and case 5 (piezometric line)",
-          "[slope][published]") {
+          "[slope][published][validation]") {
   // Published factors of safety (Fredlund & Krahn 1977, table of results for cases 1-6, as reproduced on the
   // MacSlope verification page "Fredlund and Krahn Example Problem"):
   //   case 1: Ordinary 1.928, Bishop 2.080, Janbu corrected 2.041, Spencer 2.073 (lambda 0.237),
@@ -80,7 +80,7 @@ TEST_CASE("Fredlund & Krahn (1977) specified circle, case 1 (dry) and case 5 (pi
   }
 }
 
-TEST_CASE("ACADS EX1(a): homogeneous slope, critical circle search", "[slope][published]") {
+TEST_CASE("ACADS EX1(a): homogeneous slope, critical circle search", "[slope][published][validation]") {
   // Giam & Donald (1989), ACADS slope stability programs review, problem 1(a): referee F = 1.00; the mean of the
   // Bishop results of 18 programs 0.993. 2:1 slope from (30, 25) up to (50, 35) facing left, base at y = 20,
   // c' = 3 kPa, phi' = 19.6 deg, gamma = 20 kN/m^3, dry.
@@ -95,7 +95,7 @@ TEST_CASE("ACADS EX1(a): homogeneous slope, critical circle search", "[slope][pu
   CHECK(searched(r, slope::Method::spencer) == Approx(1.00).epsilon(0.02));
 }
 
-TEST_CASE("ACADS EX1(c): three soil layers, critical circle search", "[slope][published][layered]") {
+TEST_CASE("ACADS EX1(c): three soil layers, critical circle search", "[slope][published][layered][validation]") {
   // Giam & Donald (1989), problem 1(c): referee F = 1.39; mean Bishop of 16 programs 1.406. Same slope as 1(a);
   // soil 1 (c' = 0, phi' = 38 deg) above the line (30,25)-(40,27)-(50,29)-(54,31)-(70,31); soil 2
   // (c' = 5.3 kPa, phi' = 23 deg) above the line (40,27)-(52,24)-(70,24); soil 3 (c' = 7.2 kPa, phi' = 20 deg)
@@ -115,7 +115,7 @@ TEST_CASE("ACADS EX1(c): three soil layers, critical circle search", "[slope][pu
   CHECK(searched(r, slope::Method::morgenstern_price) == Approx(searched(r, slope::Method::spencer)).epsilon(0.01));
 }
 
-TEST_CASE("Arai & Tagyo (1985): homogeneous slope dry and with a water table", "[slope][published][water]") {
+TEST_CASE("Arai & Tagyo (1985): homogeneous slope dry and with a water table", "[slope][published][water][validation]") {
   // Arai & Tagyo (1985), Soils and Foundations 25(1):43-51, examples 1 and 3: 1.5:1 slope, H = 20 m, facing
   // left (toe (18, 15), crest (48, 35)), base y = 0, c' = 41.65 kPa, phi' = 15 deg, gamma = 18.82 kN/m^3.
   // Published Bishop (critical circle): 1.451 dry, 1.138 with the water table (0,15)-(18,15)-(30,23)-(48,29)-
@@ -134,7 +134,7 @@ TEST_CASE("Arai & Tagyo (1985): homogeneous slope dry and with a water table", "
   CHECK(searched(wet, slope::Method::spencer) == Approx(searched(wet, slope::Method::bishop)).epsilon(0.01));
 }
 
-TEST_CASE("Yamagami & Ueta (1988): homogeneous slope, Bishop and Ordinary", "[slope][published]") {
+TEST_CASE("Yamagami & Ueta (1988): homogeneous slope, Bishop and Ordinary", "[slope][published][validation]") {
   // Yamagami & Ueta (1988), Proc. 6th ICONMIG Innsbruck 1219-1223: 2:1 slope, H = 5 m (toe (5, 5), crest
   // (15, 10)), c' = 9.8 kPa, phi' = 10 deg, gamma = 17.64 kN/m^3. Published critical circles: Bishop 1.348,
   // Fellenius (Ordinary) 1.282.

@@ -50,7 +50,7 @@ double taylor_number(double beta_deg, double depth_factor, bool firm_base_at_toe
 }  // namespace
 
 TEST_CASE("Griffiths & Lane (1999) slope: the Bishop search lands within 2 % of the charts' 1.38",
-          "[slope][search][published]") {
+          "[slope][search][published][validation]") {
   // Griffiths & Lane (1999), Geotechnique 49(3):387-403: Bishop & Morgenstern (1960) charts give F = 1.38 for
   // this slope (finite elements 1.4). Checked on the section of cases/griffiths_lane_1999.json (foundation layer,
   // D = 2) and without a foundation layer (D = 1, the rigid base at the toe level).
@@ -74,7 +74,7 @@ TEST_CASE("Griffiths & Lane (1999) slope: the Bishop search lands within 2 % of 
 }
 
 TEST_CASE("phi = 0 toe circles reproduce Taylor's (1937) stability numbers for steep slopes",
-          "[slope][search][closed-form]") {
+          "[slope][search][closed-form][validation]") {
   // Taylor (1937), stability chart for phi = 0: slopes steeper than 53 deg fail on toe circles whatever the depth
   // factor; N = c / (gamma H F) = 0.261 (90 deg, H_c = 3.83 c/gamma), 0.219 (75 deg), 0.191 (60 deg),
   // 0.181 (53 deg). Firm base at the toe level.
@@ -85,7 +85,7 @@ TEST_CASE("phi = 0 toe circles reproduce Taylor's (1937) stability numbers for s
 }
 
 TEST_CASE("phi = 0 base-tangent circles approach Taylor's deep-base limit N = 0.181 from below",
-          "[slope][search][closed-form]") {
+          "[slope][search][closed-form][validation]") {
   // Taylor (1937) / Fellenius: for slopes flatter than 53 deg on a deep stratum the critical circle touches the
   // rigid base and N rises with the depth factor D toward 0.181 (stability factor 5.52) as D -> infinity.
   const double n2 = taylor_number(30.0, 2.0, false);
@@ -188,7 +188,7 @@ TEST_CASE("the search reports its FS map, the number of trials and its time", "[
 }
 
 TEST_CASE("a cohesionless slope: the search stops at the minimum depth near the infinite-slope value",
-          "[slope][search]") {
+          "[slope][search][validation]") {
   // c' = 0: the most critical surfaces are the shallowest (F -> tan(phi')/tan(beta), infinite slope); the
   // search keeps masses at least 2 % of the relief deep, so F lies just above that limit.
   const slope::Section s = simple_slope(10.0, 30.0, 20.0, 20.0, 5.0, material("sand", 19.0, 0.0, 35.0));

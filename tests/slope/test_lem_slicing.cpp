@@ -64,7 +64,7 @@ TEST_CASE("section_error names what is wrong with a section", "[slope][geometry]
   CHECK_THAT(slope::section_error(s), Contains("unit weight"));
 }
 
-TEST_CASE("slice weights add up to the closed-form circular-segment area", "[slope][slicing]") {
+TEST_CASE("slice weights add up to the closed-form circular-segment area", "[slope][slicing][validation]") {
   // Flat ground at y = 20, circle centre 8 m above it, R = 12: a segment of a circle (closed form). The base is
   // the chord polygon of the arc, so its area falls short of the segment by O(1/n^2): 0.1 % with 50 slices.
   const slope::Section s = flat_ground(20.0, 0.0);

@@ -69,7 +69,7 @@ TEST_CASE("tension beyond the apex is cracked back to I1 = k_c/alpha_phi (Bui 20
   CHECK(std::fabs(t.xy) < 1e-12);
 }
 
-TEST_CASE("elastic loading below yield gives plane-strain Hooke's law exactly", "[sph][constitutive]") {
+TEST_CASE("elastic loading below yield gives plane-strain Hooke's law exactly", "[sph][constitutive][validation]") {
   const auto mc = soil(1e9, 30.0);  // far from yield
   const Stress s{-100e3, -200e3, -90e3, 5e3};
   const double exx = 1e-3, eyy = -2e-3, exy = 0.5e-3;

@@ -76,7 +76,7 @@ TEST_CASE("ramped gravity: the factor grows linearly to 1 and is 1 for the other
 }
 
 TEST_CASE("ramped gravity loads an elastic column with far less kinetic energy than sudden gravity",
-          "[sph][gravity]") {
+          "[sph][gravity][validation]") {
   // Column period: first mode of a 2 m column fixed at the base, T1 = 4 H / c_p (c_p from the P-wave modulus of
   // the constrained column) = 4 x 2 / 82 m/s ~ 0.1 s. Ramp over 1 s (~10 T1), both runs to 1.5 s.
   auto sudden = elastic_column(sph::GravityMode::sudden, 0.0, 1.5);
