@@ -24,7 +24,7 @@ std::optional<LengthLimit> read_length_limit(JsonReader& r, const std::string& n
 
 std::vector<std::string> read_methods(JsonReader& r, const std::vector<std::string>& known) {
   std::vector<std::string> methods;
-  const nlohmann::json* list = r.array("methods", Need::optional, 1);
+  const nlohmann::json* list = r.array("methods", Need::optional, 1, limits::name_list);
   if (list == nullptr) {
     const bool has_bishop = std::find(known.begin(), known.end(), "bishop") != known.end();
     if (has_bishop) methods.push_back("bishop");

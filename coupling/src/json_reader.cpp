@@ -9,6 +9,18 @@
 namespace coupling {
 
 void Diagnostics::error(std::string_view path, std::string_view message) {
+  ++count_;
+  if (count_ > max_reported_faults) {
+    std::string summary = "... and " + std::to_string(count_ - max_reported_faults) + " more fault" +
+                          (count_ - max_reported_faults == 1 ? "" : "s") + " (only the first " +
+                          std::to_string(max_reported_faults) + " are shown)";
+    if (count_ == max_reported_faults + 1) {
+      messages_.push_back(std::move(summary));
+    } else {
+      messages_.back() = std::move(summary);
+    }
+    return;
+  }
   std::string line(path.empty() ? std::string_view("(top level)") : path);
   line += ": ";
   line += message;
@@ -185,6 +197,15 @@ std::optional<std::pair<double, double>> read_pair(const nlohmann::json& value, 
   return std::pair{*a, *b};
 }
 
+bool within_size_limit(const nlohmann::json& value, const std::string& path, const SizeLimit& limit,
+                       Diagnostics& diagnostics) {
+  if (value.size() <= limit.max) return true;
+  diagnostics.error(path, "too many " + std::string(limit.what) + " (got " + std::to_string(value.size()) +
+                              "; at most " + std::to_string(limit.max) + " allowed: " + std::string(limit.reason) +
+                              ")");
+  return false;
+}
+
 JsonReader::JsonReader(const nlohmann::json& value, std::string path, Diagnostics& diagnostics)
     : path_(std::move(path)), diagnostics_(&diagnostics) {
   if (value.is_object()) {
@@ -264,7 +285,7 @@ std::optional<JsonReader> JsonReader::object(std::string_view key, Need need, st
 }
 
 const nlohmann::json* JsonReader::array(std::string_view key, Need need, std::size_t min_size,
-                                        std::string_view expected) {
+                                        const SizeLimit& limit, std::string_view expected) {
   const nlohmann::json* value = find(key, need, expected);
   if (value == nullptr) return nullptr;
   if (!value->is_array()) {
@@ -277,6 +298,7 @@ const nlohmann::json* JsonReader::array(std::string_view key, Need need, std::si
                                           ")");
     return nullptr;
   }
+  if (!within_size_limit(*value, path_of(key), limit, *diagnostics_)) return nullptr;
   return value;
 }
 

@@ -4,6 +4,7 @@
 #include <set>
 #include <sstream>
 
+#include "coupling/input_limits.hpp"
 #include "coupling/json_reader.hpp"
 #include "coupling/scene.hpp"
 #include "coupling/comparison.hpp"
@@ -105,7 +106,8 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
 
   std::vector<std::string> method_keys;
   for (slope::Method method : slope::all_methods()) method_keys.emplace_back(slope::method_key(method));
-  if (const nlohmann::json* methods = lem->array("methods", Need::optional, 1, "an array of method names")) {
+  if (const nlohmann::json* methods =
+          lem->array("methods", Need::optional, 1, limits::name_list, "an array of method names")) {
     result.methods.clear();
     for (std::size_t i = 0; i < methods->size(); ++i) {
       const std::string path = index_path(lem->path_of("methods"), i);
@@ -247,6 +249,8 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
 }
 
 Scene parse_scene(std::string_view text, const std::filesystem::path& file) {
+  // Before parsing: a deeply nested document would overflow the stack when it is copied or printed.
+  if (auto fault = nesting_depth_fault(text)) throw SceneError({std::move(*fault)});
   Diagnostics diagnostics;
   nlohmann::json document;
   try {
@@ -274,13 +278,41 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file) {
   return scene_from_json(document, file);
 }
 
+namespace {
+
+std::string file_too_large(const std::filesystem::path& file, const std::string& size) {
+  return "scene file \"" + file.string() + "\" is too large (" + size + "; at most " +
+         std::to_string(max_scene_file_bytes) + " bytes allowed: " + std::string(max_scene_file_reason) + ")";
+}
+
+// The whole text of `in`, or nullopt once it exceeds max_scene_file_bytes: a pipe or device of unknown (or endless)
+// size is never read further than the limit.
+std::optional<std::string> read_at_most_limit(std::istream& in) {
+  std::string text;
+  std::vector<char> buffer(1 << 16);
+  while (in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    text.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > max_scene_file_bytes) return std::nullopt;
+  }
+  return text;
+}
+
+}  // namespace
+
 Scene load_scene(const std::filesystem::path& file) {
+  // Regular files are refused by their size, before anything is read.
+  std::error_code size_error;
+  const std::uintmax_t bytes = std::filesystem::file_size(file, size_error);
+  if (!size_error && bytes > max_scene_file_bytes) {
+    throw SceneError({file_too_large(file, std::to_string(bytes) + " bytes")});
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw SceneError({"cannot read scene file \"" + file.string() + "\" (does it exist and is it readable?)"});
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::optional<std::string> text = read_at_most_limit(in);
+  if (!text) throw SceneError({file_too_large(file, "more than " + std::to_string(max_scene_file_bytes) + " bytes")});
   if (in.bad()) throw SceneError({"cannot read scene file \"" + file.string() + "\""});
-  return parse_scene(text.str(), file);
+  return parse_scene(*text, file);
 }
 
 std::vector<std::string> lem_method_keys(const Scene& scene) {

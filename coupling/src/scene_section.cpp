@@ -165,7 +165,7 @@ std::optional<slope::Water> read_water(JsonReader& water, double x_min, double x
   Diagnostics& diagnostics = water.diagnostics();
   slope::Water result;
   std::optional<Polyline> line;
-  if (const nlohmann::json* points = water.array("piezometric_line_m", Need::required, 2,
+  if (const nlohmann::json* points = water.array("piezometric_line_m", Need::required, 2, limits::polyline_points,
                                                  "an array of at least two points [x_m, y_m]")) {
     line = read_polyline(*points, water.path_of("piezometric_line_m"), diagnostics);
   }
@@ -363,7 +363,8 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
   // Materials first: profile lines refer to them by name.
   std::map<std::string, std::size_t> material_index;
   std::vector<std::string> material_names;  // in the order defined, for messages
-  if (const nlohmann::json* materials = section.array("materials", Need::required, 1, "an array of materials")) {
+  if (const nlohmann::json* materials = section.array("materials", Need::required, 1, limits::materials,
+                                                      "an array of materials")) {
     std::map<std::string, std::string> first_path;
     for (std::size_t i = 0; i < materials->size(); ++i) {
       JsonReader m((*materials)[i], index_path(section.path_of("materials"), i), diagnostics);
@@ -391,7 +392,7 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
 
   std::vector<LineRead> lines;
   bool lines_ok = false;
-  if (const nlohmann::json* profile = section.array("profile_lines", Need::required, 1,
+  if (const nlohmann::json* profile = section.array("profile_lines", Need::required, 1, limits::profile_lines,
                                                     "an array of profile lines, the ground surface first")) {
     lines_ok = true;
     for (std::size_t i = 0; i < profile->size(); ++i) {
@@ -413,7 +414,8 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
         }
       }
       if (const nlohmann::json* points =
-              l.array("points_m", Need::required, 2, "an array of at least two points [x_m, y_m]")) {
+              l.array("points_m", Need::required, 2, limits::polyline_points,
+                      "an array of at least two points [x_m, y_m]")) {
         line.points = read_polyline(*points, l.path_of("points_m"), diagnostics);
       }
       l.finish();
@@ -440,7 +442,7 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
     result.section.water = read_water(*water, x_min, x_max, bottom_y, geometry_ok);
   }
   bool surcharges_ok = true;
-  if (const nlohmann::json* surcharges = section.array("surcharges", Need::optional)) {
+  if (const nlohmann::json* surcharges = section.array("surcharges", Need::optional, 0, limits::surcharges)) {
     result.section.surcharges = read_surcharges(*surcharges, section.path_of("surcharges"), x_min, x_max,
                                                 geometry_ok, diagnostics, surcharges_ok);
   }

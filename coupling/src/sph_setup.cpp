@@ -27,7 +27,8 @@ namespace {
 constexpr double gibibyte = 1024.0 * 1024.0 * 1024.0;
 
 std::optional<WallSides> read_sides(JsonReader& reader, std::string_view key, WallSides fallback) {
-  const nlohmann::json* sides = reader.array(key, Need::optional, 0, "an array of \"left\", \"right\", \"bottom\"");
+  const nlohmann::json* sides = reader.array(key, Need::optional, 0, limits::name_list,
+                                             "an array of \"left\", \"right\", \"bottom\"");
   if (!sides) return reader.has(key) ? std::nullopt : std::optional<WallSides>(fallback);
   WallSides out{false, false, false};
   bool ok = true;
@@ -135,7 +136,7 @@ const char* const section_load_names[] = {"water", "surcharges", "seismic"};
 // analyses.sph.ignore_loads: the section loads the user accepts SPH leaves out (each at most once).
 std::vector<std::string> read_ignored_loads(JsonReader& r) {
   std::vector<std::string> names;
-  const nlohmann::json* list = r.array("ignore_loads", Need::optional);
+  const nlohmann::json* list = r.array("ignore_loads", Need::optional, 0, limits::name_list);
   if (list == nullptr) return names;
   for (std::size_t i = 0; i < list->size(); ++i) {
     const std::string path = index_path(r.path_of("ignore_loads"), i);
@@ -307,11 +308,13 @@ std::optional<std::vector<ParticleBody>> read_particle_bodies(const nlohmann::js
     diagnostics.error("bodies", "expected a non-empty array of bodies ({\"name\", \"polygon_m\", \"material\"})");
     return std::nullopt;
   }
+  if (!within_size_limit(bodies, "bodies", limits::bodies, diagnostics)) return std::nullopt;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     JsonReader b(bodies[i], index_path("bodies", i), diagnostics);
     ParticleBody body;
     body.name = b.string("name", Need::optional).value_or("body " + std::to_string(i));
-    if (const nlohmann::json* polygon = b.array("polygon_m", Need::required, 3, "an array of at least 3 [x, y] points")) {
+    if (const nlohmann::json* polygon = b.array("polygon_m", Need::required, 3, limits::polygon_vertices,
+                                                "an array of at least 3 [x, y] points")) {
       for (std::size_t k = 0; k < polygon->size(); ++k)
         if (auto p = read_pair((*polygon)[k], index_path(b.path_of("polygon_m"), k), diagnostics))
           body.polygon.push_back({p->first, p->second});

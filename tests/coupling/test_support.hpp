@@ -1,7 +1,9 @@
 #pragma once
 // Small helpers shared by the coupling tests that run the program on files.
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -28,4 +30,24 @@ inline nlohmann::json read_json(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in.good()) throw std::runtime_error("cannot read " + file.string());  // fails the test
   return nlohmann::json::parse(in);
+}
+
+// The sphslope program's exit status (-1 when it did not exit normally, e.g. killed by a signal) and its stdout
+// and stderr together.
+struct ProgramRun {
+  int status = -1;
+  std::string output;
+};
+
+inline ProgramRun run_sphslope(const std::string& arguments) {
+  const std::string command = std::string("'") + SPHSLOPE_BINARY + "' " + arguments + " 2>&1";
+  ProgramRun result;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) throw std::runtime_error("cannot start " + command);  // fails the test
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
+  const int raw = ::pclose(pipe);
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return result;
 }

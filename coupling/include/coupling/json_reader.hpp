@@ -17,18 +17,23 @@
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/input_limits.hpp"
+
 namespace coupling {
 
-// Validation errors, each "<json path>: <what is wrong> (<what is allowed>)".
+// Validation errors, each "<json path>: <what is wrong> (<what is allowed>)". Only the first max_reported_faults
+// are kept; a last line counts the others, so a hostile file cannot make the program print millions of lines.
 class Diagnostics {
  public:
   void error(std::string_view path, std::string_view message);
-  bool empty() const { return messages_.empty(); }
-  std::size_t size() const { return messages_.size(); }
+  bool empty() const { return count_ == 0; }
+  // Every fault reported, including those not kept.
+  std::size_t size() const { return count_; }
   const std::vector<std::string>& messages() const { return messages_; }
 
  private:
   std::vector<std::string> messages_;
+  std::size_t count_ = 0;
 };
 
 // "section.materials" + "name" -> "section.materials.name"; "" + "section" -> "section".
@@ -89,7 +94,9 @@ class JsonReader {
   // A nested object; the returned reader reports its own unknown keys in its finish().
   std::optional<JsonReader> object(std::string_view key, Need need, std::string_view expected = "an object");
   // An array; `min_size` elements at least. Returns the JSON array (elements are read with the free functions below).
-  const nlohmann::json* array(std::string_view key, Need need, std::size_t min_size = 0,
+  // `limit`: the most elements allowed (input_limits.hpp); a larger array is reported and not returned, so nothing
+  // is done per element.
+  const nlohmann::json* array(std::string_view key, Need need, std::size_t min_size, const SizeLimit& limit,
                               std::string_view expected = "an array");
 
   // Reports every key of the object that was never asked for, with a suggestion when one is close.
@@ -113,6 +120,11 @@ std::optional<long> read_integer(const nlohmann::json& value, const std::string&
                                  const Bounds& bounds = Bounds::any());
 std::optional<std::string> read_string(const nlohmann::json& value, const std::string& path,
                                        Diagnostics& diagnostics, bool non_empty = true);
+
+// Whether the array `value` has at most `limit.max` elements; reports at `path` when not:
+//   section.surcharges: too many surcharges (got 5000; at most 1000 allowed: each strip load is ...)
+bool within_size_limit(const nlohmann::json& value, const std::string& path, const SizeLimit& limit,
+                       Diagnostics& diagnostics);
 
 // An [x, y] pair of numbers (a point, or a [min, max] range).
 std::optional<std::pair<double, double>> read_pair(const nlohmann::json& value, const std::string& path,
