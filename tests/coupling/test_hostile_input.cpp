@@ -158,7 +158,8 @@ TEST_CASE("hostile input: every array beyond its size limit is refused with its 
   }
 }
 
-TEST_CASE("hostile input: a million-fault scene prints the first faults and counts the rest", "[scene][hostile]") {
+TEST_CASE("hostile input: a scene with a thousand faults prints the first 200 and counts the rest",
+          "[scene][hostile]") {
   nlohmann::json scene = case_scene("thesis_slope2.json");
   const std::size_t bad_points = 1000;
   scene["section"]["profile_lines"][0]["points_m"] = nlohmann::json::array_t(bad_points, "not a point");
