@@ -22,25 +22,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct ProgramOutput {
-  int status = -1;
-  std::string output;  // stdout and stderr together
-};
-
 std::string quoted(const std::string& text) { return "'" + text + "'"; }
 
-ProgramOutput run_program(const std::string& arguments) {
-  const std::string command = quoted(SPHSLOPE_BINARY) + " " + arguments + " 2>&1";
-  ProgramOutput result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
-  const int raw = ::pclose(pipe);
-  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return result;
-}
+ProgramRun run_program(const std::string& arguments) { return run_sphslope(arguments); }
 
 fs::path source_path(const std::string& relative) { return fs::path(SPHSLOPE_SOURCE_DIR) / relative; }
 
@@ -111,7 +95,7 @@ TEST_CASE("malformed scenes exit with status 2 and name the JSON path of the fau
     const fs::path file = source_path("tests/coupling/bad_scenes") / bad.file;
     INFO("scene: " << file.string());
     REQUIRE(fs::exists(file));
-    const ProgramOutput result = run_program(std::string(bad.command) + " " + quoted(file.string()));
+    const ProgramRun result = run_program(std::string(bad.command) + " " + quoted(file.string()));
     INFO("output:\n" << result.output);
     CHECK(result.status == 2);
     CHECK(result.output.find(bad.expected) != std::string::npos);
@@ -134,7 +118,7 @@ TEST_CASE("invalid input writes nothing, even with an output folder", "[cli][sce
   for (const char* name : {"negative_unit_weight.json", "no_valid_circle.json"}) {
     const fs::path file = source_path("tests/coupling/bad_scenes") / name;
     for (const char* command : {"lem", "run"}) {
-      const ProgramOutput result =
+      const ProgramRun result =
           run_program(std::string(command) + " " + quoted(file.string()) + " -o " + quoted(out.string()));
       INFO(command << " " << name << ":\n" << result.output);
       CHECK(result.status == 2);
@@ -144,7 +128,7 @@ TEST_CASE("invalid input writes nothing, even with an output folder", "[cli][sce
 }
 
 TEST_CASE("a missing scene file and a bad command line are invalid input", "[cli]") {
-  const ProgramOutput missing = run_program("check /nonexistent/scene.json");
+  const ProgramRun missing = run_program("check /nonexistent/scene.json");
   CHECK(missing.status == 2);
   CHECK(missing.output.find("cannot read scene file") != std::string::npos);
   CHECK(run_program("lem").status == 2);                 // SCENE is required
@@ -152,14 +136,14 @@ TEST_CASE("a missing scene file and a bad command line are invalid input", "[cli
   CHECK(run_program("").status == 2);                    // a subcommand is required
   const std::string column = quoted(source_path("cases/elastic_column.json").string());
   CHECK(run_program("study " + column).status == 2);     // --spacings is required
-  const ProgramOutput bad_spacing = run_program("study " + column + " --spacings 0.1,0 -o /nonexistent/study");
+  const ProgramRun bad_spacing = run_program("study " + column + " --spacings 0.1,0 -o /nonexistent/study");
   CHECK(bad_spacing.status == 2);
   CHECK(bad_spacing.output.find("--spacings: 0 is not a positive spacing") != std::string::npos);
 }
 
 TEST_CASE("sphslope study prints a table of errors and writes study.json", "[cli][study][e2e]") {
   TemporaryFolder folder("study");
-  const ProgramOutput result = run_program("study " + quoted(source_path("cases/elastic_column.json").string()) +
+  const ProgramRun result = run_program("study " + quoted(source_path("cases/elastic_column.json").string()) +
                                            " --spacings 0.1,0.05 -o " + quoted(folder.path.string()));
   INFO(result.output);
   REQUIRE(result.status == 0);
@@ -170,11 +154,11 @@ TEST_CASE("sphslope study prints a table of errors and writes study.json", "[cli
 }
 
 TEST_CASE("--help on every subcommand and --version exit 0", "[cli]") {
-  const ProgramOutput version = run_program("--version");
+  const ProgramRun version = run_program("--version");
   CHECK(version.status == 0);
   CHECK(version.output.find("sphslope 0.") != std::string::npos);
   for (const char* command : {"--help", "check --help", "lem --help", "run --help", "study --help"}) {
-    const ProgramOutput help = run_program(command);
+    const ProgramRun help = run_program(command);
     INFO(command << ":\n" << help.output);
     CHECK(help.status == 0);
     CHECK(help.output.find("Usage") != std::string::npos);
@@ -186,7 +170,7 @@ TEST_CASE("every scene in cases/ passes sphslope check", "[cli][cases]") {
   for (const auto& entry : fs::directory_iterator(source_path("cases"))) {
     if (entry.path().extension() != ".json") continue;
     ++count;
-    const ProgramOutput result = run_program("check " + quoted(entry.path().string()));
+    const ProgramRun result = run_program("check " + quoted(entry.path().string()));
     INFO(entry.path().string() << ":\n" << result.output);
     CHECK(result.status == 0);
     CHECK(result.output.rfind("ok: ", 0) == 0);
@@ -197,7 +181,7 @@ TEST_CASE("every scene in cases/ passes sphslope check", "[cli][cases]") {
 TEST_CASE("sphslope lem on Griffiths & Lane (1999) writes a complete report.json", "[cli][lem][e2e]") {
   TemporaryFolder folder("gl");
   const fs::path scene = source_path("cases/griffiths_lane_1999.json");
-  const ProgramOutput result = run_program("lem " + quoted(scene.string()) + " -o " + quoted(folder.path.string()));
+  const ProgramRun result = run_program("lem " + quoted(scene.string()) + " -o " + quoted(folder.path.string()));
   INFO(result.output);
   REQUIRE(result.status == 0);
   CHECK(result.output.find("bishop") != std::string::npos);  // the table on stdout
@@ -308,7 +292,7 @@ TEST_CASE("sphslope run prints the strength-reduction FS next to the LEM ones on
   scene["analyses"]["lem"] = {{"methods", {"bishop", "spencer"}}};
   const fs::path file = folder.path / "gl_srm.json";
   std::ofstream(file) << scene.dump();
-  const ProgramOutput result =
+  const ProgramRun result =
       run_program("run " + quoted(file.string()) + " -o " + quoted((folder.path / "out").string()));
   INFO(result.output);
   REQUIRE(result.status == 0);

@@ -21,23 +21,8 @@ namespace {
 
 std::string quoted(const std::string& text) { return "'" + text + "'"; }
 
-struct Run {
-  int status = -1;
-  std::string output;
-};
-
-Run run_lem(const fs::path& scene, const fs::path& out) {
-  const std::string command =
-      quoted(SPHSLOPE_BINARY) + " lem " + quoted(scene.string()) + " -o " + quoted(out.string()) + " 2>&1";
-  Run result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
-  const int raw = ::pclose(pipe);
-  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return result;
+ProgramRun run_lem(const fs::path& scene, const fs::path& out) {
+  return run_sphslope("lem " + quoted(scene.string()) + " -o " + quoted(out.string()));
 }
 
 // A copy of a case limited to the given methods (the seven methods are run by hand, docs/validation.md).
@@ -67,10 +52,10 @@ TEST_CASE("surveyed profile: LE on 2427 LiDAR vertices agrees with the profile r
   const fs::path full = with_methods(cases / "surveyed_profile.json", methods, folder.path / "full");
   const fs::path simple = with_methods(cases / "surveyed_profile_simplified.json", methods, folder.path / "simplified");
 
-  const Run a = run_lem(full, folder.path / "full" / "out");
+  const ProgramRun a = run_lem(full, folder.path / "full" / "out");
   INFO(a.output);
   REQUIRE(a.status == 0);
-  const Run b = run_lem(simple, folder.path / "simplified" / "out");
+  const ProgramRun b = run_lem(simple, folder.path / "simplified" / "out");
   INFO(b.output);
   REQUIRE(b.status == 0);
   const nlohmann::json ra = read_json(folder.path / "full" / "out" / "report.json");

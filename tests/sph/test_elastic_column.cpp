@@ -93,7 +93,7 @@ TEST_CASE("elastic column under sudden gravity with damping settles to sigma_yy 
   check_profile(m, 1.0);
 }
 
-TEST_CASE("elastic column study", "[.study][validation]") {
+TEST_CASE("elastic column study", "[.study]") {
   const double T = std::getenv("SPH_T") ? std::atof(std::getenv("SPH_T")) : 0.3;
   const double Z = std::getenv("SPH_Z") ? std::atof(std::getenv("SPH_Z")) : 150;
   auto m = elastic_column(std::getenv("SPH_K0") ? sph::GravityMode::geostatic_k0 : sph::GravityMode::sudden, Z);

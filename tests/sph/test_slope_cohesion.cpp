@@ -62,7 +62,7 @@ TEST_CASE("the same slope with low cohesion fails", "[sph][validation][slope]") 
 }
 
 // Thesis slope 2 (seed-002 section 4.2): c = 11 kPa, phi = 20 deg, E = 15 MPa, sudden gravity, 8 s (hidden study).
-TEST_CASE("thesis slope 2 study", "[.study][validation]") {
+TEST_CASE("thesis slope 2 study", "[.study]") {
   const double dx = std::getenv("SPH_STUDY_DX") ? std::atof(std::getenv("SPH_STUDY_DX")) : 0.5;
   max_displacement_after(11e3, 8.0, sph::GravityMode::sudden, 15e6, dx);
 }
