@@ -254,7 +254,7 @@ TEST_CASE("sphslope lem without -o prints the table and writes nothing", "[cli][
   CHECK(fs::is_empty(folder.path));
 }
 
-TEST_CASE("sphslope run writes runs/<scene stem>/report.json by default; pore pressures reach the slices",
+TEST_CASE("sphslope run writes runs/<scene stem>/report.json by default, pore pressures reach the slices",
           "[cli][run]") {
   TemporaryFolder folder("run-default");
   const fs::path scene = source_path("cases/two_layer_water.json");

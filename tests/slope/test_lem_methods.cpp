@@ -240,7 +240,7 @@ TEST_CASE("Janbu's correction factor f0 follows Janbu (1973)", "[slope][methods]
         Approx(f0 * fs(*mass, slope::Method::janbu)).epsilon(1e-12));
 }
 
-TEST_CASE("Spencer equals Morgenstern-Price with f = 1; the forces close every slice", "[slope][methods]") {
+TEST_CASE("Spencer equals Morgenstern-Price with f = 1, the forces close every slice", "[slope][methods]") {
   slope::Section s = griffiths_lane_1999();
   s.water = slope::Water{{{0, 16}, {25, 14}, {60, 11}}, 9810.0};
   s.seismic_coefficient = 0.05;

@@ -114,7 +114,7 @@ TEST_CASE("a slope facing left gives the same critical surfaces as its mirror im
   }
 }
 
-TEST_CASE("user limits are respected; limits admitting no circle give an error", "[slope][search][limits]") {
+TEST_CASE("user limits are respected, limits admitting no circle give an error", "[slope][search][limits]") {
   const slope::Section s = griffiths_lane_1999();
   const slope::SearchResult free = slope::search_critical(s, {slope::Method::bishop}, slope::SearchOptions{});
   const double free_fs = critical_fs(free, slope::Method::bishop);

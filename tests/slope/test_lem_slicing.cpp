@@ -34,7 +34,7 @@ double total(const slope::SlipMass& mass, double slope::Slice::*field) {
 
 }  // namespace
 
-TEST_CASE("polyline_y interpolates and is constant beyond the ends; ground_y clamps", "[slope][geometry]") {
+TEST_CASE("polyline_y interpolates and is constant beyond the ends, ground_y clamps", "[slope][geometry]") {
   const std::vector<slope::Point> line{{0, 1}, {2, 3}, {4, 3}, {6, 0}};
   CHECK(slope::polyline_y(line, -5) == 1.0);
   CHECK(slope::polyline_y(line, 1) == Approx(2.0));
@@ -114,7 +114,7 @@ double sampled_weight(const slope::Section& s, const slope::Slice& sl, double un
   return weight * sl.width / n;
 }
 
-TEST_CASE("slice boundaries fall on material changes; vertices inside a slice are integrated exactly",
+TEST_CASE("slice boundaries fall on material changes, vertices inside a slice are integrated exactly",
           "[slope][slicing]") {
   // Two layers: the slope soil above y = 8 (horizontal interface below the toe), a stiffer clay below. The circle
   // crosses the interface at x = xc -+ sqrt(R^2 - (yc - 8)^2); the crest (20) and toe (40) vertices lie inside
@@ -223,7 +223,7 @@ TEST_CASE("inadmissible circles are rejected with a reason", "[slope][slicing]")
   CHECK_THAT(reason, Contains("re-enters"));
 }
 
-TEST_CASE("an arc that grazes a survey's roughness above the ground is one mass; the gap slices weigh nothing",
+TEST_CASE("an arc that grazes a survey's roughness above the ground is one mass, the gap slices weigh nothing",
           "[slope][slicing]") {
   // Griffiths & Lane with a dip in the toe ground at x = 44.75-44.85 m. The circle through the crest at x = 15 m
   // and the toe ground at x = 45 m (centre (35, 30), radius sqrt(500) m) runs 0.123 m below the toe ground at
@@ -254,7 +254,7 @@ TEST_CASE("an arc that grazes a survey's roughness above the ground is one mass;
   CHECK_THAT(reason, Contains("re-enters"));
 }
 
-TEST_CASE("a toe on a firm base may end a mass; an arc under the toe is rejected", "[slope][slicing]") {
+TEST_CASE("a toe on a firm base may end a mass, an arc under the toe is rejected", "[slope][slicing]") {
   // Griffiths & Lane example 1 stands on a rigid base at toe level (x = 32, y = 10).
   const slope::Section s = griffiths_lane_no_foundation();
   const slope::Circle through_toe{40.0, 30.0, std::hypot(8.0, 20.0)};  // descends at the toe
