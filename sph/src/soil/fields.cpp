@@ -44,14 +44,8 @@ SoilArrays::SoilArrays(ParticleSet& s, const SoilFields& f)
       dplastic_strain(s.field(f.dplastic_strain).data()),
       dplastic_work(s.field(f.dplastic_work).data()) {}
 
+// Read only: the pointers of the writable view, which only reads the set's array addresses.
 ConstSoilArrays::ConstSoilArrays(const ParticleSet& s, const SoilFields& f)
-    : sxx(s.field(f.sxx).data()),
-      syy(s.field(f.syy).data()),
-      szz(s.field(f.szz).data()),
-      sxy(s.field(f.sxy).data()),
-      plastic_strain(s.field(f.plastic_strain).data()),
-      plastic_work(s.field(f.plastic_work).data()),
-      wall_nx(s.field(f.wall_nx).data()),
-      wall_ny(s.field(f.wall_ny).data()) {}
+    : ConstSoilArrays(SoilArrays(const_cast<ParticleSet&>(s), f)) {}
 
 }  // namespace sph
