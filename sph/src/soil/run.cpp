@@ -30,7 +30,7 @@ double soil_energy_floor(const Model& model) {
 RunSummary run(Model& model, const RunOptions& options, const RunCallbacks& callbacks) {
   SoilStep stepper(model);
   const Settings& st = model.settings;
-  RunTarget target{model.particles, model.state, stepper};
+  RunTarget target(model.particles, model.state, stepper);
   target.end_time = st.end_time;
   target.output_interval = st.output_interval;
   target.checkpoint_interval_wall_s = st.checkpoint_interval_wall_s;

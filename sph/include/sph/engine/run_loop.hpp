@@ -73,6 +73,7 @@ struct RunSummary {
 
 // What the loop needs from the physics besides the stepper.
 struct RunTarget {
+  RunTarget(ParticleSet& p, RunState& s, Stepper& st) : particles(p), state(s), stepper(st) {}
   ParticleSet& particles;
   RunState& state;
   Stepper& stepper;
