@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "coupling/acceptance.hpp"
+#include "coupling/compare/acceptance.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;

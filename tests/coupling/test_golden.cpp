@@ -26,8 +26,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/scene.hpp"
-#include "coupling/sph_setup.hpp"
+#include "coupling/scene/scene.hpp"
+#include "coupling/scene/sph_setup.hpp"
 #include "slope/search.hpp"
 #include "sph/soil/run.hpp"
 #include "test_support.hpp"

@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/input_limits.hpp"
-#include "coupling/scene.hpp"
+#include "coupling/scene/input_limits.hpp"
+#include "coupling/scene/scene.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;

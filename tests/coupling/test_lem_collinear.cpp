@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/scene.hpp"
+#include "coupling/scene/scene.hpp"
 #include "slope/search.hpp"
 
 namespace {

@@ -11,10 +11,10 @@
 #include <sstream>
 #include <string>
 
-#include "coupling/json_reader.hpp"
-#include "coupling/report.hpp"
-#include "coupling/scene.hpp"
-#include "coupling/workflow.hpp"
+#include "coupling/scene/json_reader.hpp"
+#include "coupling/output/report.hpp"
+#include "coupling/scene/scene.hpp"
+#include "coupling/analyses/pipeline.hpp"
 
 namespace fs = std::filesystem;
 using coupling::parse_scene;

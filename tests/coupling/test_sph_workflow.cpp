@@ -19,8 +19,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/scene.hpp"
-#include "coupling/sph_setup.hpp"
+#include "coupling/scene/scene.hpp"
+#include "coupling/scene/sph_setup.hpp"
 #include "sph/soil/checkpoint.hpp"
 
 extern char** environ;
@@ -242,8 +242,8 @@ TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted
   fs::remove_all(dir);
 }
 
-#include "coupling/scene.hpp"
-#include "coupling/sph_setup.hpp"
+#include "coupling/scene/scene.hpp"
+#include "coupling/scene/sph_setup.hpp"
 
 TEST_CASE("the thesis slopes fill with the thesis's particle counts", "[sph][fill][validation]") {
   // Source: shared/seeds/seed-002 section 4 (Tables 5-1, 5-3, 5-5): 3200, 3725 and 7100 soil particles at

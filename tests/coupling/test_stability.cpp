@@ -21,8 +21,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/scene.hpp"
-#include "coupling/sph_setup.hpp"
+#include "coupling/scene/scene.hpp"
+#include "coupling/scene/sph_setup.hpp"
 #include "test_support.hpp"
 
 extern char** environ;

@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/scene.hpp"
-#include "coupling/strength_reduction.hpp"
-#include "coupling/workflow.hpp"
+#include "coupling/scene/scene.hpp"
+#include "coupling/analyses/strength_reduction.hpp"
+#include "coupling/analyses/pipeline.hpp"
 
 using namespace coupling;
 

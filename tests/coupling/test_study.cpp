@@ -12,8 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/convergence.hpp"
-#include "coupling/study.hpp"
+#include "coupling/studies/convergence.hpp"
+#include "coupling/studies/study.hpp"
 
 namespace fs = std::filesystem;
 using namespace coupling;

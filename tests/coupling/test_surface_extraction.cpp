@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "coupling/failure_surface.hpp"
-#include "coupling/surface_comparison.hpp"
+#include "coupling/compare/failure_surface.hpp"
+#include "coupling/compare/surface_comparison.hpp"
 
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
@@ -101,7 +101,7 @@ TEST_CASE("circle arcs: concentric arcs are the radius difference apart", "[comp
   CHECK_THAT(d.max_normal_distance, WithinAbs(1.0, 2e-3));
 }
 
-#include "coupling/sliding_mass.hpp"
+#include "coupling/compare/sliding_mass.hpp"
 
 TEST_CASE("sliding-mass polygons and their overlap: squares and a half-disc", "[comparison]") {
   // Two unit squares offset by half a side: intersection 0.5, union 1.5, IoU 1/3 (closed form).

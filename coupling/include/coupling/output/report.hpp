@@ -1,0 +1,34 @@
+#pragma once
+// report.json ("format": "sphslope-report/1"): the contract is /work/shared/SCENE.md; every key is documented in
+// docs/scene-format.md. Units are in every key; forces are per metre of slope width (plane strain), in kN/m.
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "coupling/scene/scene.hpp"
+#include "slope/search.hpp"
+
+namespace coupling {
+
+inline constexpr std::string_view report_format = "sphslope-report/1";
+
+// The program's version ("0.1.0").
+std::string_view program_version();
+
+// {"format", "program", "scene": {"name", "file"}}; the workflow adds the analyses, status and timing.
+nlohmann::json report_header(const Scene& scene);
+
+// One critical surface: factor_of_safety (or null and "error"), lambda (Spencer, Morgenstern-Price), iterations,
+// surface {type, center_m, radius_m, entry_m, exit_m, slides_toward}, slices [...].
+nlohmann::json method_report(const slope::Section& section, const slope::CriticalSurface& critical);
+
+// The "lem" block: settings, methods (keyed by method key, in the order asked for) and search {trial_surfaces,
+// seconds, fs_map_method, fs_map}.
+nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& analysis,
+                          const slope::SearchResult& result);
+
+// Pretty-printed JSON text of a report, ending in a newline.
+std::string report_text(const nlohmann::json& report);
+
+}  // namespace coupling

@@ -1,0 +1,224 @@
+#include "coupling/analyses/sph_stage.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <functional>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <ostream>
+
+#include "coupling/scene/json_reader.hpp"
+#include "coupling/scene/sph_setup.hpp"
+#include "sph/soil/checkpoint.hpp"
+#include "sph/soil/run.hpp"
+
+namespace coupling {
+
+namespace {
+
+volatile std::sig_atomic_t interrupt_requested = 0;
+
+extern "C" void on_interrupt(int) { interrupt_requested = 1; }
+
+std::string duration_text(double seconds) {
+  char buffer[64];
+  if (!std::isfinite(seconds)) return "?";
+  if (seconds < 120.0) {
+    std::snprintf(buffer, sizeof buffer, "%.0f s", seconds);
+  } else if (seconds < 7200.0) {
+    std::snprintf(buffer, sizeof buffer, "%.1f min", seconds / 60.0);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%.1f h", seconds / 3600.0);
+  }
+  return buffer;
+}
+
+const char* kernel_key(sph::KernelType kernel) {
+  return kernel == sph::KernelType::cubic_spline ? "cubic_spline" : "wendland_c2";
+}
+
+// Extent of the soil before and after, for particle scenes (column collapse): the front is the farthest particle
+// still in contact with the deposit (a gap wider than 1.5 spacings separates stray particles).
+nlohmann::json deposit_report(const ParticleSnapshot& p) {
+  auto front = [&](const std::vector<double>& xs) {
+    std::vector<double> sorted(xs);
+    std::sort(sorted.begin(), sorted.end(), std::greater<>());
+    for (std::size_t k = 0; k + 1 < sorted.size(); ++k)
+      if (sorted[k] - sorted[k + 1] <= 1.5 * p.spacing) return sorted[k];
+    return sorted.back();
+  };
+  const double x_min0 = *std::min_element(p.x0.begin(), p.x0.end());
+  const double y_min0 = *std::min_element(p.y0.begin(), p.y0.end());
+  const double length0 = front(p.x0) - x_min0 + p.spacing, height0 = *std::max_element(p.y0.begin(), p.y0.end()) - y_min0 + p.spacing;
+  const double length = front(p.x) - x_min0 + p.spacing, height = *std::max_element(p.y.begin(), p.y.end()) - y_min0 + p.spacing;
+  return {{"initial_length_m", length0},
+          {"initial_height_m", height0},
+          {"final_length_m", length},
+          {"final_height_m", height},
+          {"runout_ratio", (length - length0) / length0},
+          {"final_height_ratio", height / height0},
+          {"note", "lengths from the leftmost initial particle edge to the front of the deposit (stray particles "
+                   "beyond a 1.5-spacing gap excluded); heights from the lowest initial particle edge to the top"}};
+}
+
+}  // namespace
+
+void install_interrupt_handler() {
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+}
+
+bool interrupt_pending() { return interrupt_requested != 0; }
+
+SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options) {
+  Diagnostics unused;
+  const SphAnalysis analysis = *read_sph_analysis(*scene.analyses.sph, unused);
+  // Plan before allocating anything: the explicit step is bounded by the P-wave speed; a case that needs more
+  // steps, particles or memory than its limits is refused here, with the planned figures in the message.
+  if (const auto plan = plan_sph(scene, analysis)) {
+    const std::vector<std::string> refusals = sph_refusals(analysis, *plan);
+    if (!refusals.empty()) throw SceneError(refusals);
+  }
+  SphSize size;
+  sph::Model model = build_sph_model(scene, &size);
+
+  double fastest_wave = 0.0;
+  for (const auto& m : model.materials) fastest_wave = std::max(fastest_wave, sph::MaterialConstants::from(m).sound_speed);
+  const double h = model.settings.smoothing_length();
+  const double time_step = sph::time_step_estimate(model);
+  const double planned_steps = model.settings.end_time / time_step;
+
+  SphStageResult result;
+  nlohmann::json& report = result.report;
+  report["particles"] = model.particles.size();
+  report["soil_particles"] = size.soil_particles;
+  report["wall_particles"] = size.wall_particles;
+  report["particle_spacing_m"] = model.settings.particle_spacing;
+  report["smoothing_length_m"] = h;
+  report["kernel"] = kernel_key(model.settings.kernel);
+  report["p_wave_speed_m_s"] = fastest_wave;
+  report["time_step_estimate_s"] = time_step;
+  report["planned_steps"] = std::llround(planned_steps);
+  report["gravity"] = model.settings.gravity_mode == sph::GravityMode::sudden         ? "sudden"
+                      : model.settings.gravity_mode == sph::GravityMode::geostatic_k0 ? "geostatic_k0"
+                                                                                      : "ramped";
+  if (model.settings.gravity_mode == sph::GravityMode::ramped) report["gravity_ramp_s"] = model.settings.gravity_ramp_time;
+  report["wall_layers"] = analysis.wall_layers;
+  report["memory_estimate_MiB"] = static_cast<double>(size.memory_bytes) / (1024.0 * 1024.0);
+
+  if (options.log) {
+    *options.log << "sph: " << size.soil_particles << " soil + " << size.wall_particles << " wall particles, dx = "
+                 << model.settings.particle_spacing << " m, h = " << h << " m, P-wave speed " << fastest_wave
+                 << " m/s, time step about " << time_step << " s: about " << std::llround(planned_steps)
+                 << " steps for " << model.settings.end_time << " s\n";
+  }
+
+  sph::RunOptions run_options;
+  if (options.output_dir) run_options.output_dir = options.output_dir->string();
+  run_options.quasi_static_speed = analysis.quasi_static_speed;
+  run_options.quasi_static_min_time = analysis.quasi_static_min_time;
+  run_options.progress_interval_wall_s = 2.0;
+  if (options.resume) {
+    if (!options.output_dir) throw SceneError({"--resume needs the run folder (-o DIR) that holds checkpoint.bin"});
+    const auto checkpoint = *options.output_dir / "checkpoint.bin";
+    if (!std::filesystem::exists(checkpoint))
+      throw SceneError({"--resume: no checkpoint at " + checkpoint.string() + " (start the run without --resume)"});
+    sph::read_checkpoint(checkpoint.string(), model);
+    if (options.log)
+      *options.log << "sph: resuming at t = " << model.state.time << " s (step " << model.state.step << ")\n";
+  }
+
+  sph::RunCallbacks callbacks;
+  if (options.log) {
+    std::ostream* log = options.log;
+    callbacks.progress = [log](const sph::Progress& p) {
+      char line[200];
+      std::snprintf(line, sizeof line, "sph: t = %.4g / %.4g s, step %llu, %.0f steps/s, dt %.3g s, max speed %.3g m/s, %s left\n",
+                    p.time, p.end_time, static_cast<unsigned long long>(p.step), p.steps_per_second, p.time_step,
+                    p.max_speed, duration_text(p.eta_seconds).c_str());
+      *log << line << std::flush;
+    };
+  }
+  interrupt_requested = 0;
+  callbacks.interrupt = [] { return interrupt_requested != 0; };
+
+  const sph::RunSummary summary = sph::run(model, run_options, callbacks);
+  report["steps"] = summary.total_steps;
+  report["steps_this_session"] = summary.steps;
+  report["simulated_time_s"] = summary.simulated_time;
+  report["seconds"] = summary.wall_seconds;
+  report["particle_steps_per_second"] = summary.particle_steps_per_second;
+  report["stopped_because"] = summary.stopped_because;
+  report["frames"] = summary.frames_written;
+  const bool energies_finite = std::isfinite(summary.kinetic_energy) && std::isfinite(summary.potential_energy) &&
+                               std::isfinite(summary.plastic_dissipation);
+  if (energies_finite) {
+    report["final_energy_J_m"] = {{"kinetic", summary.kinetic_energy},
+                                  {"potential", summary.potential_energy},
+                                  {"plastic_dissipation", summary.plastic_dissipation}};
+  } else {
+    report["final_energy_J_m"] = nullptr;  // diverged state (blow-up): see "error"
+  }
+  // Energy balance: kinetic energy + plastic work cannot exceed the potential energy released (elastic energy and
+  // viscous losses are >= 0; with ramped gravity the work of gravity is smaller still). More means the scheme
+  // created energy. Not applicable with a K0 initial stress, whose stored elastic energy is released as well.
+  const double released = model.state.initial_potential_energy - summary.potential_energy;
+  nlohmann::json warnings = nlohmann::json::array();
+  for (const SectionLoad& load : loads_sph_leaves_out(scene))  // only those the user listed get this far
+    warnings.push_back(load.path + " is not carried by the SPH model (analyses.sph.ignore_loads): this SPH result "
+                       "is for the slope without " + load.name + ", unlike the limit-equilibrium result");
+  if (energies_finite && released > 0.0) {
+    const double ratio = (summary.kinetic_energy + summary.plastic_dissipation) / released;
+    report["energy_balance"] = {{"released_potential_J_m", released},
+                                {"kinetic_plus_plastic_J_m", summary.kinetic_energy + summary.plastic_dissipation},
+                                {"ratio", ratio}};
+    if (ratio > 1.05 && model.settings.gravity_mode != sph::GravityMode::geostatic_k0)
+      warnings.push_back("kinetic energy + plastic work = " + format_number(ratio) +
+                         " x the potential energy released: the scheme created energy (time step too large for the "
+                         "material, artificial viscosity too low?); treat the result as unreliable");
+  }
+  report["warnings"] = warnings;
+  if (options.log)
+    for (const auto& w : warnings) *options.log << "sph: warning: " << w.get<std::string>() << "\n";
+  if (options.output_dir)
+    report["files"] = {{"frames", "frames.pvd"}, {"energy_history", "energy.csv"}, {"checkpoint", "checkpoint.bin"}};
+  result.ok = summary.stopped_because == "end_time" || summary.stopped_because == "quasi_static";
+  if (!result.ok) {
+    result.error = summary.stopped_because == "interrupted"
+                       ? "the SPH run was interrupted at t = " + format_number(summary.simulated_time) +
+                             " s; continue it with --resume"
+                       : "the SPH run stopped (" + summary.stopped_because + "): " + summary.diagnostic;
+    report["error"] = result.error;
+  }
+
+  const auto& p = model.particles;
+  const sph::ConstSoilArrays soil = model.soil();
+  auto& snapshot = result.final_state;
+  snapshot.spacing = model.settings.particle_spacing;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::soil)) continue;
+    snapshot.x.push_back(p.x[i]);
+    snapshot.y.push_back(p.y[i]);
+    snapshot.x0.push_back(p.x0[i]);
+    snapshot.y0.push_back(p.y0[i]);
+    snapshot.plastic_strain.push_back(soil.plastic_strain[i]);
+    snapshot.stress_xx.push_back(soil.sxx[i]);
+    snapshot.stress_yy.push_back(soil.syy[i]);
+  }
+  // Largest displacement and accumulated plastic strain of any soil particle at the end (null if not finite).
+  double max_displacement = 0.0, max_plastic_strain = 0.0;
+  bool finite = true;
+  for (std::size_t i = 0; i < snapshot.x.size(); ++i) {
+    const double u = std::hypot(snapshot.x[i] - snapshot.x0[i], snapshot.y[i] - snapshot.y0[i]);
+    finite = finite && std::isfinite(u) && std::isfinite(snapshot.plastic_strain[i]);
+    max_displacement = std::max(max_displacement, u);
+    max_plastic_strain = std::max(max_plastic_strain, snapshot.plastic_strain[i]);
+  }
+  report["max_displacement_m"] = finite ? nlohmann::json(max_displacement) : nlohmann::json(nullptr);
+  report["max_plastic_strain"] = finite ? nlohmann::json(max_plastic_strain) : nlohmann::json(nullptr);
+  if (scene.bodies && !snapshot.x.empty()) report["deposit"] = deposit_report(snapshot);
+  return result;
+}
+
+}  // namespace coupling

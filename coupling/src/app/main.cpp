@@ -1,0 +1,313 @@
+// sphslope: the command-line program. Parses the command line and prints; the work is in workflow.cpp.
+//
+//   sphslope check SCENE            validate a scene file, explain every error
+//   sphslope lem SCENE [-o DIR]     limit equilibrium only; table on stdout, DIR/report.json with -o
+//   sphslope run SCENE [-o DIR]     every analysis of the scene; report in DIR (default runs/<scene stem>)
+//
+// Exit status: 0 every requested analysis ran; 1 a run failed (report written with the reason); 2 invalid input
+// (nothing written; the message names the JSON path of the fault); 3 every analysis ran but the comparison did
+// not meet analyses.compare.acceptance (report written). Errors go to stderr.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "coupling/app/batch.hpp"
+#include "coupling/output/report.hpp"
+#include "coupling/scene/scene.hpp"
+#include "coupling/analyses/sph_stage.hpp"
+#include "coupling/studies/study.hpp"
+#include "coupling/analyses/pipeline.hpp"
+
+namespace {
+
+// A program built for a newer CPU (CMake option SPHSLOPE_ARCH, "native" by default) would die on its first unknown
+// instruction with "Illegal instruction"; this says what happened and how to rebuild instead. It checks the
+// instruction sets the compiler was allowed to use.
+bool cpu_runs_this_build() {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  __builtin_cpu_init();
+#if defined(__AVX512F__)
+  if (!__builtin_cpu_supports("avx512f")) return false;
+#endif
+#if defined(__AVX2__)
+  if (!__builtin_cpu_supports("avx2")) return false;
+#endif
+#if defined(__FMA__)
+  if (!__builtin_cpu_supports("fma")) return false;
+#endif
+#if defined(__AVX__)
+  if (!__builtin_cpu_supports("avx")) return false;
+#endif
+#if defined(__SSE4_2__)
+  if (!__builtin_cpu_supports("sse4.2")) return false;
+#endif
+#endif
+  return true;
+}
+
+// The strength-reduction factor of safety next to the limit-equilibrium ones, on stdout.
+void print_srm(const nlohmann::json& srm) {
+  if (!srm.contains("factor_of_safety") || !srm["factor_of_safety"].is_number()) {
+    std::cout << "strength reduction (SPH): no factor of safety"
+              << (srm.contains("error") ? " (" + srm["error"].get<std::string>() + ")" : std::string()) << "\n";
+    return;
+  }
+  std::printf("strength reduction (SPH, dx = %g m): FS_SPH = %.3f in [%.3f, %.3f]\n",
+              srm.value("particle_spacing_m", 0.0), srm["factor_of_safety"].get<double>(),
+              srm["bracket"][0].get<double>(), srm["bracket"][1].get<double>());
+  if (srm.contains("lem_factor_of_safety"))
+    for (const auto& [method, fs] : srm["lem_factor_of_safety"].items())
+      if (fs.is_number()) std::printf("  limit equilibrium %-26s FS = %.3f\n", method.c_str(), fs.get<double>());
+  std::fflush(stdout);
+  if (srm.contains("warnings"))
+    for (const auto& warning : srm["warnings"]) std::cerr << "srm: warning: " << warning.get<std::string>() << "\n";
+}
+
+int print_outcome(const std::filesystem::path& scene_file, const coupling::WorkflowResult& result,
+                  coupling::Mode mode) {
+  using coupling::ExitStatus;
+  if (result.status == ExitStatus::invalid_input) {
+    for (const std::string& message : result.errors) {
+      std::cerr << "error: " << scene_file.string() << ": " << message << "\n";
+    }
+    std::cerr << "sphslope: invalid input (" << result.errors.size() << " error"
+              << (result.errors.size() == 1 ? "" : "s") << " in " << scene_file.string()
+              << "); nothing was written\n";
+    return static_cast<int>(ExitStatus::invalid_input);
+  }
+  if (mode == coupling::Mode::check) {
+    std::cout << "ok: " << scene_file.string() << ": " << coupling::summarize(*result.scene) << "\n";
+    return 0;
+  }
+  if (result.lem && result.scene) {
+    const coupling::LemAnalysis analysis =
+        result.scene->analyses.lem ? *result.scene->analyses.lem : coupling::default_lem_analysis();
+    std::cout << "limit equilibrium: " << result.scene->name << " (" << scene_file.string() << ")\n"
+              << coupling::lem_table(analysis, *result.lem);
+  }
+  if (result.report.is_object() && result.report.contains("srm")) print_srm(result.report["srm"]);
+  for (const std::string& message : result.errors) std::cerr << "error: " << message << "\n";
+  for (const std::string& line : result.rejections) std::cerr << "not accepted: " << line << "\n";
+  if (result.report_file) {
+    const char* note = result.status == ExitStatus::ok             ? ""
+                       : result.status == ExitStatus::not_accepted ? " (status: not accepted; comparison.acceptance)"
+                                                                   : " (status: failed; the reasons are in the report)";
+    std::cerr << "report: " << result.report_file->string() << note << "\n";
+  }
+  return static_cast<int>(result.status);
+}
+
+// The study's table on stdout: one row per spacing with the error of each quantity.
+int print_study(const std::filesystem::path& scene_file, const std::filesystem::path& output_dir,
+                const coupling::StudyResult& result) {
+  using coupling::ExitStatus;
+  if (result.status == ExitStatus::invalid_input) {
+    for (const std::string& message : result.errors)
+      std::cerr << "error: " << scene_file.string() << ": " << message << "\n";
+    std::cerr << "sphslope: invalid input; nothing was run\n";
+    return static_cast<int>(ExitStatus::invalid_input);
+  }
+  const auto& study = result.study;
+  std::cout << "study: " << study["scene"]["name"].get<std::string>() << " (reference: "
+            << study["reference_case"].get<std::string>() << ")\n";
+  std::printf("%10s %10s %10s %10s", "dx (m)", "particles", "steps", "wall (s)");
+  for (const auto& q : study["quantities"]) std::printf(" %18s", q["key"].get<std::string>().c_str());
+  std::printf("\n");
+  for (const auto& run : study["runs"]) {
+    std::printf("%10.4g %10s %10s %10.1f", run["particle_spacing_m"].get<double>(),
+                run.contains("soil_particles") ? run["soil_particles"].dump().c_str() : "-",
+                run.contains("steps") ? run["steps"].dump().c_str() : "-", run.value("wall_seconds", 0.0));
+    for (std::size_t q = 0; q < study["quantities"].size(); ++q) {
+      const auto& e = run["errors_vs_reference"][q];
+      if (e.is_number())
+        std::printf(" %17.3g%%", 100.0 * e.get<double>());
+      else
+        std::printf(" %18s", "-");
+    }
+    std::printf("\n");
+  }
+  std::printf("%43s", "observed order:");
+  for (const auto& q : study["quantities"]) {
+    if (q["observed_order"].is_number())
+      std::printf(" %18.2f", q["observed_order"].get<double>());
+    else
+      std::printf(" %18s", "-");
+  }
+  std::printf("\n");
+  if (study.contains("lem_search")) {
+    std::printf("limit-equilibrium search against the finest (%s):\n",
+                study["lem_search"]["reference"].get<std::string>().c_str());
+    std::printf("%10s %8s %7s %10s %10s", "entry/exit", "slices", "refine", "trials", "time (s)");
+    const auto& levels = study["lem_search"]["levels"];
+    for (const auto& [method, fs] : levels[0]["factor_of_safety"].items()) std::printf(" %26s", (method + " FS").c_str());
+    std::printf("\n");
+    for (const auto& level : levels) {
+      std::printf("%10d %8d %7s %10ld %10.3f", level["entry_exit_samples"].get<int>(), level["slices"].get<int>(),
+                  level["refine"].get<bool>() ? "yes" : "no", level["trial_surfaces"].get<long>(),
+                  level["seconds"].get<double>());
+      for (const auto& [method, fs] : level["factor_of_safety"].items()) {
+        const auto& error = level["relative_error"][method];
+        if (!fs.is_number())
+          std::printf(" %26s", "-");
+        else if (error.is_number())
+          std::printf(" %17.4f (%5.2f%%)", fs.get<double>(), 100.0 * error.get<double>());
+        else
+          std::printf(" %17.4f (  ref )", fs.get<double>());
+      }
+      std::printf("\n");
+    }
+  }
+  std::fflush(stdout);
+  for (const std::string& message : result.errors) std::cerr << "error: " << message << "\n";
+  std::cerr << "study: " << (output_dir / "study.json").string() << ", "
+            << (output_dir / "figures" / "error_vs_runtime.svg").string() << "\n";
+  return static_cast<int>(result.status);
+}
+
+// sphslope batch: its options are read straight into `options` (the output folder gets its default after parsing).
+CLI::App* add_batch_command(CLI::App& app, coupling::BatchOptions& options) {
+  CLI::App* batch = app.add_subcommand(
+      "batch", "Run a set of scenes (a folder of *.json or a manifest), one run folder per scene, resumable; writes "
+               "DIR/summary.csv, DIR/summary.json and DIR/junit.xml. Exit status: 0 all ok, 3 some comparison not "
+               "accepted, 1 some scene failed or invalid (or interrupted), 2 invalid batch input.");
+  batch->add_option("INPUT", options.input, "A folder of scene files (*.json) or a manifest (one scene file per line; "
+                                            "# comments; paths relative to the manifest)")
+      ->required()
+      ->type_name("FOLDER|FILE");
+  batch->add_option("-o,--output", options.output_dir, "Output folder (default: runs/batch)")->type_name("DIR");
+  batch->add_option("-j,--jobs", options.jobs, "Scenes run at once; the cores are shared out among them (default 1)")
+      ->check(CLI::PositiveNumber);
+  batch->add_option("--index", options.index, "Run only scene INDEX (0-based) of the list, e.g. a scheduler's array "
+                                              "index ($SLURM_ARRAY_TASK_ID); gather the summary afterwards with "
+                                              "--summary-only");
+  batch->add_flag("--summary-only", options.summary_only, "Run nothing: write the summary of the runs already in DIR");
+  return batch;
+}
+
+int run_batch_command(coupling::BatchOptions options) {
+  if (options.output_dir.empty()) options.output_dir = "runs/batch";
+  options.program = std::filesystem::read_symlink("/proc/self/exe");
+  options.log = &std::cerr;
+  try {
+    return coupling::run_batch(options);
+  } catch (const std::exception& error) {
+    std::cerr << "sphslope: unexpected failure: " << error.what() << "\n";
+    return static_cast<int>(coupling::ExitStatus::failed);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (!cpu_runs_this_build()) {
+    std::cerr << "sphslope: this program was built for a CPU with instructions this one lacks (CMake option "
+                 "SPHSLOPE_ARCH, \"native\" by default, optimises for the build machine). Rebuild it here with "
+                 "scripts/build, or for any x86-64 CPU with scripts/build -DSPHSLOPE_ARCH=x86-64.\n";
+    return static_cast<int>(coupling::ExitStatus::failed);
+  }
+  CLI::App app{"sphslope: geotechnical slope assessment (limit equilibrium and SPH) from a scene file.\n"
+               "Exit status: 0 every requested analysis ran; 1 a run failed (report written with the reason);\n"
+               "2 invalid input (nothing written; the message names the JSON path of the fault);\n"
+               "3 every analysis ran but the comparison failed its acceptance criteria (report written).",
+               "sphslope"};
+  app.set_version_flag("--version", "sphslope " + std::string(coupling::program_version()));
+  app.require_subcommand(1);
+
+  std::string scene_file;
+  std::string output_dir;
+
+  CLI::App* check = app.add_subcommand("check", "Validate a scene file and explain every error.");
+  check->add_option("SCENE", scene_file, "Scene file (JSON, \"format\": \"sphslope-scene/1\")")
+      ->required()
+      ->type_name("FILE");
+
+  CLI::App* lem = app.add_subcommand(
+      "lem", "Limit equilibrium only: critical circle and factor of safety per method, as a table on stdout.");
+  lem->add_option("SCENE", scene_file, "Scene file with a \"section\"")->required()->type_name("FILE");
+  lem->add_option("-o,--output", output_dir, "Also write DIR/report.json (default: print only, write nothing)")
+      ->type_name("DIR");
+
+  CLI::App* run = app.add_subcommand("run", "Run every analysis the scene asks for and write DIR/report.json.");
+  run->add_option("SCENE", scene_file, "Scene file")->required()->type_name("FILE");
+  run->add_option("-o,--output", output_dir, "Output folder (default: runs/<scene file stem>)")->type_name("DIR");
+  bool resume = false;
+  run->add_flag("--resume", resume,
+                "Continue an interrupted SPH run from DIR/checkpoint.bin (same scene, same DIR); the result is the "
+                "same as an uninterrupted run");
+
+  CLI::App* study = app.add_subcommand(
+      "study", "Error against run time: run the scene at several particle spacings and measure each monitored "
+               "quantity against its reference (DIR/study.json, DIR/figures/error_vs_runtime.svg).");
+  study->add_option("SCENE", scene_file, "Scene file with analyses.sph (a slope section, or one column body)")
+      ->required()
+      ->type_name("FILE");
+  std::vector<double> spacings;
+  study->add_option("--spacings", spacings, "Particle spacings in metres, comma-separated, e.g. 0.4,0.2,0.1")
+      ->required()
+      ->delimiter(',')
+      ->type_name("DX,...");
+  study->add_option("-o,--output", output_dir, "Output folder (default: runs/<scene file stem>_study)")
+      ->type_name("DIR");
+  bool study_resume = false;
+  study->add_flag("--resume", study_resume,
+                  "Reuse the spacings already finished in DIR and continue an interrupted one from its checkpoint");
+  bool no_lem_search = false;
+  study->add_flag("--no-lem-search", no_lem_search, "Slope sections: skip the study of the limit-equilibrium search");
+
+  coupling::BatchOptions batch_options;
+  CLI::App* batch = add_batch_command(app, batch_options);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int code = app.exit(error);  // prints help, the version or the usage error
+    return code == 0 ? 0 : static_cast<int>(coupling::ExitStatus::invalid_input);
+  }
+
+  if (batch->parsed()) return run_batch_command(batch_options);
+
+  if (study->parsed()) {
+    coupling::StudyOptions study_options;
+    study_options.spacings = spacings;
+    study_options.resume = study_resume;
+    study_options.lem_search = !no_lem_search;
+    study_options.log = &std::cerr;
+    study_options.output_dir = output_dir.empty()
+                                   ? std::filesystem::path("runs") / (std::filesystem::path(scene_file).stem().string() + "_study")
+                                   : std::filesystem::path(output_dir);
+    try {
+      return print_study(scene_file, study_options.output_dir, coupling::run_study(scene_file, study_options));
+    } catch (const std::exception& error) {
+      std::cerr << "sphslope: unexpected failure: " << error.what() << "\n";
+      return static_cast<int>(coupling::ExitStatus::failed);
+    }
+  }
+
+  coupling::WorkflowOptions options;
+  options.log = &std::cerr;
+  if (check->parsed()) {
+    options.mode = coupling::Mode::check;
+  } else if (lem->parsed()) {
+    options.mode = coupling::Mode::lem;
+    if (!output_dir.empty()) options.output_dir = output_dir;
+  } else {
+    options.mode = coupling::Mode::run;
+    options.resume = resume;
+    coupling::install_interrupt_handler();  // Ctrl-C: checkpoint, report "interrupted", exit 1; --resume continues
+    options.output_dir = output_dir.empty() ? coupling::default_output_dir(scene_file)
+                                            : std::filesystem::path(output_dir);
+  }
+
+  try {
+    const coupling::WorkflowResult result = coupling::run_scene_file(scene_file, options);
+    return print_outcome(scene_file, result, options.mode);
+  } catch (const std::exception& error) {
+    std::cerr << "sphslope: unexpected failure: " << error.what() << "\n";
+    return static_cast<int>(coupling::ExitStatus::failed);
+  }
+}

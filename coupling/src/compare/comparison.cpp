@@ -1,0 +1,264 @@
+#include "coupling/compare/comparison.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include "coupling/compare/sliding_mass.hpp"
+#include "slope/methods.hpp"
+#include "slope/slices.hpp"
+
+namespace coupling {
+
+namespace {
+
+nlohmann::json point_json(const slope::Point& p) { return nlohmann::json::array({p.x, p.y}); }
+
+nlohmann::json polyline_json(const Polyline& line) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : line) out.push_back(point_json(p));
+  return out;
+}
+
+// Per x-bin lowest initial height of the particles displaced more than delta.
+Polyline displaced_base(const ParticleSnapshot& p, double delta, double bin, std::size_t* count) {
+  Polyline base;
+  if (p.x0.empty()) return base;
+  const auto [lo, hi] = std::minmax_element(p.x0.begin(), p.x0.end());
+  const int bins = static_cast<int>(std::floor((*hi - *lo) / bin)) + 1;
+  std::vector<double> lowest(static_cast<std::size_t>(bins), std::numeric_limits<double>::infinity());
+  std::vector<double> at_x(static_cast<std::size_t>(bins), 0.0);
+  *count = 0;
+  for (std::size_t i = 0; i < p.x0.size(); ++i) {
+    if (std::hypot(p.x[i] - p.x0[i], p.y[i] - p.y0[i]) <= delta) continue;
+    ++*count;
+    const auto b = static_cast<std::size_t>(std::clamp(static_cast<int>((p.x0[i] - *lo) / bin), 0, bins - 1));
+    if (p.y0[i] < lowest[b]) {
+      lowest[b] = p.y0[i];
+      at_x[b] = *lo + (static_cast<double>(b) + 0.5) * bin;
+    }
+  }
+  for (std::size_t b = 0; b < lowest.size(); ++b)
+    if (std::isfinite(lowest[b])) base.push_back({at_x[b], lowest[b] - 0.5 * p.spacing});
+  return base;
+}
+
+// Top of the particles per x-bin in the current configuration.
+Polyline free_surface(const ParticleSnapshot& p, double bin) {
+  Polyline top;
+  if (p.x.empty()) return top;
+  const auto [lo, hi] = std::minmax_element(p.x.begin(), p.x.end());
+  const int bins = static_cast<int>(std::floor((*hi - *lo) / bin)) + 1;
+  std::vector<double> highest(static_cast<std::size_t>(bins), -std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < p.x.size(); ++i) {
+    const auto b = static_cast<std::size_t>(std::clamp(static_cast<int>((p.x[i] - *lo) / bin), 0, bins - 1));
+    highest[b] = std::max(highest[b], p.y[i]);
+  }
+  for (std::size_t b = 0; b < highest.size(); ++b)
+    if (std::isfinite(highest[b])) top.push_back({*lo + (static_cast<double>(b) + 0.5) * bin, highest[b] + 0.5 * p.spacing});
+  return top;
+}
+
+std::string format(const char* pattern, double a, double b = 0.0) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, pattern, a, b);
+  return buffer;
+}
+
+}  // namespace
+
+std::optional<ComparisonOptions> read_comparison_options(const nlohmann::json& block,
+                                                         const std::vector<std::string>& lem_methods,
+                                                         Diagnostics& diagnostics) {
+  JsonReader r(block, "analyses.compare", diagnostics);
+  const std::size_t errors_before = diagnostics.size();
+  ComparisonOptions options;
+  options.band.plastic_strain_threshold =
+      r.number_or("plastic_strain_threshold", options.band.plastic_strain_threshold, Bounds::positive());
+  options.band.bin_width = r.number_or("bin_width_m", 0.0, Bounds::non_negative());
+  if (const auto configuration = r.string("configuration", Need::optional)) {
+    if (*configuration == "initial" || *configuration == "current") {
+      options.band.initial_configuration = *configuration == "initial";
+    } else {
+      diagnostics.error(r.path_of("configuration"),
+                        "unknown configuration \"" + *configuration + "\" (allowed: initial, current)");
+    }
+  }
+  options.displacement_threshold = r.number_or("displacement_threshold_m", 0.0, Bounds::non_negative());
+  if (const nlohmann::json* acceptance = r.raw("acceptance", Need::optional, "an object"))
+    options.acceptance = read_acceptance(*acceptance, lem_methods, diagnostics);
+  r.finish();
+  if (diagnostics.size() != errors_before) return std::nullopt;
+  return options;
+}
+
+Polyline lem_surface_polyline(const slope::SlipMass& mass, int segments) {
+  const double from = std::min(mass.entry.x, mass.exit.x), to = std::max(mass.entry.x, mass.exit.x);
+  return circle_arc(mass.circle, from, to, segments);
+}
+
+SphFailure extract_sph_failure(const ParticleSnapshot& particles, const Polyline& initial_ground,
+                               const ComparisonOptions& options) {
+  SphFailure out;
+  out.band = plastic_band_surface(particles, options.band);
+  out.fitted_circle = fit_circle(out.band.points);
+  if (!out.band.points.empty()) {
+    const auto& first = out.band.points.front();
+    const auto& last = out.band.points.back();
+    out.entry = slope::Point{first.x, polyline_height(initial_ground, first.x)};
+    out.exit = slope::Point{last.x, polyline_height(initial_ground, last.x)};
+    // Entry is the upper end (behind the crest), exit the lower end (near the toe).
+    if (out.entry->y < out.exit->y) std::swap(out.entry, out.exit);
+  }
+  out.displacement_threshold =
+      options.displacement_threshold > 0.0 ? options.displacement_threshold : 2.0 * particles.spacing;
+  const double bin = out.band.bin_width > 0.0 ? out.band.bin_width : 2.0 * particles.spacing;
+  out.displaced_mass_base = displaced_base(particles, out.displacement_threshold, bin, &out.displaced_particles);
+  out.band_vs_displacement = compare_surfaces(out.band.points, out.displaced_mass_base);
+  out.final_ground = free_surface(particles, bin);
+
+  // Toe: the lowest point of the initial ground (the first one met going down the slope). Debris beyond it
+  // is soil standing more than one spacing above the initial ground.
+  if (!initial_ground.empty()) {
+    const auto toe = std::min_element(initial_ground.begin(), initial_ground.end(),
+                                      [](const auto& a, const auto& b) { return a.y < b.y; });
+    const bool descends_right = initial_ground.front().y > initial_ground.back().y;
+    const auto toe_point = descends_right ? *toe : *std::min_element(initial_ground.rbegin(), initial_ground.rend(),
+                                                                     [](const auto& a, const auto& b) { return a.y < b.y; });
+    out.initial_toe_x = toe_point.x;
+    for (const auto& p : out.final_ground) {
+      if (p.y - polyline_height(initial_ground, p.x) <= particles.spacing) continue;
+      const double advance = descends_right ? p.x - out.initial_toe_x : out.initial_toe_x - p.x;
+      out.farthest_toe_advance = std::max(out.farthest_toe_advance, advance);
+    }
+  }
+  return out;
+}
+
+nlohmann::json comparison_report(const slope::Section& section, const SphFailure& sph,
+                                 const slope::SearchResult& lem, const ComparisonOptions& options) {
+  nlohmann::json report;
+  const Polyline ground = section.profile_lines.front().points;
+  nlohmann::json surface;
+  surface["plastic_strain_threshold"] = sph.band.plastic_strain_threshold;
+  surface["bin_width_m"] = sph.band.bin_width;
+  surface["configuration"] = options.band.initial_configuration ? "initial" : "current";
+  surface["band_particles"] = sph.band.band_particles;
+  surface["points_m"] = polyline_json(sph.band.points);
+  surface["entry_m"] = sph.entry ? point_json(*sph.entry) : nlohmann::json();
+  surface["exit_m"] = sph.exit ? point_json(*sph.exit) : nlohmann::json();
+  if (sph.fitted_circle) {
+    surface["fitted_circle"] = {{"center_m", {sph.fitted_circle->circle.xc, sph.fitted_circle->circle.yc}},
+                                {"radius_m", sph.fitted_circle->circle.radius},
+                                {"rms_residual_m", sph.fitted_circle->rms_residual},
+                                {"max_residual_m", sph.fitted_circle->max_residual}};
+  } else {
+    surface["fitted_circle"] = nullptr;
+  }
+  report["sph_surface"] = surface;
+  report["displacement_check"] = {
+      {"displacement_threshold_m", sph.displacement_threshold},
+      {"displaced_particles", sph.displaced_particles},
+      {"base_points_m", polyline_json(sph.displaced_mass_base)},
+      {"mean_distance_to_band_m", sph.band_vs_displacement.mean_normal_distance},
+      {"max_distance_to_band_m", sph.band_vs_displacement.max_normal_distance}};
+  report["deformed_ground"] = {{"points_m", polyline_json(sph.final_ground)},
+                               {"initial_toe_x_m", sph.initial_toe_x},
+                               {"farthest_toe_advance_m", sph.farthest_toe_advance}};
+
+  // Evaluate every method on the SPH fitted circle.
+  std::optional<slope::SlipMass> sph_mass;
+  std::string sph_mass_reason;
+  double circle_raised = 0.0;
+  if (sph.fitted_circle && sph.entry && sph.exit) {
+    // A band lying on the rigid base gives a fitted circle that dips a little below it, which no slip circle
+    // may do. Raise the circle by the dip when it is within one particle spacing (half a bin).
+    slope::Circle circle = sph.fitted_circle->circle;
+    const double from = std::min(sph.entry->x, sph.exit->x), to = std::max(sph.entry->x, sph.exit->x);
+    const double lowest_x = std::clamp(circle.xc, from, to);
+    const double lowest_y = circle.yc - std::sqrt(std::max(0.0, circle.radius * circle.radius -
+                                                               (lowest_x - circle.xc) * (lowest_x - circle.xc)));
+    const double dip = section.bottom_y - lowest_y;
+    if (dip > 0.0 && dip <= 0.5 * sph.band.bin_width) {
+      circle_raised = dip + 1e-6;
+      circle.yc += circle_raised;
+    }
+    slope::SliceOptions slicing;
+    sph_mass = slope::slice_circle(section, circle, slicing, &sph_mass_reason);
+  }
+  report["sph_surface"]["circle_raised_for_lem_m"] = circle_raised;
+  const Polyline sph_polygon = sliding_mass_polygon(ground, sph.band.points);
+
+  nlohmann::json methods = nlohmann::json::object();
+  bool has_bishop = false;
+  for (const auto& critical : lem.methods)
+    has_bishop = has_bishop || (critical.method == slope::Method::bishop && critical.mass.has_value());
+  std::ostringstream verdict;
+  bool verdict_done = false;
+  for (const auto& critical : lem.methods) {
+    const std::string key(slope::method_key(critical.method));
+    nlohmann::json m;
+    m["lem_factor_of_safety"] = critical.result.factor_of_safety ? nlohmann::json(*critical.result.factor_of_safety)
+                                                                  : nlohmann::json();
+    if (sph_mass) {
+      const auto on_sph = slope::factor_of_safety(*sph_mass, critical.method);
+      m["factor_of_safety_on_sph_circle"] =
+          on_sph.factor_of_safety ? nlohmann::json(*on_sph.factor_of_safety) : nlohmann::json();
+      if (!on_sph.factor_of_safety) m["factor_of_safety_on_sph_circle_error"] = on_sph.error;
+    } else {
+      m["factor_of_safety_on_sph_circle"] = nullptr;
+      m["factor_of_safety_on_sph_circle_error"] =
+          sph.fitted_circle ? "the SPH circle is not an admissible slip circle: " + sph_mass_reason
+                            : std::string("no circle could be fitted to the SPH surface");
+    }
+    if (!critical.mass || sph.band.points.size() < 2) {
+      methods[key] = m;
+      continue;
+    }
+    const auto& mass = *critical.mass;
+    const Polyline lem_line = lem_surface_polyline(mass);
+    const auto distances = compare_surfaces(sph.band.points, lem_line);
+    if (sph.entry) {
+      m["entry_offset_m"] = {sph.entry->x - mass.entry.x, sph.entry->y - mass.entry.y};
+      m["exit_offset_m"] = {sph.exit->x - mass.exit.x, sph.exit->y - mass.exit.y};
+    }
+    m["common_span_x_m"] = {distances.common_from_x, distances.common_to_x};
+    m["mean_normal_distance_m"] = distances.mean_normal_distance;
+    m["max_normal_distance_m"] = distances.max_normal_distance;
+    m["area_between_m2"] = distances.area_between;
+    const Polyline lem_polygon = sliding_mass_polygon(ground, lem_line);
+    const auto overlap = mass_overlap(sph_polygon, lem_polygon);
+    m["sph_sliding_mass_area_m2"] = overlap.area_a;
+    m["lem_sliding_mass_area_m2"] = overlap.area_b;
+    m["intersection_area_m2"] = overlap.intersection_area;
+    m["intersection_over_union"] = overlap.intersection_over_union;
+    methods[key] = m;
+
+    // The verdict is told against Bishop's circle when Bishop was asked for, else the first method with a surface.
+    const bool verdict_method = critical.method == slope::Method::bishop || !has_bishop;
+    if (!verdict_done && verdict_method && sph.entry) {
+      verdict_done = true;
+      const double mid_x = 0.5 * (distances.common_from_x + distances.common_to_x);
+      const double depth_difference = polyline_height(lem_line, mid_x) - polyline_height(sph.band.points, mid_x);
+      verdict << "Against the " << key << " critical circle (FS = "
+              << format("%.3f", critical.result.factor_of_safety.value_or(std::nan(""))) << "): the SPH surface is "
+              << format("%.2f m ", std::abs(depth_difference)) << (depth_difference >= 0 ? "deeper" : "shallower")
+              << " at mid-span (x = " << format("%.1f m", mid_x) << "), enters "
+              << format("%.2f m", std::abs(sph.entry->x - mass.entry.x))
+              << (std::abs(sph.entry->x - mass.entry.x) < 2.0 * sph.band.bin_width + 1e-9 ? " (same entry)" : "")
+              << " from the LEM entry and exits " << format("%.2f m", std::abs(sph.exit->x - mass.exit.x))
+              << " from the LEM exit; mean normal distance " << format("%.2f m", distances.mean_normal_distance)
+              << ", sliding masses overlap " << format("%.0f %%", 100.0 * overlap.intersection_over_union)
+              << " (intersection over union).";
+    }
+  }
+  report["methods"] = methods;
+  report["verdict"] = verdict_done ? verdict.str()
+                                   : std::string("No comparison: the SPH run shows no plastic band above the threshold "
+                                                 "or no LEM method found a critical surface.");
+  return report;
+}
+
+}  // namespace coupling

@@ -1,0 +1,142 @@
+#include "coupling/output/report.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#ifndef SPHSLOPE_VERSION
+#define SPHSLOPE_VERSION "0.1.0"
+#endif
+
+namespace coupling {
+
+namespace {
+
+constexpr double to_kilo = 1e-3;  // N -> kN, Pa -> kPa
+constexpr double to_degrees = 180.0 / std::numbers::pi;
+
+nlohmann::json point(const slope::Point& p) { return nlohmann::json::array({p.x, p.y}); }
+
+// A finite number, or null (JSON has no NaN or infinity; never write a made-up number).
+nlohmann::json number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
+
+nlohmann::json slice_report(const slope::Section& section, const slope::Slice& slice,
+                            const slope::SliceForces* forces) {
+  nlohmann::json s;
+  s["x_left_m"] = slice.x_left;
+  s["x_right_m"] = slice.x_right;
+  s["width_m"] = slice.width;
+  s["base_angle_deg"] = slice.base_angle * to_degrees;
+  s["base_length_m"] = slice.base_length;
+  s["material"] = slice.base_material < section.materials.size() ? section.materials[slice.base_material].name : "";
+  s["cohesion_kPa"] = slice.cohesion * to_kilo;
+  s["friction_angle_deg"] = std::atan(slice.tan_friction) * to_degrees;
+  s["weight_kN_m"] = slice.weight * to_kilo;
+  s["surcharge_kN_m"] = slice.surcharge_load * to_kilo;
+  s["ponded_water_kN_m"] = slice.ponded_water_load * to_kilo;
+  s["pore_pressure_kPa"] = slice.pore_pressure * to_kilo;
+  if (forces != nullptr) {
+    s["normal_force_kN_m"] = number(forces->normal * to_kilo);
+    s["shear_force_kN_m"] = number(forces->shear * to_kilo);
+    s["interslice_normal_right_kN_m"] = number(forces->interslice_normal_right * to_kilo);
+    s["interslice_shear_right_kN_m"] = number(forces->interslice_shear_right * to_kilo);
+  } else {
+    for (const char* key : {"normal_force_kN_m", "shear_force_kN_m", "interslice_normal_right_kN_m",
+                            "interslice_shear_right_kN_m"}) {
+      s[key] = nullptr;
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string_view program_version() { return SPHSLOPE_VERSION; }
+
+nlohmann::json report_header(const Scene& scene) {
+  nlohmann::json report;
+  report["format"] = report_format;
+  report["program"] = {{"name", "sphslope"}, {"version", program_version()}};
+  report["scene"] = {{"name", scene.name}, {"file", scene.file.string()}};
+  return report;
+}
+
+nlohmann::json method_report(const slope::Section& section, const slope::CriticalSurface& critical) {
+  nlohmann::json m;
+  const slope::FsResult& result = critical.result;
+  const bool solved = critical.mass.has_value() && result.factor_of_safety.has_value() &&
+                      std::isfinite(*result.factor_of_safety);
+  if (!solved) {
+    m["factor_of_safety"] = nullptr;
+    m["error"] = !result.error.empty() ? result.error
+                                       : std::string("no admissible slip surface converged for this method");
+    return m;
+  }
+  m["factor_of_safety"] = *result.factor_of_safety;
+  if (slope::has_interslice_lambda(critical.method)) m["lambda"] = result.lambda;
+  m["iterations"] = result.iterations;
+
+  const slope::SlipMass& mass = *critical.mass;
+  m["surface"] = {{"type", "circle"},
+                  {"center_m", nlohmann::json::array({mass.circle.xc, mass.circle.yc})},
+                  {"radius_m", mass.circle.radius},
+                  {"entry_m", point(mass.entry)},
+                  {"exit_m", point(mass.exit)},
+                  {"slides_toward", mass.direction >= 0 ? "+x" : "-x"}};
+  const bool with_forces = result.forces.size() == mass.slices.size();
+  nlohmann::json slices = nlohmann::json::array();
+  for (std::size_t i = 0; i < mass.slices.size(); ++i) {
+    slices.push_back(slice_report(section, mass.slices[i], with_forces ? &result.forces[i] : nullptr));
+  }
+  m["slices"] = std::move(slices);
+  return m;
+}
+
+nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& analysis,
+                          const slope::SearchResult& result) {
+  nlohmann::json lem;
+  nlohmann::json method_keys = nlohmann::json::array();
+  for (slope::Method method : analysis.methods) method_keys.push_back(slope::method_key(method));
+  lem["settings"] = {{"methods", method_keys},
+                     {"slices", analysis.search.slicing.slices},
+                     {"refine", analysis.search.refine},
+                     {"minimum_depth_m", analysis.search.minimum_depth > 0 ? nlohmann::json(analysis.search.minimum_depth)
+                                                                          : nlohmann::json(nullptr)},
+                     {"search_limits_given", analysis.has_search_limits}};
+
+  nlohmann::json methods = nlohmann::json::object();
+  for (slope::Method method : analysis.methods) {
+    const std::string key(slope::method_key(method));
+    const slope::CriticalSurface* found = nullptr;
+    for (const slope::CriticalSurface& critical : result.methods) {
+      if (critical.method == method) found = &critical;
+    }
+    if (found != nullptr) {
+      methods[key] = method_report(section, *found);
+    } else {
+      methods[key] = {{"factor_of_safety", nullptr},
+                      {"error", result.error.empty() ? "the search returned no result for this method" : result.error}};
+    }
+  }
+  lem["methods"] = std::move(methods);
+
+  nlohmann::json map = nlohmann::json::array();
+  for (const slope::FsMapEntry& entry : result.fs_map) {
+    map.push_back({{"entry_m", point(entry.entry)},
+                   {"exit_m", point(entry.exit)},
+                   {"center_m", nlohmann::json::array({entry.circle.xc, entry.circle.yc})},
+                   {"radius_m", entry.circle.radius},
+                   {"factor_of_safety", number(entry.factor_of_safety)}});
+  }
+  lem["search"] = {{"trial_surfaces", result.trial_surfaces},
+                   {"seconds", result.seconds},
+                   {"fs_map_method", analysis.methods.empty() ? "" : std::string(slope::method_key(analysis.methods[0]))},
+                   {"fs_map", std::move(map)}};
+  if (!result.error.empty()) lem["search"]["error"] = result.error;
+  return lem;
+}
+
+std::string report_text(const nlohmann::json& report) {
+  return report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace coupling

@@ -1,0 +1,352 @@
+// Scene files: reading, JSON syntax, the top level and the analyses block. The section is in scene_section.cpp.
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "coupling/scene/json_reader.hpp"
+#include "coupling/scene/scene.hpp"
+#include "coupling/compare/comparison.hpp"
+#include "coupling/scene/sph_setup.hpp"
+#include "coupling/analyses/strength_reduction.hpp"
+#include "scene_internal.hpp"
+
+namespace coupling {
+
+SceneError::SceneError(std::vector<std::string> messages)
+    : std::runtime_error(messages.empty() ? std::string("invalid scene") : messages.front()),
+      messages_(std::move(messages)) {}
+
+namespace {
+
+// Duplicate keys are legal JSON but nlohmann keeps only the last one, which would silently drop what the user
+// wrote first. The parser callback tracks the JSON path and reports them.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(Diagnostics& diagnostics) : diagnostics_(&diagnostics) {}
+
+  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    switch (event) {
+      case Event::object_start: stack_.push_back(Frame{true, {}, {}, 0}); break;
+      case Event::array_start: stack_.push_back(Frame{false, {}, {}, 0}); break;
+      case Event::key: {
+        Frame& top = stack_.back();
+        top.key = parsed.get<std::string>();
+        if (!top.keys.insert(top.key).second) {
+          diagnostics_->error(path(), "duplicate key (each key may appear once in an object; the JSON parser "
+                                      "would keep only the last one)");
+        }
+        break;
+      }
+      case Event::value: advance(); break;
+      case Event::object_end:
+      case Event::array_end:
+        stack_.pop_back();
+        advance();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool is_object;
+    std::set<std::string> keys;
+    std::string key;
+    std::size_t index;
+  };
+
+  void advance() {
+    if (!stack_.empty() && !stack_.back().is_object) ++stack_.back().index;
+  }
+
+  std::string path() const {
+    std::string out;
+    for (const Frame& frame : stack_) out = frame.is_object ? join_path(out, frame.key) : index_path(out, frame.index);
+    return out;
+  }
+
+  Diagnostics* diagnostics_;
+  std::vector<Frame> stack_;
+};
+
+// "JSON syntax error at line 3, column 14: ..." from nlohmann's parse_error (byte offset is 1-based, of the last
+// character read).
+std::string syntax_error_message(std::string_view text, const nlohmann::json::parse_error& error) {
+  const std::size_t end = std::min<std::size_t>(error.byte == 0 ? 0 : error.byte - 1, text.size());
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < end; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  std::string detail = error.what();
+  // Drop nlohmann's "[json.exception.parse_error.101] parse error at line L, column C: " prefix.
+  if (const auto colon = detail.find(": "); colon != std::string::npos && detail.rfind("[json.exception", 0) == 0) {
+    detail = detail.substr(colon + 2);
+  }
+  return "JSON syntax error at line " + std::to_string(line) + ", column " + std::to_string(column) + ": " + detail;
+}
+
+std::string join(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& word : words) out += (out.empty() ? "" : ", ") + word;
+  return out;
+}
+
+void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics& diagnostics) {
+  auto lem = analyses.object("lem", Need::optional, "an object (may be empty: {})");
+  if (!lem) return;
+  LemAnalysis result = default_lem_analysis();
+
+  std::vector<std::string> method_keys;
+  for (slope::Method method : slope::all_methods()) method_keys.emplace_back(slope::method_key(method));
+  if (const nlohmann::json* methods =
+          lem->array("methods", Need::optional, 1, limits::name_list, "an array of method names")) {
+    result.methods.clear();
+    for (std::size_t i = 0; i < methods->size(); ++i) {
+      const std::string path = index_path(lem->path_of("methods"), i);
+      const auto key = read_string((*methods)[i], path, diagnostics);
+      if (!key) continue;
+      const auto method = slope::method_from_key(*key);
+      if (!method) {
+        const std::string suggestion = closest_match(*key, method_keys);
+        diagnostics.error(path, "unknown method \"" + *key + "\" (" +
+                                    (suggestion.empty() ? "" : "did you mean \"" + suggestion + "\"? ") +
+                                    "allowed: " + join(method_keys) + ")");
+        continue;
+      }
+      if (std::find(result.methods.begin(), result.methods.end(), *method) != result.methods.end()) {
+        diagnostics.error(path, "method \"" + *key + "\" is listed twice (list each method once)");
+        continue;
+      }
+      result.methods.push_back(*method);
+    }
+  }
+  if (const auto slices = lem->integer("slices", Need::optional, Bounds::closed(min_slices, max_slices))) {
+    result.search.slicing.slices = static_cast<int>(*slices);
+  }
+  if (const auto refine = lem->boolean("refine", Need::optional)) result.search.refine = *refine;
+  if (auto search = lem->object("search", Need::optional)) {
+    result.has_search_limits = read_search_limits(*search, scene.section ? &scene.section->section : nullptr,
+                                                  result.search.limits);
+    if (const auto depth = read_minimum_depth(*search)) {
+      result.search.minimum_depth = *depth;
+      result.has_search_limits = true;
+    }
+    search->finish();
+  }
+  lem->finish();
+
+  if (!scene.section) {
+    // Only a fault of its own when the scene has no section at all (an invalid section is reported already).
+    if (!has_section) diagnostics.error(lem->path(), "limit equilibrium needs a \"section\" (this scene has none)");
+    return;
+  }
+  scene.analyses.lem = std::move(result);
+}
+
+void read_analyses(JsonReader& top, Scene& scene, bool has_section, Diagnostics& diagnostics) {
+  auto analyses = top.object("analyses", Need::required, "an object naming the analyses to run: lem, sph, compare");
+  if (!analyses) return;
+  read_lem(*analyses, scene, has_section, diagnostics);
+  if (const nlohmann::json* sph = analyses->raw("sph", Need::optional)) {
+    if (!sph->is_object()) {
+      diagnostics.error(analyses->path_of("sph"), "expected an object, got " + json_type_name(*sph));
+    } else {
+      scene.analyses.sph = *sph;
+      if (scene.section) check_materials_for_sph(top.path_of("section"), *scene.section, diagnostics);
+    }
+  }
+  if (const nlohmann::json* compare = analyses->raw("compare", Need::optional)) {
+    if (!compare->is_object()) {
+      diagnostics.error(analyses->path_of("compare"), "expected an object, got " + json_type_name(*compare));
+    } else {
+      scene.analyses.compare = *compare;
+      if (!analyses->has("lem") || !analyses->has("sph")) {
+        diagnostics.error(analyses->path_of("compare"),
+                          "comparing surfaces needs both analyses.lem and analyses.sph in the scene");
+      }
+    }
+  }
+  if (const nlohmann::json* srm = analyses->raw("srm", Need::optional)) {
+    if (!srm->is_object()) {
+      diagnostics.error(analyses->path_of("srm"), "expected an object, got " + json_type_name(*srm));
+    } else {
+      scene.analyses.srm = *srm;
+    }
+  }
+  if (!analyses->has("lem") && !analyses->has("sph") && !analyses->has("compare") && !analyses->has("srm")) {
+    diagnostics.error(analyses->path(), "no analysis requested (add at least one of: \"lem\": {}, \"sph\": {...})");
+  }
+  analyses->finish();
+}
+
+}  // namespace
+
+LemAnalysis default_lem_analysis() {
+  LemAnalysis lem;
+  lem.methods = slope::all_methods();
+  lem.search.slicing.slices = 50;
+  lem.search.refine = true;
+  return lem;
+}
+
+Scene scene_from_json(const nlohmann::json& document, const std::filesystem::path& file) {
+  Diagnostics diagnostics;
+  Scene scene;
+  scene.file = file;
+  scene.document = document;
+
+  JsonReader top(document, "", diagnostics);
+  if (!top.is_object()) throw SceneError(diagnostics.messages());
+
+  if (const auto format = top.string("format", Need::required)) {
+    if (*format != scene_format) {
+      diagnostics.error("format", "unsupported format \"" + *format + "\" (allowed: \"" + std::string(scene_format) +
+                                      "\")");
+    }
+  }
+  scene.name = top.string("name", Need::optional).value_or(file.stem().string());
+  scene.source = top.string("source", Need::optional, false).value_or("");
+  top.allow("notes");
+
+  const bool has_section = top.has("section");
+  const bool has_bodies = top.has("bodies");
+  if (!has_section && !has_bodies && top.is_object()) {
+    diagnostics.error("section", "missing (required: a \"section\" for a slope, or \"bodies\" (and \"walls\") for a "
+                                 "particle scene)");
+  }
+  if (has_section) {
+    if (auto section = top.object("section", Need::required)) {
+      scene.section = read_section(*section, diagnostics);
+      section->finish();
+    }
+  }
+  // Particle scenes: defined and validated by the SPH stage; kept raw here.
+  if (const nlohmann::json* bodies = top.raw("bodies", Need::optional)) {
+    if (!bodies->is_array()) {
+      diagnostics.error("bodies", "expected an array of bodies, got " + json_type_name(*bodies));
+    } else {
+      scene.bodies = *bodies;
+    }
+  }
+  if (const nlohmann::json* walls = top.raw("walls", Need::optional)) scene.walls = *walls;
+
+  read_analyses(top, scene, has_section, diagnostics);
+  top.finish();
+  check_sph_scene(scene, diagnostics);
+  if (scene.analyses.compare) read_comparison_options(*scene.analyses.compare, lem_method_keys(scene), diagnostics);
+  check_srm_scene(scene, diagnostics);
+
+  if (!diagnostics.empty()) throw SceneError(diagnostics.messages());
+  return scene;
+}
+
+Scene parse_scene(std::string_view text, const std::filesystem::path& file) {
+  // Before parsing: a deeply nested document would overflow the stack when it is copied or printed.
+  if (auto fault = nesting_depth_fault(text)) throw SceneError({std::move(*fault)});
+  Diagnostics diagnostics;
+  nlohmann::json document;
+  try {
+    document = nlohmann::json::parse(text.begin(), text.end(), DuplicateKeyCheck(diagnostics), true, false);
+  } catch (const nlohmann::json::parse_error& error) {
+    throw SceneError({syntax_error_message(text, error)});
+  } catch (const nlohmann::json::exception& error) {
+    // e.g. out_of_range.406 "number overflow parsing '1e400'" (no position is available for these).
+    std::string detail = error.what();
+    if (const auto bracket = detail.find("] "); detail.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) {
+      detail = detail.substr(bracket + 2);
+    }
+    throw SceneError({"invalid JSON: " + detail});
+  }
+  if (!diagnostics.empty()) {
+    // Report duplicates together with whatever else is wrong.
+    std::vector<std::string> messages = diagnostics.messages();
+    try {
+      scene_from_json(document, file);
+    } catch (const SceneError& error) {
+      messages.insert(messages.end(), error.messages().begin(), error.messages().end());
+    }
+    throw SceneError(messages);
+  }
+  return scene_from_json(document, file);
+}
+
+namespace {
+
+std::string file_too_large(const std::filesystem::path& file, const std::string& size) {
+  return "scene file \"" + file.string() + "\" is too large (" + size + "; at most " +
+         std::to_string(max_scene_file_bytes) + " bytes allowed: " + std::string(max_scene_file_reason) + ")";
+}
+
+// The whole text of `in`, or nullopt once it exceeds max_scene_file_bytes: a pipe or device of unknown (or endless)
+// size is never read further than the limit.
+std::optional<std::string> read_at_most_limit(std::istream& in) {
+  std::string text;
+  std::vector<char> buffer(1 << 16);
+  while (in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    text.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > max_scene_file_bytes) return std::nullopt;
+  }
+  return text;
+}
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& file) {
+  // Regular files are refused by their size, before anything is read.
+  std::error_code size_error;
+  const std::uintmax_t bytes = std::filesystem::file_size(file, size_error);
+  if (!size_error && bytes > max_scene_file_bytes) {
+    throw SceneError({file_too_large(file, std::to_string(bytes) + " bytes")});
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw SceneError({"cannot read scene file \"" + file.string() + "\" (does it exist and is it readable?)"});
+  const std::optional<std::string> text = read_at_most_limit(in);
+  if (!text) throw SceneError({file_too_large(file, "more than " + std::to_string(max_scene_file_bytes) + " bytes")});
+  if (in.bad()) throw SceneError({"cannot read scene file \"" + file.string() + "\""});
+  return parse_scene(*text, file);
+}
+
+std::vector<std::string> lem_method_keys(const Scene& scene) {
+  std::vector<std::string> keys;
+  if (scene.analyses.lem)
+    for (slope::Method method : scene.analyses.lem->methods) keys.emplace_back(slope::method_key(method));
+  return keys;
+}
+
+std::string summarize(const Scene& scene) {
+  std::ostringstream out;
+  out << '"' << scene.name << "\": ";
+  if (scene.section) {
+    const slope::Section& s = scene.section->section;
+    out << "section x " << format_number(s.x_min()) << " to " << format_number(s.x_max()) << " m, "
+        << s.profile_lines.size() << " profile line" << (s.profile_lines.size() == 1 ? "" : "s") << ", "
+        << s.materials.size() << " material" << (s.materials.size() == 1 ? "" : "s");
+    if (s.water) out << ", water table";
+    if (!s.surcharges.empty()) out << ", " << s.surcharges.size() << " surcharge" << (s.surcharges.size() == 1 ? "" : "s");
+    if (s.seismic_coefficient > 0) out << ", seismic kh = " << format_number(s.seismic_coefficient);
+  }
+  if (scene.bodies) {
+    if (scene.section) out << "; ";
+    out << scene.bodies->size() << " particle bod" << (scene.bodies->size() == 1 ? "y" : "ies");
+  }
+  std::vector<std::string> analyses;
+  if (scene.analyses.lem) {
+    const std::size_t n = scene.analyses.lem->methods.size();
+    analyses.push_back("lem (" + std::to_string(n) + " method" + (n == 1 ? "" : "s") + ")");
+  }
+  if (scene.analyses.sph) analyses.emplace_back("sph");
+  if (scene.analyses.compare) analyses.emplace_back("compare");
+  if (scene.analyses.srm) analyses.emplace_back("srm");
+  out << "; analyses: " << join(analyses);
+  return out.str();
+}
+
+}  // namespace coupling

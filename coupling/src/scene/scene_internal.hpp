@@ -1,0 +1,32 @@
+#pragma once
+// Shared between the scene readers (scene.cpp, scene_section.cpp); not part of the public interface.
+#include <optional>
+#include <string>
+
+#include "coupling/scene/json_reader.hpp"
+#include "coupling/scene/scene.hpp"
+
+namespace coupling {
+
+inline constexpr long min_slices = 5;
+inline constexpr long max_slices = 1000;
+inline constexpr long max_grid_points_per_axis = 200;
+
+// Reads and validates one material object (name, unit weight, strength, optional elastic and flow constants) and
+// converts it to SI; reports its own unknown keys. Also used for the materials of particle bodies.
+std::optional<SoilMaterial> read_material(JsonReader& material);
+
+// Reads and validates "section"; nullopt when anything in it is invalid (the faults are in `diagnostics`).
+std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagnostics);
+
+// Reads analyses.lem.search into `limits`; `section` (may be null) bounds the entry and exit ranges.
+// Returns whether any limit was given.
+bool read_search_limits(JsonReader& search, const slope::Section* section, slope::SearchLimits& limits);
+
+// analyses.lem.search.minimum_depth_m (m), when given.
+std::optional<double> read_minimum_depth(JsonReader& search);
+
+// The SPH soil model needs the elastic constants of every material of the section.
+void check_materials_for_sph(const std::string& section_path, const SceneSection& section, Diagnostics& diagnostics);
+
+}  // namespace coupling

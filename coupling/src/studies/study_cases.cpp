@@ -1,0 +1,275 @@
+#include "study_cases.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "coupling/compare/comparison.hpp"
+#include "coupling/scene/json_reader.hpp"
+#include "coupling/scene/sph_setup.hpp"
+
+namespace coupling::study_detail {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// Nguyen, Bui & Fukagawa (2015), "Failure mechanism of true 2D granular flows", arXiv:1512.05180 (J. Chem. Eng.
+// Jpn.): collapses of columns of aluminium rods (the material of Bui et al. 2008) on a rigid bed.
+constexpr const char* true_2d_collapse_source =
+    "Nguyen, Bui & Fukagawa (2015), Failure mechanism of true 2D granular flows, arXiv:1512.05180: aluminium-rod "
+    "columns (the material of Bui et al. 2008); h_f/h_0 = 1 for a < 0.65, h_0/h_f = 1.42 a^(2/3) above; "
+    "(d - d_0)/d_0 = 3.25 a^0.96 for 0.65 < a < 1.5 and 3.80 a^0.73 for a > 1.5";
+
+double polygon_min(const std::vector<slope::Point>& polygon, double slope::Point::*coordinate) {
+  double v = std::numeric_limits<double>::infinity();
+  for (const auto& p : polygon) v = std::min(v, p.*coordinate);
+  return v;
+}
+double polygon_max(const std::vector<slope::Point>& polygon, double slope::Point::*coordinate) {
+  double v = -std::numeric_limits<double>::infinity();
+  for (const auto& p : polygon) v = std::max(v, p.*coordinate);
+  return v;
+}
+
+double max_depth_below(const Polyline& ground, const Polyline& surface) {
+  double depth = nan;
+  for (const auto& p : surface) {
+    const double d = polyline_height(ground, p.x) - p.y;
+    if (std::isfinite(d) && !(d <= depth)) depth = d;
+  }
+  return depth;
+}
+
+CaseSetup slope_case(const Scene& scene) {
+  CaseSetup setup;
+  setup.kind = CaseKind::slope_failure_surface;
+  setup.kind_key = "slope_failure_surface";
+  const slope::Section& section = scene.section->section;
+  setup.ground = section.profile_lines.front().points;
+  const LemAnalysis analysis = scene.analyses.lem ? *scene.analyses.lem : default_lem_analysis();
+  const slope::SearchResult lem = slope::search_critical(section, {slope::Method::bishop}, analysis.search);
+  if (lem.methods.empty() || !lem.methods.front().mass || !lem.methods.front().result.factor_of_safety)
+    throw SceneError({"study: the limit-equilibrium search found no Bishop critical circle to measure the SPH "
+                      "surface against (" + (lem.methods.empty() ? lem.error : lem.methods.front().result.error) +
+                      ")"});
+  setup.lem_reference = lem.methods.front();
+  const slope::SlipMass& mass = *setup.lem_reference->mass;
+  double y_min = std::numeric_limits<double>::infinity(), y_max = -y_min;
+  for (const auto& p : setup.ground) {
+    y_min = std::min(y_min, p.y);
+    y_max = std::max(y_max, p.y);
+  }
+  const double height = y_max - y_min;
+  const double lem_depth = max_depth_below(setup.ground, lem_surface_polyline(mass));
+  const std::string source = "the limit-equilibrium critical circle of this program (Bishop simplified, automatic "
+                             "search of analyses.lem), validated in docs/validation.md";
+  const std::string by_height = "|value - reference| / H, H = " + format_number(height) + " m (slope height)";
+  setup.quantities = {
+      {"entry_x_m", "x where the SPH failure surface enters the ground behind the crest (m)", mass.entry.x, source,
+       "LEM Bishop circle", by_height, height},
+      {"exit_x_m", "x where the SPH failure surface leaves the ground near the toe (m)", mass.exit.x, source,
+       "LEM Bishop circle", by_height, height},
+      {"max_depth_m", "largest vertical depth of the SPH failure surface below the initial ground (m)", lem_depth,
+       source, "LEM Bishop circle", "|value - reference| / reference", lem_depth},
+      {"sliding_mass_iou", "intersection over union of the SPH and LEM sliding masses (-)", 1.0,
+       "identical sliding masses (IoU = 1) with the Bishop critical circle", "LEM Bishop mass", "1 - value", 1.0},
+  };
+  setup.parameters = {{"slope_height_m", height},
+                      {"lem_method", "bishop"},
+                      {"lem_factor_of_safety", *setup.lem_reference->result.factor_of_safety},
+                      {"lem_circle", {{"center_m", {mass.circle.xc, mass.circle.yc}},
+                                      {"radius_m", mass.circle.radius},
+                                      {"entry_m", {mass.entry.x, mass.entry.y}},
+                                      {"exit_m", {mass.exit.x, mass.exit.y}}}}};
+  return setup;
+}
+
+CaseSetup particle_case(const Scene& scene) {
+  Diagnostics diagnostics;
+  const auto bodies = read_particle_bodies(*scene.bodies, diagnostics);
+  // A plain WallBox plus a flag (an std::optional here trips g++ 12's maybe-uninitialized warning).
+  WallBox walls;
+  bool has_walls = false;
+  if (scene.walls) {
+    if (auto read = read_wall_box(*scene.walls, diagnostics)) {
+      walls = *read;
+      has_walls = true;
+    }
+  }
+  const WallBox* box = has_walls ? &walls : nullptr;
+  const auto analysis = read_sph_analysis(*scene.analyses.sph, diagnostics);
+  if (!bodies || !analysis) throw SceneError(diagnostics.messages());
+  if (bodies->size() != 1)
+    throw SceneError({"study: bodies: the column references need exactly one body (got " +
+                      std::to_string(bodies->size()) + ")"});
+  const ParticleBody& body = bodies->front();
+  CaseSetup setup;
+  setup.body_polygon = body.polygon;
+  setup.density = body.material.density();
+  setup.poisson_ratio = body.material.poisson_ratio.value_or(0.0);
+  const double x0 = polygon_min(body.polygon, &slope::Point::x), x1 = polygon_max(body.polygon, &slope::Point::x);
+  const double y0 = polygon_min(body.polygon, &slope::Point::y), y1 = polygon_max(body.polygon, &slope::Point::y);
+  const double length = x1 - x0, height = y1 - y0;
+  const double area = [&] {
+    double a = 0.0;
+    for (std::size_t k = 0; k < body.polygon.size(); ++k) {
+      const auto& p = body.polygon[k];
+      const auto& q = body.polygon[(k + 1) % body.polygon.size()];
+      a += p.x * q.y - q.x * p.y;
+    }
+    return std::fabs(0.5 * a);
+  }();
+  if (std::fabs(area - length * height) > 1e-6 * length * height)
+    throw SceneError({"study: bodies[0].polygon_m: the column references need a rectangular column (axis-aligned "
+                      "rectangle; got a polygon of area " + format_number(area) + " m2 in a " +
+                      format_number(length) + " x " + format_number(height) + " m box)"});
+
+  if (body.material.elastic) {
+    setup.kind = CaseKind::elastic_column;
+    setup.kind_key = "elastic_column";
+    if (!box || !box->sides.left || !box->sides.right || !box->sides.bottom ||
+        std::fabs(box->x_min - x0) > 1e-9 || std::fabs(box->x_max - x1) > 1e-9 || std::fabs(box->bottom_y - y0) > 1e-9)
+      throw SceneError({"study: walls: the elastic-column reference (closed-form stress of a laterally confined "
+                        "column) needs left, right and bottom walls touching the column (walls.x_range_m = [" +
+                        format_number(x0) + ", " + format_number(x1) + "], bottom_y_m = " + format_number(y0) + ")"});
+    if (analysis->settings.wall_slip != sph::WallSlip::free_slip)
+      throw SceneError({"study: analyses.sph.walls.slip: the elastic-column reference needs frictionless walls "
+                        "(\"free_slip\"); with no-slip walls the closed form does not hold"});
+    const double k0 = setup.poisson_ratio / (1.0 - setup.poisson_ratio);
+    const std::string source =
+        "closed form of a laterally confined (oedometric) elastic column under its own weight: sigma_yy = -rho g d, "
+        "sigma_xx = nu/(1 - nu) sigma_yy (d = initial depth below the top)";
+    const std::string rms =
+        "root-mean-square over the particles between 0.2 H and 0.8 H of depth of (SPH - closed form), divided by the "
+        "root-mean-square of the closed form";
+    setup.quantities = {
+        {"sigma_yy_error", "relative error of the vertical stress sigma_yy (-)", std::nullopt, source, "closed form", rms, 1.0},
+        {"sigma_xx_error", "relative error of the horizontal stress sigma_xx (-)", std::nullopt, source, "closed form", rms,
+         1.0},
+    };
+    setup.parameters = {{"column_height_m", height}, {"column_width_m", length}, {"density_kg_m3", setup.density},
+                        {"poisson_ratio", setup.poisson_ratio}, {"k0", k0},
+                        {"gravity_m_s2", std::hypot(analysis->settings.gravity_x, analysis->settings.gravity_y)}};
+    return setup;
+  }
+
+  setup.kind = CaseKind::column_collapse;
+  setup.kind_key = "column_collapse";
+  if (!box || !box->sides.bottom || !box->sides.left || std::fabs(box->x_min - x0) > 1e-9 ||
+      std::fabs(box->bottom_y - y0) > 1e-9)
+    throw SceneError({"study: walls: the column-collapse reference needs a floor and a back wall at the column's "
+                      "left face (walls.x_range_m starting at " + format_number(x0) + ", bottom_y_m = " +
+                      format_number(y0) + ", sides left and bottom)"});
+  const double a = height / length;
+  const double final_height = a < 0.65 ? height : height / (1.42 * std::pow(a, 2.0 / 3.0));
+  const double runout_ratio = a < 1.5 ? 3.25 * std::pow(a, 0.96) : 3.80 * std::pow(a, 0.73);
+  const double final_length = length * (1.0 + runout_ratio);
+  const std::string extrapolated =
+      a < 0.65 ? " (a = " + format_number(a) + " is below the fitted range 0.65 < a < 1.5: the run-out law is "
+                 "extrapolated)" : "";
+  setup.quantities = {
+      {"final_length_m", "distance from the back wall to the front of the deposit, d (m)", final_length,
+       std::string(true_2d_collapse_source) + extrapolated, "true-2-D experiments (Nguyen et al. 2015)",
+       "|value - reference| / reference", final_length},
+      {"final_height_m", "final height of the deposit, h_f (m)", final_height, true_2d_collapse_source,
+       "true-2-D experiments (Nguyen et al. 2015)", "|value - reference| / reference", final_height},
+  };
+  setup.parameters = {{"initial_length_m", length}, {"initial_height_m", height}, {"aspect_ratio", a}};
+  return setup;
+}
+
+// Relative root-mean-square error of the closed-form stresses of a confined elastic column.
+std::pair<double, double> column_stress_errors(const CaseSetup& setup, const ParticleSnapshot& p, double gravity) {
+  const double top = polygon_max(setup.body_polygon, &slope::Point::y);
+  const double bottom = polygon_min(setup.body_polygon, &slope::Point::y);
+  const double height = top - bottom, k0 = setup.poisson_ratio / (1.0 - setup.poisson_ratio);
+  double e_yy = 0, n_yy = 0, e_xx = 0, n_xx = 0;
+  std::size_t used = 0;
+  for (std::size_t i = 0; i < p.y0.size() && i < p.stress_yy.size(); ++i) {
+    const double depth = top - p.y0[i];
+    if (depth < 0.2 * height || depth > 0.8 * height) continue;
+    const double exact_yy = -setup.density * gravity * depth, exact_xx = k0 * exact_yy;
+    e_yy += (p.stress_yy[i] - exact_yy) * (p.stress_yy[i] - exact_yy);
+    n_yy += exact_yy * exact_yy;
+    e_xx += (p.stress_xx[i] - exact_xx) * (p.stress_xx[i] - exact_xx);
+    n_xx += exact_xx * exact_xx;
+    ++used;
+  }
+  if (used == 0 || !(n_yy > 0)) return {nan, nan};
+  return {std::sqrt(e_yy / n_yy), n_xx > 0 ? std::sqrt(e_xx / n_xx) : nan};
+}
+
+std::optional<double> number_at(const nlohmann::json& j, std::initializer_list<const char*> path) {
+  const nlohmann::json* at = &j;
+  for (const char* key : path) {
+    if (!at->is_object() || !at->contains(key)) return std::nullopt;
+    at = &(*at)[key];
+  }
+  if (!at->is_number()) return std::nullopt;
+  return at->get<double>();
+}
+
+std::optional<double> finite(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
+
+}  // namespace
+
+CaseSetup setup_case(const Scene& scene) {
+  if (!scene.analyses.sph)
+    throw SceneError({"study: the scene has no analyses.sph (the study runs it at each --spacings value, replacing "
+                      "analyses.sph.particle_spacing_m)"});
+  if (scene.section) return slope_case(scene);
+  if (scene.bodies) return particle_case(scene);
+  throw SceneError({"study: the scene has neither a section nor bodies"});
+}
+
+nlohmann::json scene_at_spacing(const Scene& scene, double spacing) {
+  nlohmann::json document = scene.document;
+  document["analyses"]["sph"]["particle_spacing_m"] = spacing;
+  if (scene.section) {
+    if (!document["analyses"].contains("lem")) document["analyses"]["lem"] = nlohmann::json::object();
+    if (!document["analyses"].contains("compare")) document["analyses"]["compare"] = nlohmann::json::object();
+    document["analyses"].erase("srm");  // a study measures the collapse, not the strength-reduction FS
+  }
+  return document;
+}
+
+std::vector<std::optional<double>> read_values(const CaseSetup& setup, const WorkflowResult& run) {
+  std::vector<std::optional<double>> values(setup.quantities.size());
+  const nlohmann::json& report = run.report;
+  switch (setup.kind) {
+    case CaseKind::slope_failure_surface: {
+      if (!report.contains("comparison")) break;
+      const nlohmann::json& c = report["comparison"];
+      const nlohmann::json& surface = c.value("sph_surface", nlohmann::json::object());
+      if (surface.contains("entry_m") && surface["entry_m"].is_array()) values[0] = surface["entry_m"][0].get<double>();
+      if (surface.contains("exit_m") && surface["exit_m"].is_array()) values[1] = surface["exit_m"][0].get<double>();
+      if (surface.contains("points_m") && surface["points_m"].is_array() && !surface["points_m"].empty()) {
+        Polyline points;
+        for (const auto& p : surface["points_m"]) points.push_back({p[0].get<double>(), p[1].get<double>()});
+        values[2] = finite(max_depth_below(setup.ground, points));
+      }
+      values[3] = number_at(c, {"methods", "bishop", "intersection_over_union"});
+      break;
+    }
+    case CaseKind::elastic_column: {
+      if (!run.sph_final_state) break;
+      const double gravity = setup.parameters["gravity_m_s2"].get<double>();
+      const auto [yy, xx] = column_stress_errors(setup, *run.sph_final_state, gravity);
+      values[0] = finite(yy);
+      values[1] = finite(xx);
+      break;
+    }
+    case CaseKind::column_collapse:
+      values[0] = number_at(report, {"sph", "deposit", "final_length_m"});
+      values[1] = number_at(report, {"sph", "deposit", "final_height_m"});
+      break;
+  }
+  return values;
+}
+
+double relative_error(const Quantity& quantity, double value) {
+  if (!quantity.reference) return std::fabs(value);
+  return std::fabs(value - *quantity.reference) / quantity.error_scale;
+}
+
+}  // namespace coupling::study_detail

@@ -1,0 +1,55 @@
+#pragma once
+// The references of `sphslope study` (internal to coupling): which quantities a case monitors, their cited
+// reference values, and how each is read out of a finished run.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "coupling/scene/scene.hpp"
+#include "coupling/compare/surface_comparison.hpp"
+#include "coupling/analyses/pipeline.hpp"
+#include "slope/search.hpp"
+
+namespace coupling::study_detail {
+
+enum class CaseKind { slope_failure_surface, elastic_column, column_collapse };
+
+struct Quantity {
+  std::string key;                 // e.g. "exit_x_m"
+  std::string description;         // what it is, with its unit
+  std::optional<double> reference; // reference value (none: the value is itself an error against a closed form)
+  std::string reference_source;    // citation
+  std::string reference_short;     // a few words for the figure's legend
+  std::string error_definition;    // how the relative error is formed
+  double error_scale = 1.0;        // error = |value - reference| / error_scale (value itself when no reference)
+};
+
+struct CaseSetup {
+  CaseKind kind = CaseKind::slope_failure_surface;
+  std::string kind_key;            // "slope_failure_surface", ...
+  std::vector<Quantity> quantities;
+  nlohmann::json parameters;       // what the references were computed from (a, H, density, ...)
+  // slope sections
+  Polyline ground;                                     // initial ground surface
+  std::optional<slope::CriticalSurface> lem_reference;  // the LEM critical surface the SPH run is measured against
+  // particle scenes
+  std::vector<slope::Point> body_polygon;
+  double density = 0.0, poisson_ratio = 0.0;  // kg/m^3, -
+};
+
+// Chooses the case from the scene and computes the references. Throws SceneError ("study: ...") when the scene
+// fits none of the references (e.g. an elastic column without free-slip side walls).
+CaseSetup setup_case(const Scene& scene);
+
+// The scene with the particle spacing replaced (and, for slopes, lem/compare analyses added when absent).
+nlohmann::json scene_at_spacing(const Scene& scene, double spacing);
+
+// The monitored values of one finished run, in the order of setup.quantities (null where not available).
+std::vector<std::optional<double>> read_values(const CaseSetup& setup, const WorkflowResult& run);
+
+// Relative error of a value, per its quantity's definition.
+double relative_error(const Quantity& quantity, double value);
+
+}  // namespace coupling::study_detail
