@@ -27,7 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/scene/scene.hpp"
-#include "coupling/scene/sph_setup.hpp"
+#include "coupling/analyses/sph_model.hpp"
 #include "slope/search.hpp"
 #include "sph/soil/run.hpp"
 #include "test_support.hpp"

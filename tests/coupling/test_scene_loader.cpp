@@ -226,7 +226,7 @@ TEST_CASE("scene: what is accepted", "[scene]") {
     REQUIRE(scene.bodies);
     REQUIRE(scene.walls);
     REQUIRE(scene.analyses.sph);
-    CHECK((*scene.analyses.sph)["end_time_s"] == 1);
+    CHECK(scene.analyses.sph->settings.end_time == 1);
     // The SPH stage validates the bodies and walls at load time: a body kind it does not know is an error.
     document["bodies"][0]["kind"] = "water";
     CHECK_THROWS_AS(load(document), SceneError);
@@ -241,7 +241,7 @@ TEST_CASE("scene: what is accepted", "[scene]") {
     document["analyses"]["compare"] = json::parse(R"({"plastic_strain_threshold": 0.1})");
     const Scene scene = load(document);
     REQUIRE(scene.analyses.sph);
-    CHECK((*scene.analyses.sph)["particle_spacing_m"] == 0.5);
+    CHECK(scene.analyses.sph->settings.particle_spacing == 0.5);
     REQUIRE(scene.analyses.compare);
     CHECK(*scene.section->materials[1].youngs_modulus == Approx(20e6));
   }

@@ -20,7 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/scene/scene.hpp"
-#include "coupling/scene/sph_setup.hpp"
+#include "coupling/analyses/sph_model.hpp"
 #include "sph/soil/checkpoint.hpp"
 
 extern char** environ;
@@ -243,7 +243,7 @@ TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted
 }
 
 #include "coupling/scene/scene.hpp"
-#include "coupling/scene/sph_setup.hpp"
+#include "coupling/analyses/sph_model.hpp"
 
 TEST_CASE("the thesis slopes fill with the thesis's particle counts", "[sph][fill][validation]") {
   // Source: shared/seeds/seed-002 section 4 (Tables 5-1, 5-3, 5-5): 3200, 3725 and 7100 soil particles at
@@ -252,7 +252,7 @@ TEST_CASE("the thesis slopes fill with the thesis's particle counts", "[sph][fil
       {"cases/thesis_slope1.json", 3200}, {"cases/thesis_slope2.json", 3725}, {"cases/thesis_slope3.json", 7100}};
   for (const auto& [file, expected] : cases) {
     const coupling::Scene scene = coupling::load_scene(fs::path(SPHSLOPE_SOURCE_DIR) / file);
-    const double dx = (*scene.analyses.sph)["particle_spacing_m"];
+    const double dx = scene.analyses.sph->settings.particle_spacing;
     INFO(file);
     CHECK(coupling::fill_section(scene.section->section, dx).points.size() == expected);
   }

@@ -22,7 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/scene/scene.hpp"
-#include "coupling/scene/sph_setup.hpp"
+#include "coupling/analyses/sph_model.hpp"
 #include "test_support.hpp"
 
 extern char** environ;
@@ -485,8 +485,7 @@ TEST_CASE("stability: gravity ramp and wall layers are read and validated with t
   };
   auto settings_of = [](const json& document) {
     const coupling::Scene s = coupling::parse_scene(document.dump(), "scene.json");
-    coupling::Diagnostics d;
-    return *coupling::read_sph_analysis(*s.analyses.sph, d);
+    return *s.analyses.sph;
   };
   CHECK(settings_of(scene).settings.gravity_mode == sph::GravityMode::ramped);
   CHECK(settings_of(scene).settings.gravity_ramp_time == 2.0);

@@ -11,7 +11,7 @@
 #include "coupling/compare/comparison.hpp"
 #include "coupling/output/figures.hpp"
 #include "coupling/output/report.hpp"
-#include "coupling/scene/sph_setup.hpp"
+#include "coupling/analyses/sph_model.hpp"
 #include "coupling/analyses/sph_stage.hpp"
 #include "coupling/analyses/strength_reduction.hpp"
 
@@ -119,8 +119,7 @@ StageOutcome run_compare(const Scene& scene, WorkflowResult& out, const std::opt
     out.report["comparison"] = {{"error", outcome.errors.back()}};
     return outcome;
   }
-  Diagnostics diagnostics;
-  const ComparisonOptions options = *read_comparison_options(*scene.analyses.compare, lem_method_keys(scene), diagnostics);
+  const ComparisonOptions& options = *scene.analyses.compare;
   const slope::Section& section = scene.section->section;
   failure = extract_sph_failure(*final_state, section.profile_lines.front().points, options);
   out.report["comparison"] = comparison_report(section, *failure, *out.lem, options);
@@ -157,8 +156,7 @@ StageOutcome run_srm(const Scene& scene, const WorkflowOptions& options, Workflo
         if (key == "bishop") bishop = *critical.result.factor_of_safety;
       }
   try {
-    Diagnostics diagnostics;
-    const SrmOptions srm = *read_srm_options(*scene.analyses.srm, diagnostics);
+    const SrmOptions& srm = *scene.analyses.srm;
     const SrmResult result = run_strength_reduction(scene, srm, bishop, lem_fs, options.log);
     out.report["srm"] = result.report;
     if (!result.ok) {
@@ -256,11 +254,8 @@ WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options) {
     // A valid scene whose SPH run would be refused before starting (particle, memory or step limits) is reported
     // by "check" as well, with the same messages (estimated without building particles).
     if (scene.analyses.sph) {
-      Diagnostics diagnostics;
-      const auto analysis = read_sph_analysis(*scene.analyses.sph, diagnostics);
-      const auto plan = analysis ? plan_sph(scene, *analysis) : std::nullopt;
-      if (plan) {
-        out.errors = sph_refusals(*analysis, *plan);
+      if (const auto plan = plan_sph(scene, *scene.analyses.sph)) {
+        out.errors = sph_refusals(*scene.analyses.sph, *plan);
         if (!out.errors.empty()) out.status = ExitStatus::invalid_input;
       }
     }

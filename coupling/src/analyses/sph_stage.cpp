@@ -9,7 +9,7 @@
 #include <ostream>
 
 #include "coupling/scene/json_reader.hpp"
-#include "coupling/scene/sph_setup.hpp"
+#include "coupling/analyses/sph_model.hpp"
 #include "sph/soil/checkpoint.hpp"
 #include "sph/soil/run.hpp"
 
@@ -72,8 +72,7 @@ void install_interrupt_handler() {
 bool interrupt_pending() { return interrupt_requested != 0; }
 
 SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options) {
-  Diagnostics unused;
-  const SphAnalysis analysis = *read_sph_analysis(*scene.analyses.sph, unused);
+  const SphAnalysis& analysis = *scene.analyses.sph;
   // Plan before allocating anything: the explicit step is bounded by the P-wave speed; a case that needs more
   // steps, particles or memory than its limits is refused here, with the planned figures in the message.
   if (const auto plan = plan_sph(scene, analysis)) {

@@ -8,7 +8,7 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "coupling/scene/sph_setup.hpp"
+#include "coupling/analyses/sph_model.hpp"
 #include "coupling/analyses/sph_stage.hpp"
 #include "sph/soil/run.hpp"
 
@@ -16,7 +16,7 @@ namespace coupling {
 
 namespace {
 
-constexpr double min_factor = 0.05, max_factor = 20.0, expansion = 1.5;
+constexpr double min_factor = srm_min_factor, max_factor = srm_max_factor, expansion = 1.5;
 
 double reduce_angle_deg(double angle_deg, double factor) {
   return std::atan(std::tan(angle_deg * M_PI / 180.0) / factor) * 180.0 / M_PI;
@@ -44,43 +44,6 @@ double slowest_shear_wave(const SceneSection& section) {
 }
 
 }  // namespace
-
-std::optional<SrmOptions> read_srm_options(const nlohmann::json& block, Diagnostics& diagnostics) {
-  JsonReader r(block, "analyses.srm", diagnostics);
-  const std::size_t errors_before = diagnostics.size();
-  SrmOptions o;
-  o.tolerance = r.number_or("tolerance", o.tolerance, Bounds::open(0.0, 1.0));
-  if (const nlohmann::json* bracket = r.raw("bracket", Need::optional)) {
-    const std::string path = r.path_of("bracket");
-    if (auto pair = read_pair(*bracket, path, diagnostics, "[lo, hi]")) {
-      if (!(pair->first >= min_factor && pair->second > pair->first && pair->second <= max_factor))
-        diagnostics.error(path, "must be [lo, hi] with " + format_number(min_factor) + " <= lo < hi <= " +
-                                    format_number(max_factor) + " (got [" + format_number(pair->first) + ", " +
-                                    format_number(pair->second) + "])");
-      else
-        o.bracket = *pair;
-    }
-  }
-  o.failure_displacement_m = r.number("failure_displacement_m", Need::optional, Bounds::positive());
-  o.max_time_s = r.number("max_time_s", Need::optional, Bounds::positive());
-  o.damping_per_s = r.number("damping_per_s", Need::optional, Bounds::non_negative());
-  o.rest_speed_m_s = r.number("rest_speed_m_s", Need::optional, Bounds::positive());
-  if (const auto trials = r.integer("max_trials", Need::optional, Bounds::closed(2.0, 200.0)))
-    o.max_trials = static_cast<int>(*trials);
-  r.finish();
-  if (diagnostics.size() != errors_before) return std::nullopt;
-  return o;
-}
-
-void check_srm_scene(const Scene& scene, Diagnostics& diagnostics) {
-  if (!scene.analyses.srm) return;
-  read_srm_options(*scene.analyses.srm, diagnostics);
-  if (!scene.section)
-    diagnostics.error("analyses.srm", "strength reduction needs a slope \"section\" (this is a particle scene)");
-  if (!scene.analyses.sph)
-    diagnostics.error("analyses.srm", "strength reduction needs analyses.sph in the scene for the particle settings "
-                                      "(particle_spacing_m, ...)");
-}
 
 BisectionResult bisect_factor(const std::function<SrmTrial(double)>& oracle, double lo, double hi, double tolerance,
                               int max_trials) {

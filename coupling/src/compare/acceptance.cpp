@@ -8,43 +8,6 @@ namespace coupling {
 
 namespace {
 
-// A length criterion is given in metres ("<name>_max_m") or in particle spacings ("<name>_max_spacings"), not both.
-std::optional<LengthLimit> read_length_limit(JsonReader& r, const std::string& name) {
-  const auto metres = r.number(name + "_max_m", Need::optional, Bounds::non_negative());
-  const auto spacings = r.number(name + "_max_spacings", Need::optional, Bounds::non_negative());
-  if (metres && spacings) {
-    r.diagnostics().error(r.path_of(name + "_max_spacings"),
-                          "give the limit either in metres (" + name + "_max_m) or in particle spacings, not both");
-    return std::nullopt;
-  }
-  if (metres) return LengthLimit{*metres, false};
-  if (spacings) return LengthLimit{*spacings, true};
-  return std::nullopt;
-}
-
-std::vector<std::string> read_methods(JsonReader& r, const std::vector<std::string>& known) {
-  std::vector<std::string> methods;
-  const nlohmann::json* list = r.array("methods", Need::optional, 1, limits::name_list);
-  if (list == nullptr) {
-    const bool has_bishop = std::find(known.begin(), known.end(), "bishop") != known.end();
-    if (has_bishop) methods.push_back("bishop");
-    else if (!known.empty()) methods.push_back(known.front());
-    return methods;
-  }
-  std::string allowed;
-  for (const auto& k : known) allowed += (allowed.empty() ? "" : ", ") + k;
-  for (std::size_t i = 0; i < list->size(); ++i) {
-    const std::string path = index_path(r.path_of("methods"), i);
-    const auto key = read_string((*list)[i], path, r.diagnostics());
-    if (!key) continue;
-    if (std::find(known.begin(), known.end(), *key) == known.end())
-      r.diagnostics().error(path, "method \"" + *key + "\" is not computed by analyses.lem (computed: " + allowed + ")");
-    else
-      methods.push_back(*key);
-  }
-  return methods;
-}
-
 std::optional<double> number_at(const nlohmann::json& block, const char* key) {
   if (!block.contains(key) || !block[key].is_number()) return std::nullopt;
   return block[key].get<double>();
@@ -63,29 +26,6 @@ std::string format_limit(double value) {
 }
 
 }  // namespace
-
-std::optional<AcceptanceCriteria> read_acceptance(const nlohmann::json& block, const std::vector<std::string>& known_methods,
-                                                  Diagnostics& diagnostics) {
-  JsonReader r(block, "analyses.compare.acceptance", diagnostics);
-  const std::size_t errors_before = diagnostics.size();
-  AcceptanceCriteria c;
-  c.methods = read_methods(r, known_methods);
-  c.entry_offset = read_length_limit(r, "entry_offset");
-  c.exit_offset = read_length_limit(r, "exit_offset");
-  c.mean_normal_distance = read_length_limit(r, "mean_normal_distance");
-  c.max_normal_distance = read_length_limit(r, "max_normal_distance");
-  c.min_overlap = r.number("overlap_min", Need::optional, Bounds::closed(0.0, 1.0));
-  c.max_fs_difference = r.number("fs_difference_max", Need::optional, Bounds::non_negative());
-  r.finish();
-  const bool any = c.entry_offset || c.exit_offset || c.mean_normal_distance || c.max_normal_distance ||
-                   c.min_overlap || c.max_fs_difference;
-  if (!any && diagnostics.size() == errors_before)
-    diagnostics.error("analyses.compare.acceptance",
-                      "no criterion given (allowed: entry_offset_max_m, exit_offset_max_m, mean_normal_distance_max_m, "
-                      "max_normal_distance_max_m (each also as _max_spacings), overlap_min, fs_difference_max)");
-  if (diagnostics.size() != errors_before) return std::nullopt;
-  return c;
-}
 
 AcceptanceResult evaluate_acceptance(const AcceptanceCriteria& criteria, const nlohmann::json& comparison,
                                      double particle_spacing) {

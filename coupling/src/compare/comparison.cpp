@@ -69,31 +69,6 @@ std::string format(const char* pattern, double a, double b = 0.0) {
 
 }  // namespace
 
-std::optional<ComparisonOptions> read_comparison_options(const nlohmann::json& block,
-                                                         const std::vector<std::string>& lem_methods,
-                                                         Diagnostics& diagnostics) {
-  JsonReader r(block, "analyses.compare", diagnostics);
-  const std::size_t errors_before = diagnostics.size();
-  ComparisonOptions options;
-  options.band.plastic_strain_threshold =
-      r.number_or("plastic_strain_threshold", options.band.plastic_strain_threshold, Bounds::positive());
-  options.band.bin_width = r.number_or("bin_width_m", 0.0, Bounds::non_negative());
-  if (const auto configuration = r.string("configuration", Need::optional)) {
-    if (*configuration == "initial" || *configuration == "current") {
-      options.band.initial_configuration = *configuration == "initial";
-    } else {
-      diagnostics.error(r.path_of("configuration"),
-                        "unknown configuration \"" + *configuration + "\" (allowed: initial, current)");
-    }
-  }
-  options.displacement_threshold = r.number_or("displacement_threshold_m", 0.0, Bounds::non_negative());
-  if (const nlohmann::json* acceptance = r.raw("acceptance", Need::optional, "an object"))
-    options.acceptance = read_acceptance(*acceptance, lem_methods, diagnostics);
-  r.finish();
-  if (diagnostics.size() != errors_before) return std::nullopt;
-  return options;
-}
-
 Polyline lem_surface_polyline(const slope::SlipMass& mass, int segments) {
   const double from = std::min(mass.entry.x, mass.exit.x), to = std::max(mass.entry.x, mass.exit.x);
   return circle_arc(mass.circle, from, to, segments);

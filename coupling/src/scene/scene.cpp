@@ -6,9 +6,6 @@
 
 #include "coupling/scene/json_reader.hpp"
 #include "coupling/scene/scene.hpp"
-#include "coupling/compare/comparison.hpp"
-#include "coupling/scene/sph_setup.hpp"
-#include "coupling/analyses/strength_reduction.hpp"
 #include "scene_internal.hpp"
 
 namespace coupling {
@@ -108,6 +105,7 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
   if (const nlohmann::json* methods =
           lem->array("methods", Need::optional, 1, limits::name_list, "an array of method names")) {
     result.methods.clear();
+    result.methods_given = true;
     for (std::size_t i = 0; i < methods->size(); ++i) {
       const std::string path = index_path(lem->path_of("methods"), i);
       const auto key = read_string((*methods)[i], path, diagnostics);
@@ -150,7 +148,7 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
   scene.analyses.lem = std::move(result);
 }
 
-void read_analyses(JsonReader& top, Scene& scene, bool has_section, Diagnostics& diagnostics) {
+void read_analyses(JsonReader& top, Scene& scene, bool has_section, SphBlocks& blocks, Diagnostics& diagnostics) {
   auto analyses = top.object("analyses", Need::required, "an object naming the analyses to run: lem, sph, compare");
   if (!analyses) return;
   read_lem(*analyses, scene, has_section, diagnostics);
@@ -158,7 +156,7 @@ void read_analyses(JsonReader& top, Scene& scene, bool has_section, Diagnostics&
     if (!sph->is_object()) {
       diagnostics.error(analyses->path_of("sph"), "expected an object, got " + json_type_name(*sph));
     } else {
-      scene.analyses.sph = *sph;
+      blocks.sph = sph;
       if (scene.section) check_materials_for_sph(top.path_of("section"), *scene.section, diagnostics);
     }
   }
@@ -166,7 +164,7 @@ void read_analyses(JsonReader& top, Scene& scene, bool has_section, Diagnostics&
     if (!compare->is_object()) {
       diagnostics.error(analyses->path_of("compare"), "expected an object, got " + json_type_name(*compare));
     } else {
-      scene.analyses.compare = *compare;
+      blocks.compare = compare;
       if (!analyses->has("lem") || !analyses->has("sph")) {
         diagnostics.error(analyses->path_of("compare"),
                           "comparing surfaces needs both analyses.lem and analyses.sph in the scene");
@@ -177,7 +175,7 @@ void read_analyses(JsonReader& top, Scene& scene, bool has_section, Diagnostics&
     if (!srm->is_object()) {
       diagnostics.error(analyses->path_of("srm"), "expected an object, got " + json_type_name(*srm));
     } else {
-      scene.analyses.srm = *srm;
+      blocks.srm = srm;
     }
   }
   if (!analyses->has("lem") && !analyses->has("sph") && !analyses->has("compare") && !analyses->has("srm")) {
@@ -187,6 +185,16 @@ void read_analyses(JsonReader& top, Scene& scene, bool has_section, Diagnostics&
 }
 
 }  // namespace
+
+void read_srm_scene(const SphBlocks& blocks, Scene& scene, Diagnostics& diagnostics) {
+  if (!blocks.srm) return;
+  scene.analyses.srm = read_srm_options(*blocks.srm, diagnostics);
+  if (!scene.section)
+    diagnostics.error("analyses.srm", "strength reduction needs a slope \"section\" (this is a particle scene)");
+  if (!blocks.sph)
+    diagnostics.error("analyses.srm", "strength reduction needs analyses.sph in the scene for the particle settings "
+                                      "(particle_spacing_m, ...)");
+}
 
 LemAnalysis default_lem_analysis() {
   LemAnalysis lem;
@@ -200,7 +208,6 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
   Diagnostics diagnostics;
   Scene scene;
   scene.file = file;
-  scene.document = document;
 
   JsonReader top(document, "", diagnostics);
   if (!top.is_object()) throw SceneError(diagnostics.messages());
@@ -227,21 +234,24 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
       section->finish();
     }
   }
-  // Particle scenes: defined and validated by the SPH stage; kept raw here.
+  // Particle scenes: read with analyses.sph below (read_sph_scene), the only analysis that uses them.
+  SphBlocks blocks;
   if (const nlohmann::json* bodies = top.raw("bodies", Need::optional)) {
     if (!bodies->is_array()) {
       diagnostics.error("bodies", "expected an array of bodies, got " + json_type_name(*bodies));
     } else {
-      scene.bodies = *bodies;
+      blocks.bodies = bodies;
+      scene.body_count = bodies->size();
     }
   }
-  if (const nlohmann::json* walls = top.raw("walls", Need::optional)) scene.walls = *walls;
+  blocks.walls = top.raw("walls", Need::optional);
 
-  read_analyses(top, scene, has_section, diagnostics);
+  read_analyses(top, scene, has_section, blocks, diagnostics);
   top.finish();
-  check_sph_scene(scene, diagnostics);
-  if (scene.analyses.compare) read_comparison_options(*scene.analyses.compare, lem_method_keys(scene), diagnostics);
-  check_srm_scene(scene, diagnostics);
+  read_sph_scene(blocks, scene, diagnostics);
+  if (blocks.compare)
+    scene.analyses.compare = read_comparison_options(*blocks.compare, lem_method_keys(scene), diagnostics);
+  read_srm_scene(blocks, scene, diagnostics);
 
   if (!diagnostics.empty()) throw SceneError(diagnostics.messages());
   return scene;
@@ -297,9 +307,8 @@ std::optional<std::string> read_at_most_limit(std::istream& in) {
   return text;
 }
 
-}  // namespace
-
-Scene load_scene(const std::filesystem::path& file) {
+// The text of a scene file, refused when it is larger than max_scene_file_bytes.
+std::string read_scene_text(const std::filesystem::path& file) {
   // Regular files are refused by their size, before anything is read.
   std::error_code size_error;
   const std::uintmax_t bytes = std::filesystem::file_size(file, size_error);
@@ -311,7 +320,21 @@ Scene load_scene(const std::filesystem::path& file) {
   const std::optional<std::string> text = read_at_most_limit(in);
   if (!text) throw SceneError({file_too_large(file, "more than " + std::to_string(max_scene_file_bytes) + " bytes")});
   if (in.bad()) throw SceneError({"cannot read scene file \"" + file.string() + "\""});
-  return parse_scene(*text, file);
+  return *text;
+}
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& file) { return parse_scene(read_scene_text(file), file); }
+
+nlohmann::json read_scene_document(const std::filesystem::path& file) {
+  const std::string text = read_scene_text(file);
+  if (auto fault = nesting_depth_fault(text)) throw SceneError({std::move(*fault)});
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& error) {
+    throw SceneError({"invalid JSON: " + std::string(error.what())});
+  }
 }
 
 std::vector<std::string> lem_method_keys(const Scene& scene) {
@@ -333,9 +356,9 @@ std::string summarize(const Scene& scene) {
     if (!s.surcharges.empty()) out << ", " << s.surcharges.size() << " surcharge" << (s.surcharges.size() == 1 ? "" : "s");
     if (s.seismic_coefficient > 0) out << ", seismic kh = " << format_number(s.seismic_coefficient);
   }
-  if (scene.bodies) {
+  if (scene.body_count) {
     if (scene.section) out << "; ";
-    out << scene.bodies->size() << " particle bod" << (scene.bodies->size() == 1 ? "y" : "ies");
+    out << *scene.body_count << " particle bod" << (*scene.body_count == 1 ? "y" : "ies");
   }
   std::vector<std::string> analyses;
   if (scene.analyses.lem) {

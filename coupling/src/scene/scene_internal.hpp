@@ -26,6 +26,23 @@ bool read_search_limits(JsonReader& search, const slope::Section* section, slope
 // analyses.lem.search.minimum_depth_m (m), when given.
 std::optional<double> read_minimum_depth(JsonReader& search);
 
+// The raw blocks of the scene that the SPH readers take (pointers into the parsed document; null when absent).
+struct SphBlocks {
+  const nlohmann::json* sph = nullptr;      // analyses.sph, when it is an object
+  const nlohmann::json* compare = nullptr;  // analyses.compare, when it is an object
+  const nlohmann::json* srm = nullptr;      // analyses.srm, when it is an object
+  const nlohmann::json* bodies = nullptr;   // "bodies", when it is an array
+  const nlohmann::json* walls = nullptr;    // "walls", whatever it is
+};
+
+// Reads analyses.sph, and with it "bodies" and "walls", into the scene, and validates what SPH needs from the rest
+// of the scene (bodies inside the wall box, enough particles across, loads SPH leaves out). Errors go to
+// `diagnostics`, so that "sphslope check" reports SPH faults too.
+void read_sph_scene(const SphBlocks& blocks, Scene& scene, Diagnostics& diagnostics);
+
+// Reads analyses.srm into the scene and checks that strength reduction has a section and analyses.sph.
+void read_srm_scene(const SphBlocks& blocks, Scene& scene, Diagnostics& diagnostics);
+
 // The SPH soil model needs the elastic constants of every material of the section.
 void check_materials_for_sph(const std::string& section_path, const SceneSection& section, Diagnostics& diagnostics);
 

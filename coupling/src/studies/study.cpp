@@ -51,7 +51,7 @@ constexpr SearchLevel search_levels[] = {{6, 10, false}, {11, 20, false}, {21, 3
 nlohmann::json lem_search_study(const Scene& scene, std::vector<StudySeries>& series, std::ostream* log) {
   const LemAnalysis analysis = scene.analyses.lem ? *scene.analyses.lem : default_lem_analysis();
   std::vector<slope::Method> methods = analysis.methods;
-  if (!scene.analyses.lem || !scene.document["analyses"]["lem"].contains("methods"))
+  if (!scene.analyses.lem || !scene.analyses.lem->methods_given)
     methods = {slope::Method::bishop, slope::Method::spencer};
   const std::size_t n_levels = std::size(search_levels);
   std::vector<slope::SearchResult> results;
@@ -133,7 +133,7 @@ RunRecord record_from_json(const nlohmann::json& entry, std::size_t n_quantities
   return r;
 }
 
-RunRecord run_one_spacing(const Scene& scene, const CaseSetup& setup, double spacing,
+RunRecord run_one_spacing(const Scene& scene, const nlohmann::json& document, const CaseSetup& setup, double spacing,
                           const std::filesystem::path& folder, const StudyOptions& options) {
   RunRecord record;
   record.spacing = spacing;
@@ -143,7 +143,7 @@ RunRecord run_one_spacing(const Scene& scene, const CaseSetup& setup, double spa
   const Clock::time_point start = Clock::now();
   Scene at_spacing;
   try {
-    at_spacing = scene_from_json(scene_at_spacing(scene, spacing), scene.file);
+    at_spacing = scene_from_json(scene_at_spacing(scene, document, spacing), scene.file);
   } catch (const SceneError& error) {
     entry["status"] = "refused";
     entry["errors"] = error.messages();
@@ -200,9 +200,11 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
     }
   }
   Scene scene;
+  nlohmann::json document;
   CaseSetup setup;
   try {
     scene = load_scene(scene_file);
+    document = read_scene_document(scene_file);
     setup = setup_case(scene);
   } catch (const SceneError& error) {
     out.status = ExitStatus::invalid_input;
@@ -255,7 +257,7 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
       *options.log << "study: run " << k + 1 << " of " << spacings.size() << ", dx = " << dx << " m -> "
                    << folder.string() << "\n";
     std::filesystem::create_directories(folder);
-    RunRecord record = run_one_spacing(scene, setup, dx, folder, options);
+    RunRecord record = run_one_spacing(scene, document, setup, dx, folder, options);
     // A resumed run also cost the wall time of the sessions before the interruption (from the last study.json).
     if (const auto before = earlier_seconds.find(dx); before != earlier_seconds.end() && options.resume &&
                                                       record.entry.contains("wall_seconds")) {

@@ -6,7 +6,7 @@
 
 #include "coupling/compare/comparison.hpp"
 #include "coupling/scene/json_reader.hpp"
-#include "coupling/scene/sph_setup.hpp"
+#include "coupling/analyses/sph_model.hpp"
 
 namespace coupling::study_detail {
 namespace {
@@ -85,20 +85,9 @@ CaseSetup slope_case(const Scene& scene) {
 }
 
 CaseSetup particle_case(const Scene& scene) {
-  Diagnostics diagnostics;
-  const auto bodies = read_particle_bodies(*scene.bodies, diagnostics);
-  // A plain WallBox plus a flag (an std::optional here trips g++ 12's maybe-uninitialized warning).
-  WallBox walls;
-  bool has_walls = false;
-  if (scene.walls) {
-    if (auto read = read_wall_box(*scene.walls, diagnostics)) {
-      walls = *read;
-      has_walls = true;
-    }
-  }
-  const WallBox* box = has_walls ? &walls : nullptr;
-  const auto analysis = read_sph_analysis(*scene.analyses.sph, diagnostics);
-  if (!bodies || !analysis) throw SceneError(diagnostics.messages());
+  const std::optional<std::vector<ParticleBody>>& bodies = scene.bodies;
+  const WallBox* box = scene.walls ? &*scene.walls : nullptr;
+  const std::optional<SphAnalysis>& analysis = scene.analyses.sph;
   if (bodies->size() != 1)
     throw SceneError({"study: bodies: the column references need exactly one body (got " +
                       std::to_string(bodies->size()) + ")"});
@@ -222,8 +211,7 @@ CaseSetup setup_case(const Scene& scene) {
   throw SceneError({"study: the scene has neither a section nor bodies"});
 }
 
-nlohmann::json scene_at_spacing(const Scene& scene, double spacing) {
-  nlohmann::json document = scene.document;
+nlohmann::json scene_at_spacing(const Scene& scene, nlohmann::json document, double spacing) {
   document["analyses"]["sph"]["particle_spacing_m"] = spacing;
   if (scene.section) {
     if (!document["analyses"].contains("lem")) document["analyses"]["lem"] = nlohmann::json::object();

@@ -43,8 +43,9 @@ struct CaseSetup {
 // fits none of the references (e.g. an elastic column without free-slip side walls).
 CaseSetup setup_case(const Scene& scene);
 
-// The scene with the particle spacing replaced (and, for slopes, lem/compare analyses added when absent).
-nlohmann::json scene_at_spacing(const Scene& scene, double spacing);
+// The scene file's `document` with the particle spacing replaced (and, for slopes, lem/compare analyses added when
+// absent); the study loads it again, so that every spacing is validated like a scene file.
+nlohmann::json scene_at_spacing(const Scene& scene, nlohmann::json document, double spacing);
 
 // The monitored values of one finished run, in the order of setup.quantities (null where not available).
 std::vector<std::optional<double>> read_values(const CaseSetup& setup, const WorkflowResult& run);

@@ -17,21 +17,7 @@
 
 namespace coupling {
 
-// analyses.srm; a missing value is computed per scene (see resolve_srm_options).
-struct SrmOptions {
-  double tolerance = 0.02;                      // stop when hi - lo <= tolerance
-  std::optional<std::pair<double, double>> bracket;  // default: around the LEM Bishop FS, else [0.5, 3]
-  std::optional<double> failure_displacement_m;      // default: 5 % of the slope height
-  std::optional<double> max_time_s;                  // per trial; default: 40 fundamental periods, at least 2 s
-  std::optional<double> damping_per_s;               // default: the first shear-mode angular frequency
-  std::optional<double> rest_speed_m_s;              // quasi-static threshold; default 1e-3 * sqrt(g H)
-  int max_trials = 30;                               // including bracket expansions
-};
 
-// Reads analyses.srm (errors at "analyses.srm.<key>").
-std::optional<SrmOptions> read_srm_options(const nlohmann::json& block, Diagnostics& diagnostics);
-// Validation for the scene loader: the block itself, plus "srm needs a section and analyses.sph".
-void check_srm_scene(const Scene& scene, Diagnostics& diagnostics);
 
 // One run of the oracle.
 struct SrmTrial {

@@ -8,31 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/scene/json_reader.hpp"
+#include "coupling/scene/analysis_options.hpp"
 
 namespace coupling {
-
-// A length limit in metres, or in particle spacings of the SPH run.
-struct LengthLimit {
-  double value = 0.0;
-  bool in_spacings = false;
-  double metres(double particle_spacing) const { return in_spacings ? value * particle_spacing : value; }
-};
-
-struct AcceptanceCriteria {
-  std::vector<std::string> methods;            // LE method keys the criteria apply to (default: bishop)
-  std::optional<LengthLimit> entry_offset;     // distance between the SPH and LE entry points
-  std::optional<LengthLimit> exit_offset;      // distance between the SPH and LE exit points
-  std::optional<LengthLimit> mean_normal_distance;
-  std::optional<LengthLimit> max_normal_distance;
-  std::optional<double> min_overlap;           // intersection over union of the sliding masses, in [0, 1]
-  std::optional<double> max_fs_difference;     // |FS of LE on the SPH surface - critical LE FS|
-};
-
-// Reads analyses.compare.acceptance (errors at "analyses.compare.acceptance.<key>"); `known_methods` are the method
-// keys the scene's LE analysis computes (a criterion on another method is an error).
-std::optional<AcceptanceCriteria> read_acceptance(const nlohmann::json& block, const std::vector<std::string>& known_methods,
-                                                  Diagnostics& diagnostics);
 
 // One evaluated criterion.
 struct CriterionResult {

@@ -15,11 +15,6 @@
 
 namespace coupling {
 
-struct ComparisonOptions {
-  BandOptions band;                   // plastic-strain threshold (default 0.1), bins
-  double displacement_threshold = 0;  // m, delta of the displacement cross-check; 0 means 2 particle spacings
-  std::optional<AcceptanceCriteria> acceptance;  // pass/fail limits for pipelines (analyses.compare.acceptance)
-};
 
 struct SphFailure {
   FailureSurface band;                      // band centre line, on the initial configuration
@@ -34,12 +29,6 @@ struct SphFailure {
   double initial_toe_x = 0.0;               // m
 };
 
-// Reads analyses.compare (errors at "analyses.compare.<key>"): plastic_strain_threshold, bin_width_m,
-// configuration ("initial" | "current"), displacement_threshold_m, acceptance. `lem_methods` are the keys of the
-// methods the scene's limit-equilibrium analysis computes (acceptance criteria may name only those).
-std::optional<ComparisonOptions> read_comparison_options(const nlohmann::json& block,
-                                                         const std::vector<std::string>& lem_methods,
-                                                         Diagnostics& diagnostics);
 
 // Reads the failure surface out of the particle state. `initial_ground` is the section's ground surface.
 SphFailure extract_sph_failure(const ParticleSnapshot& particles, const Polyline& initial_ground,

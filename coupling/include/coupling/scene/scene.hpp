@@ -8,6 +8,7 @@
 //   section.profile_lines[1].points_m[3]: x must increase (got 12.0 after 15.0)
 //
 // Units are converted here, once: kPa -> Pa, kN/m^3 -> N/m^3, deg -> rad, MPa -> Pa.
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -17,6 +18,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/scene/analysis_options.hpp"
+#include "coupling/scene/soil_material.hpp"
+#include "coupling/scene/sph_analysis.hpp"
 #include "slope/methods.hpp"
 #include "slope/search.hpp"
 #include "slope/section.hpp"
@@ -24,22 +28,6 @@
 namespace coupling {
 
 inline constexpr std::string_view scene_format = "sphslope-scene/1";
-inline constexpr double standard_gravity = 9.81;  // m/s^2, as in the source thesis; density = unit weight / g
-
-// A soil of the section, SI units. Section::materials holds the strength and weight for limit equilibrium;
-// this keeps everything the scene said, including what only SPH needs.
-struct SoilMaterial {
-  std::string name;
-  double unit_weight = 0.0;                // N/m^3
-  double cohesion = 0.0;                   // Pa
-  double friction_angle = 0.0;             // rad
-  std::optional<double> dilatancy_angle;   // rad; absent: SPH uses 0 (non-associated flow)
-  std::optional<double> youngs_modulus;    // Pa; needed by SPH only
-  std::optional<double> poisson_ratio;     // -; needed by SPH only
-  bool elastic = false;                    // SPH: linear elastic, no yield (constitutive_model "elastic")
-
-  double density() const { return unit_weight / standard_gravity; }  // kg/m^3
-};
 
 struct SceneSection {
   slope::Section section;                // SI, ready for slope::search_critical
@@ -51,13 +39,15 @@ struct LemAnalysis {
   std::vector<slope::Method> methods;   // default: slope::all_methods()
   slope::SearchOptions search;          // slicing.slices default 50, refine default true, limits optional
   bool has_search_limits = false;       // the scene gave analyses.lem.search limits (or a minimum depth)
+  bool methods_given = false;           // the scene listed analyses.lem.methods (else the default list)
 };
 
+// The analyses the scene asks for, each read once into its typed settings (defaults applied).
 struct Analyses {
   std::optional<LemAnalysis> lem;
-  std::optional<nlohmann::json> sph;      // raw; validated by the SPH stage
-  std::optional<nlohmann::json> compare;  // raw; validated by the comparison stage
-  std::optional<nlohmann::json> srm;      // raw; validated by the strength-reduction stage
+  std::optional<SphAnalysis> sph;
+  std::optional<ComparisonOptions> compare;
+  std::optional<SrmOptions> srm;
   bool empty() const { return !lem && !sph && !compare && !srm; }
 };
 
@@ -66,10 +56,11 @@ struct Scene {
   std::string source;                     // "source", may be empty
   std::filesystem::path file;             // where it was loaded from (empty for text)
   std::optional<SceneSection> section;    // slope scenes
-  std::optional<nlohmann::json> bodies;   // particle scenes (raw; validated by the SPH stage)
-  std::optional<nlohmann::json> walls;    // particle scenes (raw; validated by the SPH stage)
+  // Particle scenes: "bodies" and "walls", read with analyses.sph (the only analysis that uses them).
+  std::optional<std::vector<ParticleBody>> bodies;
+  std::optional<WallBox> walls;
+  std::optional<std::size_t> body_count;  // entries of "bodies" as written (also when no analysis reads them)
   Analyses analyses;
-  nlohmann::json document;                // the whole parsed file, for later stages that read raw blocks
 };
 
 // Every fault of a scene, each "<json path>: <what is wrong> (<what is allowed>)".
@@ -90,11 +81,24 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file = {})
 // Same, from an already parsed document.
 Scene scene_from_json(const nlohmann::json& document, const std::filesystem::path& file = {});
 
+// The parsed JSON of a scene file that load_scene accepted, as written (the study re-reads it with another
+// particle spacing). Throws SceneError when the file cannot be read or parsed.
+nlohmann::json read_scene_document(const std::filesystem::path& file);
+
 // The LEM settings used when the scene has no analyses.lem block (sphslope lem on such a scene).
 LemAnalysis default_lem_analysis();
 
 // Keys of the methods analyses.lem computes ("bishop", ...), in the scene's order; empty without analyses.lem.
 std::vector<std::string> lem_method_keys(const Scene& scene);
+
+// The loads of a slope section that the SPH model does not carry yet, each with the JSON path that defines it:
+// {"water", "section.water"}, {"surcharges", "section.surcharges"}, {"seismic", "section.seismic"}.
+struct SectionLoad {
+  std::string name;
+  std::string path;
+};
+std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene);
+
 
 // One line describing the scene, for "sphslope check": "section 0 to 60 m, 2 profile lines, ...".
 std::string summarize(const Scene& scene);

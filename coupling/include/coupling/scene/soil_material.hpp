@@ -1,0 +1,25 @@
+#pragma once
+// A soil material of a scene (a section's layer or a particle body), in SI units.
+#include <optional>
+#include <string>
+
+namespace coupling {
+
+inline constexpr double standard_gravity = 9.81;  // m/s^2, as in the source thesis; density = unit weight / g
+
+// A soil of the section, SI units. Section::materials holds the strength and weight for limit equilibrium;
+// this keeps everything the scene said, including what only SPH needs.
+struct SoilMaterial {
+  std::string name;
+  double unit_weight = 0.0;                // N/m^3
+  double cohesion = 0.0;                   // Pa
+  double friction_angle = 0.0;             // rad
+  std::optional<double> dilatancy_angle;   // rad; absent: SPH uses 0 (non-associated flow)
+  std::optional<double> youngs_modulus;    // Pa; needed by SPH only
+  std::optional<double> poisson_ratio;     // -; needed by SPH only
+  bool elastic = false;                    // SPH: linear elastic, no yield (constitutive_model "elastic")
+
+  double density() const { return unit_weight / standard_gravity; }  // kg/m^3
+};
+
+}  // namespace coupling

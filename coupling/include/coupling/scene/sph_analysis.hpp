@@ -1,0 +1,57 @@
+#pragma once
+// analyses.sph, "bodies" and "walls" read into typed settings, once, by the scene loader (load_scene); the SPH
+// stage and the model builder (coupling/analyses/sph_model.hpp) use these structs. Every fault names its JSON path;
+// see docs/scene-format.md for the keys.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "coupling/scene/json_reader.hpp"
+#include "coupling/scene/soil_material.hpp"
+#include "slope/section.hpp"
+#include "sph/soil/model.hpp"
+
+namespace coupling {
+
+inline constexpr double gibibyte = 1024.0 * 1024.0 * 1024.0;
+
+struct WallSides {
+  bool left = true, right = true, bottom = true;
+};
+
+// A body of a particle scene: a polygon of one material.
+struct ParticleBody {
+  std::string name;
+  std::vector<slope::Point> polygon;  // m
+  SoilMaterial material;
+};
+
+// A particle scene's wall box: the inner box [x_min, x_max] x [bottom_y, bottom_y + height], walls on `sides`.
+struct WallBox {
+  double x_min = 0.0, x_max = 0.0, bottom_y = 0.0, height = 0.0;  // m
+  WallSides sides;
+};
+
+struct SphAnalysis {
+  sph::Settings settings;               // SI
+  WallSides section_walls;              // slope scenes: which sides of the section box carry walls
+  int wall_layers = 0;                  // wall thickness in particle layers (at least the kernel support 2h)
+  double quasi_static_speed = 0.0;      // m/s; stop once every particle is slower (0: run to end_time_s)
+  double quasi_static_min_time = 0.0;   // s; not before this simulated time
+  double memory_limit_bytes = 0.0;      // refuse a case whose estimate exceeds it
+  std::size_t max_particles = 0;        // refuse more soil + wall particles than this
+  double max_steps = 0.0;               // refuse a run that needs more time steps than this
+  std::vector<std::string> ignored_loads;  // section loads SPH may leave out ("water", "surcharges", "seismic")
+};
+
+// Reads analyses.sph (errors at "analyses.sph.<key>").
+std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagnostics& diagnostics);
+
+// Reads "bodies" and "walls" of a particle scene.
+std::optional<std::vector<ParticleBody>> read_particle_bodies(const nlohmann::json& bodies, Diagnostics& diagnostics);
+std::optional<WallBox> read_wall_box(const nlohmann::json& walls, Diagnostics& diagnostics);
+
+}  // namespace coupling

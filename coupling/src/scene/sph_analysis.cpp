@@ -1,0 +1,365 @@
+// analyses.sph, "bodies" and "walls" read into typed settings, and what SPH needs from the rest of the scene. Keys
+// and defaults are documented in docs/scene-format.md ("analyses.sph", "bodies", "walls").
+#include "coupling/scene/sph_analysis.hpp"
+
+// g++ 12 reports a false "may be used uninitialized" inside CGAL's polygon algorithms when they are inlined
+// here; the warning is silenced for this file only.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "coupling/compare/sliding_mass.hpp"
+#include "coupling/scene/scene.hpp"
+#include "scene_internal.hpp"
+#include "sph/engine/fill.hpp"
+#include "sph/engine/kernel.hpp"
+
+namespace coupling {
+
+namespace {
+
+std::optional<WallSides> read_sides(JsonReader& reader, std::string_view key, WallSides fallback) {
+  const nlohmann::json* sides = reader.array(key, Need::optional, 0, limits::name_list,
+                                             "an array of \"left\", \"right\", \"bottom\"");
+  if (!sides) return reader.has(key) ? std::nullopt : std::optional<WallSides>(fallback);
+  WallSides out{false, false, false};
+  bool ok = true;
+  for (std::size_t i = 0; i < sides->size(); ++i) {
+    const auto side = read_string((*sides)[i], index_path(reader.path_of(key), i), reader.diagnostics());
+    if (!side) {
+      ok = false;
+    } else if (*side == "left") {
+      out.left = true;
+    } else if (*side == "right") {
+      out.right = true;
+    } else if (*side == "bottom") {
+      out.bottom = true;
+    } else {
+      reader.diagnostics().error(index_path(reader.path_of(key), i),
+                                 "unknown wall side \"" + *side + "\" (allowed: left, right, bottom)");
+      ok = false;
+    }
+  }
+  return ok ? std::optional<WallSides>(out) : std::nullopt;
+}
+
+}  // namespace
+
+namespace {
+
+const char* const section_load_names[] = {"water", "surcharges", "seismic"};
+
+// analyses.sph.ignore_loads: the section loads the user accepts SPH leaves out (each at most once).
+std::vector<std::string> read_ignored_loads(JsonReader& r) {
+  std::vector<std::string> names;
+  const nlohmann::json* list = r.array("ignore_loads", Need::optional, 0, limits::name_list);
+  if (list == nullptr) return names;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string path = index_path(r.path_of("ignore_loads"), i);
+    const auto name = read_string((*list)[i], path, r.diagnostics());
+    if (!name) continue;
+    if (std::find(std::begin(section_load_names), std::end(section_load_names), *name) == std::end(section_load_names))
+      r.diagnostics().error(path, "unknown load \"" + *name + "\" (allowed: water, surcharges, seismic)");
+    else if (std::find(names.begin(), names.end(), *name) != names.end())
+      r.diagnostics().error(path, "\"" + *name + "\" is listed twice");
+    else
+      names.push_back(*name);
+  }
+  return names;
+}
+
+// Until SPH carries a load, a scene asking SPH (or strength reduction) for a loaded section is refused unless
+// the user lists the load in analyses.sph.ignore_loads: SPH must never solve a different problem than limit
+// equilibrium without saying so.
+void check_unmodelled_loads(const Scene& scene, const SphAnalysis& analysis, Diagnostics& diagnostics) {
+  for (const SectionLoad& load : loads_sph_leaves_out(scene)) {
+    const auto& ignored = analysis.ignored_loads;
+    if (std::find(ignored.begin(), ignored.end(), load.name) != ignored.end()) continue;
+    diagnostics.error(load.path, "the SPH model does not carry " + load.name +
+                                     " yet: SPH (and strength reduction and the comparison) would analyse the "
+                                     "slope without it, unlike limit equilibrium. Remove analyses.sph, or add \"" +
+                                     load.name + "\" to analyses.sph.ignore_loads to run SPH without it (the "
+                                     "report then warns)");
+  }
+}
+
+}  // namespace
+
+std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
+  std::vector<SectionLoad> loads;
+  if (!scene.section) return loads;
+  const slope::Section& section = scene.section->section;
+  if (section.water) loads.push_back({"water", "section.water"});
+  if (!section.surcharges.empty()) loads.push_back({"surcharges", "section.surcharges"});
+  if (section.seismic_coefficient != 0.0) loads.push_back({"seismic", "section.seismic"});
+  return loads;
+}
+
+std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagnostics& diagnostics) {
+  JsonReader r(block, "analyses.sph", diagnostics);
+  const std::size_t errors_before = diagnostics.size();
+  SphAnalysis a;
+  sph::Settings& s = a.settings;
+  const auto spacing = r.number("particle_spacing_m", Need::required, Bounds::positive());
+  const auto end_time = r.number("end_time_s", Need::required, Bounds::positive());
+  s.h_over_dx = r.number_or("smoothing_length_ratio", s.h_over_dx, Bounds::closed(1.0, 2.0));
+  if (const auto kernel = r.string("kernel", Need::optional)) {
+    if (*kernel == "cubic_spline") {
+      s.kernel = sph::KernelType::cubic_spline;
+    } else if (*kernel == "wendland_c2") {
+      s.kernel = sph::KernelType::wendland_c2;
+    } else {
+      diagnostics.error(r.path_of("kernel"), "unknown kernel \"" + *kernel + "\" (allowed: cubic_spline, wendland_c2)");
+    }
+  }
+  if (const auto gravity = r.string("gravity", Need::optional)) {
+    if (*gravity == "sudden") {
+      s.gravity_mode = sph::GravityMode::sudden;
+    } else if (*gravity == "geostatic_k0") {
+      s.gravity_mode = sph::GravityMode::geostatic_k0;
+    } else if (*gravity == "ramped") {
+      s.gravity_mode = sph::GravityMode::ramped;
+    } else {
+      diagnostics.error(r.path_of("gravity"),
+                        "unknown gravity mode \"" + *gravity + "\" (allowed: sudden, geostatic_k0, ramped)");
+    }
+  }
+  const auto ramp = r.number("gravity_ramp_s", Need::optional, Bounds::positive());
+  if (auto viscosity = r.object("artificial_viscosity", Need::optional)) {
+    s.viscosity.alpha = viscosity->number_or("alpha", s.viscosity.alpha, Bounds::non_negative());
+    s.viscosity.beta = viscosity->number_or("beta", s.viscosity.beta, Bounds::non_negative());
+    viscosity->finish();
+  }
+  if (auto stress = r.object("artificial_stress", Need::optional)) {
+    if (const auto mode = stress->string("mode", Need::optional)) {
+      if (*mode == "auto") {
+        s.artificial_stress.mode = sph::ArtificialStressMode::automatic;
+      } else if (*mode == "on") {
+        s.artificial_stress.mode = sph::ArtificialStressMode::on;
+      } else if (*mode == "off") {
+        s.artificial_stress.mode = sph::ArtificialStressMode::off;
+      } else {
+        diagnostics.error(stress->path_of("mode"), "unknown mode \"" + *mode + "\" (allowed: auto, on, off)");
+      }
+    }
+    s.artificial_stress.epsilon = stress->number_or("epsilon", s.artificial_stress.epsilon, Bounds::closed(0.0, 1.0));
+    s.artificial_stress.exponent = stress->number_or("exponent", s.artificial_stress.exponent, Bounds::positive());
+    stress->finish();
+  }
+  const double chi = r.number_or("xsph", 0.0, Bounds::closed(0.0, 1.0));
+  s.xsph.enabled = chi > 0.0;
+  if (chi > 0.0) s.xsph.chi = chi;
+  std::optional<long> wall_layers;
+  if (auto walls = r.object("walls", Need::optional)) {
+    if (auto sides = read_sides(*walls, "sides", a.section_walls)) a.section_walls = *sides;
+    wall_layers = walls->integer("layers", Need::optional, Bounds::closed(1, 50));
+    if (const auto slip = walls->string("slip", Need::optional)) {
+      if (*slip == "no_slip") {
+        s.wall_slip = sph::WallSlip::no_slip;
+      } else if (*slip == "free_slip") {
+        s.wall_slip = sph::WallSlip::free_slip;
+      } else {
+        diagnostics.error(walls->path_of("slip"), "unknown slip \"" + *slip + "\" (allowed: no_slip, free_slip)");
+      }
+    }
+    walls->finish();
+  }
+  s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, 0.5, true});  // sph::Settings accepts (0, 0.5]
+  s.damping = r.number_or("damping_per_s", s.damping, Bounds::non_negative());
+  s.checkpoint_interval_wall_s = r.number_or("checkpoint_interval_s", 300.0, Bounds::non_negative());
+  a.quasi_static_speed = r.number_or("stop_below_speed_m_s", 0.0, Bounds::non_negative());
+  a.quasi_static_min_time = r.number_or("stop_below_speed_after_s", 0.0, Bounds::non_negative());
+  a.memory_limit_bytes = r.number_or("max_memory_GiB", 16.0, Bounds::positive()) * gibibyte;
+  a.max_particles = static_cast<std::size_t>(r.number_or("max_particles", 5.0e6, Bounds::at_least(1.0)));
+  a.max_steps = r.number_or("max_steps", 5.0e6, Bounds::at_least(1.0));
+  const auto output_interval = r.number("output_interval_s", Need::optional, Bounds::positive());
+  a.ignored_loads = read_ignored_loads(r);
+  r.finish();
+  if (!spacing || !end_time || diagnostics.size() != errors_before) return std::nullopt;
+  s.particle_spacing = *spacing;
+  s.end_time = *end_time;
+  s.output_interval = output_interval.value_or(*end_time / 20.0);
+  // Gravity ramp: only with "ramped"; default 10 % of the simulated time; full gravity must be reached.
+  if (ramp && s.gravity_mode != sph::GravityMode::ramped) {
+    diagnostics.error(r.path_of("gravity_ramp_s"), "is only used with \"gravity\": \"ramped\" (remove it, or set "
+                                                   "gravity to \"ramped\")");
+    return std::nullopt;
+  }
+  if (s.gravity_mode == sph::GravityMode::ramped) {
+    s.gravity_ramp_time = ramp.value_or(0.1 * *end_time);
+    if (s.gravity_ramp_time > *end_time) {
+      diagnostics.error(r.path_of("gravity_ramp_s"),
+                        format_number(s.gravity_ramp_time) + " s is longer than end_time_s = " +
+                            format_number(*end_time) + " s: full gravity would never be reached (use a ramp of "
+                            "at most end_time_s, e.g. a few times the slope's first shear-mode period)");
+      return std::nullopt;
+    }
+  }
+  // Wall thickness: the kernel support 2h must be covered, or soil beside a wall misses part of its neighbourhood.
+  const int layers_needed = sph::wall_layers_for(s.particle_spacing, s.smoothing_length());
+  if (wall_layers) {
+    if (*wall_layers < layers_needed) {
+      diagnostics.error("analyses.sph.walls.layers",
+                        std::to_string(*wall_layers) + " wall layer" + (*wall_layers == 1 ? "" : "s") + " of " +
+                            format_number(s.particle_spacing) + " m do not cover the kernel support 2h = " +
+                            format_number(2.0 * s.smoothing_length()) + " m (h = " + format_number(s.h_over_dx) +
+                            " x particle_spacing_m): at least " + std::to_string(layers_needed) +
+                            " layers are needed, or soil particles next to the wall miss part of their "
+                            "neighbourhood (too little wall pressure) and can leak through it");
+      return std::nullopt;
+    }
+    a.wall_layers = static_cast<int>(*wall_layers);
+  } else {
+    a.wall_layers = layers_needed;
+  }
+  s.gravity_x = 0.0;
+  s.gravity_y = -standard_gravity;
+  return a;
+}
+
+std::optional<std::vector<ParticleBody>> read_particle_bodies(const nlohmann::json& bodies, Diagnostics& diagnostics) {
+  std::vector<ParticleBody> out;
+  const std::size_t errors_before = diagnostics.size();
+  if (!bodies.is_array() || bodies.empty()) {
+    diagnostics.error("bodies", "expected a non-empty array of bodies ({\"name\", \"polygon_m\", \"material\"})");
+    return std::nullopt;
+  }
+  if (!within_size_limit(bodies, "bodies", limits::bodies, diagnostics)) return std::nullopt;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    JsonReader b(bodies[i], index_path("bodies", i), diagnostics);
+    ParticleBody body;
+    body.name = b.string("name", Need::optional).value_or("body " + std::to_string(i));
+    if (const nlohmann::json* polygon = b.array("polygon_m", Need::required, 3, limits::polygon_vertices,
+                                                "an array of at least 3 [x, y] points")) {
+      for (std::size_t k = 0; k < polygon->size(); ++k)
+        if (auto p = read_pair((*polygon)[k], index_path(b.path_of("polygon_m"), k), diagnostics))
+          body.polygon.push_back({p->first, p->second});
+      if (body.polygon.size() == polygon->size()) {
+        CGAL::Polygon_2<CGAL::Exact_predicates_inexact_constructions_kernel> cgal;
+        for (const auto& p : body.polygon) cgal.push_back({p.x, p.y});
+        if (!cgal.is_simple()) {
+          diagnostics.error(b.path_of("polygon_m"), "the polygon crosses itself (a body must be a simple polygon)");
+        } else if (polygon_area(body.polygon) <= 0.0) {
+          diagnostics.error(b.path_of("polygon_m"), "the polygon has no area");
+        }
+      }
+    }
+    if (auto m = b.object("material", Need::required)) {
+      if (auto material = read_material(*m)) {
+        body.material = *material;
+        std::string missing;
+        if (!material->youngs_modulus) missing = "youngs_modulus_MPa";
+        if (!material->poisson_ratio) missing += std::string(missing.empty() ? "" : " and ") + "poisson_ratio";
+        if (!missing.empty())
+          diagnostics.error(m->path(), "material \"" + material->name + "\" lacks " + missing +
+                                           ", which the SPH soil model needs");
+      }
+    }
+    b.finish();
+    out.push_back(std::move(body));
+  }
+  if (diagnostics.size() != errors_before) return std::nullopt;
+  return out;
+}
+
+std::optional<WallBox> read_wall_box(const nlohmann::json& walls, Diagnostics& diagnostics) {
+  JsonReader w(walls, "walls", diagnostics);
+  const std::size_t errors_before = diagnostics.size();
+  WallBox box;
+  std::optional<std::pair<double, double>> x_range;
+  if (const nlohmann::json* range = w.raw("x_range_m", Need::required, "[x_min, x_max]"))
+    x_range = read_pair(*range, w.path_of("x_range_m"), diagnostics, "[x_min, x_max]");
+  const auto bottom = w.number("bottom_y_m", Need::required);
+  const auto height = w.number("height_m", Need::required, Bounds::positive());
+  const auto sides = read_sides(w, "sides", WallSides{});
+  w.finish();
+  if (x_range && x_range->second <= x_range->first)
+    diagnostics.error(w.path_of("x_range_m"), "x_max must be greater than x_min (got " +
+                                                  format_number(x_range->first) + ", " +
+                                                  format_number(x_range->second) + ")");
+  if (!x_range || !bottom || !height || !sides || diagnostics.size() != errors_before) return std::nullopt;
+  box = {x_range->first, x_range->second, *bottom, *height, *sides};
+  return box;
+}
+
+namespace {
+
+// As for a section: a body needs at least 4 particles across (its bounding box's smaller side).
+void check_particles_across_bodies(const std::vector<ParticleBody>& bodies, double dx, Diagnostics& diagnostics) {
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const auto& polygon = bodies[i].polygon;
+    double x0 = polygon.front().x, x1 = x0, y0 = polygon.front().y, y1 = y0;
+    for (const auto& p : polygon) {
+      x0 = std::min(x0, p.x);
+      x1 = std::max(x1, p.x);
+      y0 = std::min(y0, p.y);
+      y1 = std::max(y1, p.y);
+    }
+    const double across = std::min(x1 - x0, y1 - y0);
+    if (across / dx < 4.0)
+      diagnostics.error("analyses.sph.particle_spacing_m",
+                        "spacing " + format_number(dx) + " m leaves fewer than 4 particles across bodies[" +
+                            std::to_string(i) + "] (\"" + bodies[i].name + "\", " + format_number(across) +
+                            " m across); use a spacing of at most " + format_number(across / 4.0) + " m");
+  }
+}
+
+void check_bodies_inside_walls(const std::vector<ParticleBody>& bodies, const WallBox& box, Diagnostics& diagnostics) {
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    for (std::size_t k = 0; k < bodies[i].polygon.size(); ++k) {
+      const auto& p = bodies[i].polygon[k];
+      const bool outside = p.x < box.x_min - 1e-9 || p.x > box.x_max + 1e-9 || p.y < box.bottom_y - 1e-9 ||
+                           p.y > box.bottom_y + box.height + 1e-9;
+      if (outside)
+        diagnostics.error(index_path(join_path(index_path("bodies", i), "polygon_m"), k),
+                          "point (" + format_number(p.x) + ", " + format_number(p.y) +
+                              ") lies outside the wall box (walls.x_range_m, bottom_y_m, height_m)");
+    }
+}
+
+// "bodies" and "walls" of a particle scene, read into the scene, with the checks against the SPH settings.
+void read_particle_scene(const SphBlocks& blocks, const std::optional<SphAnalysis>& analysis, Scene& scene,
+                         Diagnostics& diagnostics) {
+  scene.bodies = read_particle_bodies(*blocks.bodies, diagnostics);
+  if (blocks.walls) scene.walls = read_wall_box(*blocks.walls, diagnostics);
+  if (scene.bodies && analysis)
+    check_particles_across_bodies(*scene.bodies, analysis->settings.particle_spacing, diagnostics);
+  if (scene.bodies && scene.walls) check_bodies_inside_walls(*scene.bodies, *scene.walls, diagnostics);
+}
+
+// A section needs at least 4 particles across its height and its width.
+void check_particles_across_section(const slope::Section& section, double dx, Diagnostics& diagnostics) {
+  double top = section.bottom_y;
+  for (const auto& p : section.profile_lines.front().points) top = std::max(top, p.y);
+  if ((top - section.bottom_y) / dx < 4.0 || (section.x_max() - section.x_min()) / dx < 4.0)
+    diagnostics.error("analyses.sph.particle_spacing_m",
+                      "spacing " + format_number(dx) + " m leaves fewer than 4 particles across the section (" +
+                          format_number(top - section.bottom_y) + " m high); use a spacing of at most " +
+                          format_number((top - section.bottom_y) / 4.0) + " m");
+}
+
+}  // namespace
+
+void read_sph_scene(const SphBlocks& blocks, Scene& scene, Diagnostics& diagnostics) {
+  if (!blocks.sph) return;
+  const auto analysis = read_sph_analysis(*blocks.sph, diagnostics);
+  if (blocks.bodies) {
+    read_particle_scene(blocks, analysis, scene, diagnostics);
+  } else if (blocks.walls) {
+    diagnostics.error("walls", "walls belong to particle scenes with \"bodies\"; for a slope section set "
+                               "analyses.sph.walls.sides instead");
+  }
+  if (analysis) check_unmodelled_loads(scene, *analysis, diagnostics);
+  if (analysis && scene.section)
+    check_particles_across_section(scene.section->section, analysis->settings.particle_spacing, diagnostics);
+  scene.analyses.sph = analysis;
+}
+
+}  // namespace coupling
