@@ -1,5 +1,9 @@
 #include "coupling/analyses/sph_stage.hpp"
 
+#include <exception>
+
+#include "coupling/analyses/stage.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <functional>
@@ -218,6 +222,43 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   report["max_plastic_strain"] = finite ? nlohmann::json(max_plastic_strain) : nlohmann::json(nullptr);
   if (scene.bodies && !snapshot.x.empty()) report["deposit"] = deposit_report(snapshot);
   return result;
+}
+
+// The "sph" stage of the pipeline: runs the SPH analysis and hands its final particle state to the comparison.
+StageOutcome run_sph_analysis_stage(const Scene& scene, StageContext& context) {
+  const WorkflowOptions& options = context.options;
+  WorkflowResult& out = context.out;
+  StageOutcome outcome;
+  const StageClock::time_point start = StageClock::now();
+  SphStageOptions sph_options;
+  sph_options.output_dir = options.output_dir;
+  sph_options.resume = options.resume;
+  sph_options.log = options.log;
+  SphStageResult result;
+  try {
+    result = run_sph_stage(scene, sph_options);
+  } catch (const SceneError& error) {
+    // Refused before it started (memory, particle or step limits; nothing to resume): a fault of the input.
+    outcome.status = ExitStatus::invalid_input;
+    outcome.errors = error.messages();
+    return outcome;
+  } catch (const std::exception& error) {
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back(std::string("sph: ") + error.what());
+    out.report["sph"] = {{"error", outcome.errors.back()}, {"stopped_because", "error"}};
+    out.report["timing_s"]["sph"] = seconds_since(start);
+    return outcome;
+  }
+  out.report["sph"] = result.report;
+  out.report["timing_s"]["sph"] = seconds_since(start);
+  if (!result.ok) {
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back("sph: " + result.error);
+  }
+  // After a blow-up the particle state is the diverged one (non-finite or meaningless values): no comparison or
+  // figure is drawn from it (the last good frame is in frames/).
+  if (result.report.value("stopped_because", std::string()) != "blow_up") context.final_state = std::move(result.final_state);
+  return outcome;
 }
 
 }  // namespace coupling

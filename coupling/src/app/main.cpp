@@ -22,6 +22,7 @@
 #include "coupling/analyses/sph_stage.hpp"
 #include "coupling/studies/study.hpp"
 #include "coupling/analyses/pipeline.hpp"
+#include "coupling/output/tables.hpp"
 
 namespace {
 

@@ -54,7 +54,4 @@ WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options);
 // Default output folder of "sphslope run": runs/<scene file stem> (relative to the working directory).
 std::filesystem::path default_output_dir(const std::filesystem::path& scene_file);
 
-// Fixed-width table of the critical surface per method (FS, centre, radius, entry, exit) and the search totals.
-std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& result);
-
 }  // namespace coupling

@@ -1,0 +1,56 @@
+// The "lem" stage: the limit-equilibrium search for the critical slip circle of every method.
+#include "coupling/analyses/stage.hpp"
+
+#include <cmath>
+#include <exception>
+
+#include "coupling/output/report.hpp"
+
+namespace coupling {
+
+StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
+  const LemAnalysis& analysis = *context.lem;
+  WorkflowResult& out = context.out;
+  StageOutcome outcome;
+  const StageClock::time_point start = StageClock::now();
+  const slope::Section& section = scene.section->section;
+  slope::SearchResult result;
+  try {
+    result = slope::search_critical(section, analysis.methods, analysis.search);
+  } catch (const std::exception& error) {
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back(std::string("lem: the limit-equilibrium search failed: ") + error.what());
+    out.report["lem"] = {{"error", outcome.errors.back()}};
+    out.report["timing_s"]["lem"] = seconds_since(start);
+    return outcome;
+  }
+  out.report["timing_s"]["lem"] = seconds_since(start);
+
+  if (!result.error.empty()) {
+    if (analysis.has_search_limits) {
+      // The user's limits admit no slip circle: that is a fault of the input, reported at its JSON path.
+      outcome.status = ExitStatus::invalid_input;
+      outcome.errors.push_back("analyses.lem.search: the search limits admit no valid slip circle (" + result.error +
+                               "); widen entry_x_m, exit_x_m, radius_m or centre_grid, or leave \"search\" out "
+                               "for the automatic search");
+      return outcome;
+    }
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back("lem: the automatic search found no valid slip circle: " + result.error);
+  }
+  out.report["lem"] = lem_report(section, analysis, result);
+  if (outcome.status == ExitStatus::ok) {
+    bool any = false;
+    for (const slope::CriticalSurface& critical : result.methods) {
+      any = any || (critical.mass && critical.result.factor_of_safety && std::isfinite(*critical.result.factor_of_safety));
+    }
+    if (!any) {
+      outcome.status = ExitStatus::failed;
+      outcome.errors.push_back("lem: no method converged on any slip surface (see lem.methods.*.error)");
+    }
+  }
+  out.lem = std::move(result);
+  return outcome;
+}
+
+}  // namespace coupling

@@ -1,0 +1,51 @@
+// Fixed-width text tables for the terminal.
+#include "coupling/output/tables.hpp"
+
+#include <cstdio>
+
+namespace coupling {
+
+std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& result) {
+  std::string text;
+  char line[512];
+  std::snprintf(line, sizeof line, "%-27s %7s  %-19s %8s  %-17s %-17s\n", "method", "FS", "centre (x, y) m",
+                "radius m", "entry (x, y) m", "exit (x, y) m");
+  text += line;
+  for (slope::Method method : analysis.methods) {
+    const slope::CriticalSurface* found = nullptr;
+    for (const slope::CriticalSurface& critical : result.methods) {
+      if (critical.method == method) found = &critical;
+    }
+    const std::string key(slope::method_key(method));
+    if (found == nullptr || !found->mass || !found->result.factor_of_safety) {
+      const std::string why = found == nullptr ? result.error : found->result.error;
+      std::snprintf(line, sizeof line, "%-27s %7s  %s\n", key.c_str(), "-",
+                    ("failed: " + (why.empty() ? std::string("no converged surface") : why)).c_str());
+      text += line;
+      continue;
+    }
+    const slope::SlipMass& mass = *found->mass;
+    char centre[64], entry[64], exit[64];
+    std::snprintf(centre, sizeof centre, "(%.2f, %.2f)", mass.circle.xc, mass.circle.yc);
+    std::snprintf(entry, sizeof entry, "(%.2f, %.2f)", mass.entry.x, mass.entry.y);
+    std::snprintf(exit, sizeof exit, "(%.2f, %.2f)", mass.exit.x, mass.exit.y);
+    std::snprintf(line, sizeof line, "%-27s %7.3f  %-19s %8.2f  %-17s %-17s\n", key.c_str(),
+                  *found->result.factor_of_safety, centre, mass.circle.radius, entry, exit);
+    text += line;
+  }
+  std::snprintf(line, sizeof line, "search: %ld trial surfaces in %.3f s\n", result.trial_surfaces, result.seconds);
+  text += line;
+  // No trailing blanks at the ends of the padded lines.
+  std::string trimmed;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    std::string row = text.substr(start, end - start);
+    row.erase(row.find_last_not_of(' ') + 1);
+    trimmed += row + "\n";
+    start = end + 1;
+  }
+  return trimmed;
+}
+
+}  // namespace coupling
