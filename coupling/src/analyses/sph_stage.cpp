@@ -75,25 +75,26 @@ void install_interrupt_handler() {
 
 bool interrupt_pending() { return interrupt_requested != 0; }
 
-SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options) {
-  const SphAnalysis& analysis = *scene.analyses.sph;
-  // Plan before allocating anything: the explicit step is bounded by the P-wave speed; a case that needs more
-  // steps, particles or memory than its limits is refused here, with the planned figures in the message.
+namespace {
+
+// Plan before allocating anything: the explicit step is bounded by the P-wave speed; a case that needs more
+// steps, particles or memory than its limits is refused here, with the planned figures in the message.
+void refuse_before_start(const Scene& scene, const SphAnalysis& analysis) {
   if (const auto plan = plan_sph(scene, analysis)) {
     const std::vector<std::string> refusals = sph_refusals(analysis, *plan);
     if (!refusals.empty()) throw SceneError(refusals);
   }
-  SphSize size;
-  sph::Model model = build_sph_model(scene, &size);
+}
 
+// The model's size, kernel, wave speed, time step and gravity in the report, and the plan on the log.
+void report_model(const sph::Model& model, const SphSize& size, const SphAnalysis& analysis, nlohmann::json& report,
+                  std::ostream* log) {
   double fastest_wave = 0.0;
   for (const auto& m : model.materials) fastest_wave = std::max(fastest_wave, sph::MaterialConstants::from(m).sound_speed);
   const double h = model.settings.smoothing_length();
   const double time_step = sph::time_step_estimate(model);
   const double planned_steps = model.settings.end_time / time_step;
 
-  SphStageResult result;
-  nlohmann::json& report = result.report;
   report["particles"] = model.particles.size();
   report["soil_particles"] = size.soil_particles;
   report["wall_particles"] = size.wall_particles;
@@ -110,31 +111,38 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   report["wall_layers"] = analysis.wall_layers;
   report["memory_estimate_MiB"] = static_cast<double>(size.memory_bytes) / (1024.0 * 1024.0);
 
-  if (options.log) {
-    *options.log << "sph: " << size.soil_particles << " soil + " << size.wall_particles << " wall particles, dx = "
-                 << model.settings.particle_spacing << " m, h = " << h << " m, P-wave speed " << fastest_wave
-                 << " m/s, time step about " << time_step << " s: about " << std::llround(planned_steps)
-                 << " steps for " << model.settings.end_time << " s\n";
+  if (log) {
+    *log << "sph: " << size.soil_particles << " soil + " << size.wall_particles << " wall particles, dx = "
+         << model.settings.particle_spacing << " m, h = " << h << " m, P-wave speed " << fastest_wave
+         << " m/s, time step about " << time_step << " s: about " << std::llround(planned_steps) << " steps for "
+         << model.settings.end_time << " s\n";
   }
+}
 
+// --resume: the model continues from the run folder's checkpoint.
+void resume_from_checkpoint(const SphStageOptions& options, sph::Model& model) {
+  if (!options.output_dir) throw SceneError({"--resume needs the run folder (-o DIR) that holds checkpoint.bin"});
+  const auto checkpoint = *options.output_dir / "checkpoint.bin";
+  if (!std::filesystem::exists(checkpoint))
+    throw SceneError({"--resume: no checkpoint at " + checkpoint.string() + " (start the run without --resume)"});
+  sph::read_checkpoint(checkpoint.string(), model);
+  if (options.log)
+    *options.log << "sph: resuming at t = " << model.state.time << " s (step " << model.state.step << ")\n";
+}
+
+sph::RunOptions run_options_of(const SphAnalysis& analysis, const SphStageOptions& options) {
   sph::RunOptions run_options;
   if (options.output_dir) run_options.output_dir = options.output_dir->string();
   run_options.quasi_static_speed = analysis.quasi_static_speed;
   run_options.quasi_static_min_time = analysis.quasi_static_min_time;
   run_options.progress_interval_wall_s = 2.0;
-  if (options.resume) {
-    if (!options.output_dir) throw SceneError({"--resume needs the run folder (-o DIR) that holds checkpoint.bin"});
-    const auto checkpoint = *options.output_dir / "checkpoint.bin";
-    if (!std::filesystem::exists(checkpoint))
-      throw SceneError({"--resume: no checkpoint at " + checkpoint.string() + " (start the run without --resume)"});
-    sph::read_checkpoint(checkpoint.string(), model);
-    if (options.log)
-      *options.log << "sph: resuming at t = " << model.state.time << " s (step " << model.state.step << ")\n";
-  }
+  return run_options;
+}
 
+// Progress lines on the log; SIGINT/SIGTERM stop the run at the end of a step.
+sph::RunCallbacks run_callbacks(std::ostream* log) {
   sph::RunCallbacks callbacks;
-  if (options.log) {
-    std::ostream* log = options.log;
+  if (log) {
     callbacks.progress = [log](const sph::Progress& p) {
       char line[200];
       std::snprintf(line, sizeof line, "sph: t = %.4g / %.4g s, step %llu, %.0f steps/s, dt %.3g s, max speed %.3g m/s, %s left\n",
@@ -145,8 +153,10 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   }
   interrupt_requested = 0;
   callbacks.interrupt = [] { return interrupt_requested != 0; };
+  return callbacks;
+}
 
-  const sph::RunSummary summary = sph::run(model, run_options, callbacks);
+void report_summary(const sph::RunSummary& summary, nlohmann::json& report) {
   report["steps"] = summary.total_steps;
   report["steps_this_session"] = summary.steps;
   report["simulated_time_s"] = summary.simulated_time;
@@ -154,6 +164,11 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   report["particle_steps_per_second"] = summary.particle_steps_per_second;
   report["stopped_because"] = summary.stopped_because;
   report["frames"] = summary.frames_written;
+}
+
+// Final energies and the energy balance; returns the warnings of the run (loads left out, energy created).
+nlohmann::json report_energies(const Scene& scene, const sph::Model& model, const sph::RunSummary& summary,
+                               nlohmann::json& report) {
   const bool energies_finite = std::isfinite(summary.kinetic_energy) && std::isfinite(summary.potential_energy) &&
                                std::isfinite(summary.plastic_dissipation);
   if (energies_finite) {
@@ -181,23 +196,26 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
                          " x the potential energy released: the scheme created energy (time step too large for the "
                          "material, artificial viscosity too low?); treat the result as unreliable");
   }
-  report["warnings"] = warnings;
-  if (options.log)
-    for (const auto& w : warnings) *options.log << "sph: warning: " << w.get<std::string>() << "\n";
-  if (options.output_dir)
-    report["files"] = {{"frames", "frames.pvd"}, {"energy_history", "energy.csv"}, {"checkpoint", "checkpoint.bin"}};
+  return warnings;
+}
+
+// Whether the run reached its end; if not, why (in result.error and the report).
+void judge_run(const sph::RunSummary& summary, SphStageResult& result) {
   result.ok = summary.stopped_because == "end_time" || summary.stopped_because == "quasi_static";
   if (!result.ok) {
     result.error = summary.stopped_because == "interrupted"
                        ? "the SPH run was interrupted at t = " + format_number(summary.simulated_time) +
                              " s; continue it with --resume"
                        : "the SPH run stopped (" + summary.stopped_because + "): " + summary.diagnostic;
-    report["error"] = result.error;
+    result.report["error"] = result.error;
   }
+}
 
+// The soil particles at the end, for surface extraction.
+ParticleSnapshot soil_snapshot(const sph::Model& model) {
   const auto& p = model.particles;
   const sph::ConstSoilArrays soil = model.soil();
-  auto& snapshot = result.final_state;
+  ParticleSnapshot snapshot;
   snapshot.spacing = model.settings.particle_spacing;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::soil)) continue;
@@ -209,7 +227,12 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
     snapshot.stress_xx.push_back(soil.sxx[i]);
     snapshot.stress_yy.push_back(soil.syy[i]);
   }
-  // Largest displacement and accumulated plastic strain of any soil particle at the end (null if not finite).
+  return snapshot;
+}
+
+// Largest displacement and accumulated plastic strain of any soil particle at the end (null if not finite), and
+// the deposit of a particle scene.
+void report_final_state(const Scene& scene, const ParticleSnapshot& snapshot, nlohmann::json& report) {
   double max_displacement = 0.0, max_plastic_strain = 0.0;
   bool finite = true;
   for (std::size_t i = 0; i < snapshot.x.size(); ++i) {
@@ -221,6 +244,34 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   report["max_displacement_m"] = finite ? nlohmann::json(max_displacement) : nlohmann::json(nullptr);
   report["max_plastic_strain"] = finite ? nlohmann::json(max_plastic_strain) : nlohmann::json(nullptr);
   if (scene.bodies && !snapshot.x.empty()) report["deposit"] = deposit_report(snapshot);
+}
+
+}  // namespace
+
+SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options) {
+  const SphAnalysis& analysis = *scene.analyses.sph;
+  refuse_before_start(scene, analysis);
+  SphSize size;
+  sph::Model model = build_sph_model(scene, &size);
+
+  SphStageResult result;
+  nlohmann::json& report = result.report;
+  report_model(model, size, analysis, report, options.log);
+  const sph::RunOptions run_options = run_options_of(analysis, options);
+  if (options.resume) resume_from_checkpoint(options, model);
+
+  const sph::RunSummary summary = sph::run(model, run_options, run_callbacks(options.log));
+  report_summary(summary, report);
+  const nlohmann::json warnings = report_energies(scene, model, summary, report);
+  report["warnings"] = warnings;
+  if (options.log)
+    for (const auto& w : warnings) *options.log << "sph: warning: " << w.get<std::string>() << "\n";
+  if (options.output_dir)
+    report["files"] = {{"frames", "frames.pvd"}, {"energy_history", "energy.csv"}, {"checkpoint", "checkpoint.bin"}};
+  judge_run(summary, result);
+
+  result.final_state = soil_snapshot(model);
+  report_final_state(scene, result.final_state, report);
   return result;
 }
 

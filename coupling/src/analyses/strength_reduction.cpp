@@ -105,128 +105,175 @@ BisectionResult bisect_factor(const std::function<SrmTrial(double)>& oracle, dou
   return r;
 }
 
-SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, std::optional<double> lem_bishop_fs,
-                                 const nlohmann::json& lem_fs_by_method, std::ostream* log) {
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point start = Clock::now();
-  if (!scene.section || !scene.analyses.sph) throw SceneError({"analyses.srm: needs a slope section and analyses.sph"});
-  const slope::Section& section = scene.section->section;
+namespace {
 
-  SphSize size;
-  sph::Model pristine = build_sph_model(scene, &size);
-  const double height = slope_height(section);
-  const double vs = slowest_shear_wave(*scene.section);
-  const double period = 4.0 * height / vs;  // first shear mode of a layer of the slope height
-  const double omega = 2.0 * M_PI / period;
+// The per-scene values of the trials: the defaults of analyses.srm resolved from the slope's height and its first
+// shear mode.
+struct SrmPlan {
+  double height = 0.0;                // m
+  double period = 0.0;                // s, first shear mode of a layer of the slope height
+  double damping = 0.0;               // 1/s
+  double max_time = 0.0;              // s per trial
+  double failure_displacement = 0.0;  // m
+  double rest_speed = 0.0;            // m/s
+  double min_time = 0.0;              // s, rest is not checked before
+};
 
-  const double damping = options.damping_per_s.value_or(omega);
-  const double max_time = options.max_time_s.value_or(std::max(2.0, 40.0 * period));
-  const double failure_displacement = options.failure_displacement_m.value_or(0.05 * height);
-  const double rest_speed = options.rest_speed_m_s.value_or(1.0e-3 * std::sqrt(standard_gravity * height));
+SrmPlan plan_trials(const SceneSection& scene_section, const SrmOptions& options) {
+  SrmPlan plan;
+  plan.height = slope_height(scene_section.section);
+  const double vs = slowest_shear_wave(scene_section);
+  plan.period = 4.0 * plan.height / vs;  // first shear mode of a layer of the slope height
+  const double omega = 2.0 * M_PI / plan.period;
+
+  plan.damping = options.damping_per_s.value_or(omega);
+  plan.max_time = options.max_time_s.value_or(std::max(2.0, 40.0 * plan.period));
+  plan.failure_displacement = options.failure_displacement_m.value_or(0.05 * plan.height);
+  plan.rest_speed = options.rest_speed_m_s.value_or(1.0e-3 * std::sqrt(standard_gravity * plan.height));
   // Not before the damped motion has had time to start: 5 damping time constants or 5 periods, whichever is
   // longer, but at most half the trial.
-  const double min_time = std::min(0.5 * max_time, std::max(5.0 * period, damping > 0 ? 5.0 / damping : 0.0));
+  plan.min_time =
+      std::min(0.5 * plan.max_time, std::max(5.0 * plan.period, plan.damping > 0 ? 5.0 / plan.damping : 0.0));
+  return plan;
+}
 
-  pristine.settings.gravity_mode = sph::GravityMode::geostatic_k0;
-  pristine.settings.damping = damping;
-  pristine.settings.end_time = max_time;
-  pristine.settings.output_interval = 0.0;
-  pristine.settings.checkpoint_interval_wall_s = 0.0;
+// The particle container of sph::Model, named through the model so that a rename in sph/ does not reach here.
+using ModelParticles = decltype(sph::Model::particles);
 
-  std::vector<double> cohesion, friction, dilatancy;
-  for (const auto& m : pristine.materials) {
-    cohesion.push_back(m.cohesion);
-    friction.push_back(m.friction_angle_deg);
-    dilatancy.push_back(m.dilatancy_angle_deg);
+double max_soil_displacement(const ModelParticles& p) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::soil)) continue;
+    worst = std::max(worst, std::hypot(p.x[i] - p.x0[i], p.y[i] - p.y0[i]));
+  }
+  return worst;
+}
+
+// Why a finished trial counts as failed or stable.
+void judge_trial(const sph::RunSummary& summary, bool displaced, double failure_displacement, SrmTrial& trial) {
+  if (displaced || trial.max_displacement_m > failure_displacement) {
+    trial.failed = true;
+    trial.reason = "maximum displacement above " + format_number(failure_displacement) + " m";
+  } else if (summary.stopped_because == "quasi_static") {
+    trial.failed = false;
+    trial.reason = "came to rest";
+  } else if (summary.stopped_because == "end_time") {
+    trial.failed = true;
+    trial.reason = "still moving at the end of the trial (max speed above the rest speed)";
+  } else {
+    trial.failed = true;
+    trial.reason = "run stopped: " + summary.stopped_because + (summary.diagnostic.empty() ? "" : " (" + summary.diagnostic + ")");
+  }
+}
+
+void log_trial(const SrmTrial& trial, double factor, std::ostream* log) {
+  if (!log) return;
+  char line[256];
+  std::snprintf(line, sizeof line, "srm: F = %.4f: %s, max displacement %.3g m, t = %.3g s (%s), %.1f s wall\n",
+                factor, trial.failed ? "FAILS" : "stable", trial.max_displacement_m, trial.simulated_time_s,
+                trial.stopped_because.c_str(), trial.wall_seconds);
+  *log << line << std::flush;
+}
+
+// The failure oracle of the bisection: one damped SPH run of the slope with every strength divided by F.
+class TrialRunner {
+ public:
+  TrialRunner(const sph::Model& pristine, const SrmPlan& plan, std::ostream* log)
+      : pristine_(pristine), plan_(plan), log_(log) {
+    for (const auto& m : pristine.materials) {
+      cohesion_.push_back(m.cohesion);
+      friction_.push_back(m.friction_angle_deg);
+      dilatancy_.push_back(m.dilatancy_angle_deg);
+    }
   }
 
-  auto oracle = [&](double factor) {
-    sph::Model model = pristine;
-    for (std::size_t k = 0; k < model.materials.size(); ++k) {
-      model.materials[k].cohesion = cohesion[k] / factor;
-      model.materials[k].friction_angle_deg = reduce_angle_deg(friction[k], factor);
-      model.materials[k].dilatancy_angle_deg = reduce_angle_deg(dilatancy[k], factor);
-    }
-    const auto& p = model.particles;
-    auto max_displacement = [&] {
-      double worst = 0.0;
-      for (std::size_t i = 0; i < p.size(); ++i) {
-        if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::soil)) continue;
-        worst = std::max(worst, std::hypot(p.x[i] - p.x0[i], p.y[i] - p.y0[i]));
-      }
-      return worst;
-    };
-    sph::RunOptions run_options;
-    run_options.quasi_static_speed = rest_speed;
-    run_options.quasi_static_min_time = min_time;
-    run_options.checkpoint_on_stop = false;
-    run_options.progress_interval_wall_s = 1e9;
-    sph::RunCallbacks callbacks;
-    bool displaced = false;
+  SrmTrial operator()(double factor) const {
+    sph::Model model = reduced_model(factor);
+    bool displaced = false, interrupted = false;
     std::uint64_t polls = 0;
-    bool interrupted = false;
+    sph::RunCallbacks callbacks;
     callbacks.interrupt = [&] {
       if (interrupt_pending()) return interrupted = true;
       if (++polls % 10 != 0) return false;
-      displaced = max_displacement() > failure_displacement;
+      displaced = max_soil_displacement(model.particles) > plan_.failure_displacement;
       return displaced;
     };
-    const sph::RunSummary summary = sph::run(model, run_options, callbacks);
+    const sph::RunSummary summary = sph::run(model, run_options(), callbacks);
     if (interrupted)
       throw std::runtime_error("interrupted during the trial at F = " + format_number(factor) +
                                " (strength reduction cannot be resumed; run it again)");
     SrmTrial trial;
     trial.factor = factor;
-    trial.max_displacement_m = max_displacement();
+    trial.max_displacement_m = max_soil_displacement(model.particles);
     trial.simulated_time_s = summary.simulated_time;
     trial.wall_seconds = summary.wall_seconds;
     trial.stopped_because = displaced ? "displacement_limit" : summary.stopped_because;
-    if (displaced || trial.max_displacement_m > failure_displacement) {
-      trial.failed = true;
-      trial.reason = "maximum displacement above " + format_number(failure_displacement) + " m";
-    } else if (summary.stopped_because == "quasi_static") {
-      trial.failed = false;
-      trial.reason = "came to rest";
-    } else if (summary.stopped_because == "end_time") {
-      trial.failed = true;
-      trial.reason = "still moving at the end of the trial (max speed above the rest speed)";
-    } else {
-      trial.failed = true;
-      trial.reason = "run stopped: " + summary.stopped_because + (summary.diagnostic.empty() ? "" : " (" + summary.diagnostic + ")");
-    }
-    if (log) {
-      char line[256];
-      std::snprintf(line, sizeof line, "srm: F = %.4f: %s, max displacement %.3g m, t = %.3g s (%s), %.1f s wall\n",
-                    factor, trial.failed ? "FAILS" : "stable", trial.max_displacement_m, trial.simulated_time_s,
-                    trial.stopped_because.c_str(), trial.wall_seconds);
-      *log << line << std::flush;
-    }
+    judge_trial(summary, displaced, plan_.failure_displacement, trial);
+    log_trial(trial, factor, log_);
     return trial;
-  };
-
-  double lo = 0.5, hi = 3.0;
-  std::string bracket_source = "default [0.5, 3]";
-  if (options.bracket) {
-    lo = options.bracket->first;
-    hi = options.bracket->second;
-    bracket_source = "analyses.srm.bracket";
-  } else if (lem_bishop_fs && std::isfinite(*lem_bishop_fs) && *lem_bishop_fs > 0) {
-    lo = std::max(min_factor, 0.8 * *lem_bishop_fs);
-    hi = std::min(max_factor, 1.25 * *lem_bishop_fs);
-    bracket_source = "[0.8, 1.25] x LEM Bishop FS";
   }
-  if (log)
-    *log << "srm: " << size.soil_particles << " soil particles, dx = " << pristine.settings.particle_spacing
-         << " m, H = " << height << " m, damping " << damping << " /s, trials up to " << max_time
-         << " s, failure at displacement > " << failure_displacement << " m, bracket [" << lo << ", " << hi << "] ("
-         << bracket_source << ")\n";
 
-  SrmResult result;
-  result.bisection = bisect_factor(oracle, lo, hi, options.tolerance, options.max_trials);
-  const BisectionResult& b = result.bisection;
-  result.ok = b.bracketed && b.error.empty();
+ private:
+  sph::Model reduced_model(double factor) const {
+    sph::Model model = pristine_;
+    for (std::size_t k = 0; k < model.materials.size(); ++k) {
+      model.materials[k].cohesion = cohesion_[k] / factor;
+      model.materials[k].friction_angle_deg = reduce_angle_deg(friction_[k], factor);
+      model.materials[k].dilatancy_angle_deg = reduce_angle_deg(dilatancy_[k], factor);
+    }
+    return model;
+  }
 
-  nlohmann::json& report = result.report;
+  sph::RunOptions run_options() const {
+    sph::RunOptions options;
+    options.quasi_static_speed = plan_.rest_speed;
+    options.quasi_static_min_time = plan_.min_time;
+    options.checkpoint_on_stop = false;
+    options.progress_interval_wall_s = 1e9;
+    return options;
+  }
+
+  const sph::Model& pristine_;
+  const SrmPlan& plan_;
+  std::ostream* log_;
+  std::vector<double> cohesion_, friction_, dilatancy_;
+};
+
+struct Bracket {
+  double lo = 0.5, hi = 3.0;
+  std::string source = "default [0.5, 3]";
+};
+
+// The user's bracket, else [0.8, 1.25] x the LEM Bishop FS, else [0.5, 3].
+Bracket initial_bracket(const SrmOptions& options, std::optional<double> lem_bishop_fs) {
+  Bracket bracket;
+  if (options.bracket) {
+    bracket.lo = options.bracket->first;
+    bracket.hi = options.bracket->second;
+    bracket.source = "analyses.srm.bracket";
+  } else if (lem_bishop_fs && std::isfinite(*lem_bishop_fs) && *lem_bishop_fs > 0) {
+    bracket.lo = std::max(min_factor, 0.8 * *lem_bishop_fs);
+    bracket.hi = std::min(max_factor, 1.25 * *lem_bishop_fs);
+    bracket.source = "[0.8, 1.25] x LEM Bishop FS";
+  }
+  return bracket;
+}
+
+nlohmann::json trials_json(const std::vector<SrmTrial>& trials) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const SrmTrial& t : trials)
+    out.push_back({{"factor", t.factor},
+                   {"failed", t.failed},
+                   {"max_displacement_m", t.max_displacement_m},
+                   {"stopped_because", t.stopped_because},
+                   {"reason", t.reason},
+                   {"simulated_time_s", t.simulated_time_s},
+                   {"wall_seconds", t.wall_seconds}});
+  return out;
+}
+
+// The bisection's outcome: method, criterion, factor of safety and bracket.
+void report_bisection(const BisectionResult& b, nlohmann::json& report) {
   report["method"] = "SPH strength reduction: c/F, atan(tan(phi)/F), atan(tan(psi)/F) for every material; "
                      "geostatic K0 initial stress, linear velocity damping; bisection on F";
   report["failure_criterion"] = "a trial fails if the largest soil-particle displacement exceeds "
@@ -240,18 +287,25 @@ SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, 
     report["factor_of_safety"] = nullptr;
   }
   if (!b.error.empty()) report["error"] = "srm: " + b.error;
+}
+
+// The settings the trials used.
+void report_plan(const SrmOptions& options, const Bracket& bracket, const SrmPlan& plan, nlohmann::json& report) {
   report["tolerance"] = options.tolerance;
-  report["initial_bracket"] = {lo, hi};
-  report["initial_bracket_source"] = bracket_source;
-  report["slope_height_m"] = height;
-  report["failure_displacement_m"] = failure_displacement;
-  report["damping_per_s"] = damping;
-  report["first_mode_period_s"] = period;
-  report["max_time_s"] = max_time;
-  report["rest_speed_m_s"] = rest_speed;
-  report["rest_check_after_s"] = min_time;
-  report["particle_spacing_m"] = pristine.settings.particle_spacing;
-  report["soil_particles"] = size.soil_particles;
+  report["initial_bracket"] = {bracket.lo, bracket.hi};
+  report["initial_bracket_source"] = bracket.source;
+  report["slope_height_m"] = plan.height;
+  report["failure_displacement_m"] = plan.failure_displacement;
+  report["damping_per_s"] = plan.damping;
+  report["first_mode_period_s"] = plan.period;
+  report["max_time_s"] = plan.max_time;
+  report["rest_speed_m_s"] = plan.rest_speed;
+  report["rest_check_after_s"] = plan.min_time;
+}
+
+// The LEM factors next to FS_SPH, and the loads SPH left out (only those listed in analyses.sph.ignore_loads).
+void report_lem_context(const Scene& scene, const BisectionResult& b, std::optional<double> lem_bishop_fs,
+                        const nlohmann::json& lem_fs_by_method, nlohmann::json& report) {
   report["lem_factor_of_safety"] = lem_fs_by_method;
   nlohmann::json warnings = nlohmann::json::array();
   for (const SectionLoad& load : loads_sph_leaves_out(scene))  // only those listed in analyses.sph.ignore_loads
@@ -262,16 +316,45 @@ SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, 
     report["lem_bishop"] = *lem_bishop_fs;
     if (b.bracketed) report["ratio_to_lem_bishop"] = b.factor_of_safety / *lem_bishop_fs;
   }
-  nlohmann::json trials = nlohmann::json::array();
-  for (const SrmTrial& t : b.trials)
-    trials.push_back({{"factor", t.factor},
-                      {"failed", t.failed},
-                      {"max_displacement_m", t.max_displacement_m},
-                      {"stopped_because", t.stopped_because},
-                      {"reason", t.reason},
-                      {"simulated_time_s", t.simulated_time_s},
-                      {"wall_seconds", t.wall_seconds}});
-  report["trials"] = trials;
+}
+
+}  // namespace
+
+SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, std::optional<double> lem_bishop_fs,
+                                 const nlohmann::json& lem_fs_by_method, std::ostream* log) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  if (!scene.section || !scene.analyses.sph) throw SceneError({"analyses.srm: needs a slope section and analyses.sph"});
+
+  SphSize size;
+  sph::Model pristine = build_sph_model(scene, &size);
+  const SrmPlan plan = plan_trials(*scene.section, options);
+  pristine.settings.gravity_mode = sph::GravityMode::geostatic_k0;
+  pristine.settings.damping = plan.damping;
+  pristine.settings.end_time = plan.max_time;
+  pristine.settings.output_interval = 0.0;
+  pristine.settings.checkpoint_interval_wall_s = 0.0;
+
+  const Bracket bracket = initial_bracket(options, lem_bishop_fs);
+  if (log)
+    *log << "srm: " << size.soil_particles << " soil particles, dx = " << pristine.settings.particle_spacing
+         << " m, H = " << plan.height << " m, damping " << plan.damping << " /s, trials up to " << plan.max_time
+         << " s, failure at displacement > " << plan.failure_displacement << " m, bracket [" << bracket.lo << ", "
+         << bracket.hi << "] (" << bracket.source << ")\n";
+
+  SrmResult result;
+  const TrialRunner oracle(pristine, plan, log);
+  result.bisection = bisect_factor(oracle, bracket.lo, bracket.hi, options.tolerance, options.max_trials);
+  const BisectionResult& b = result.bisection;
+  result.ok = b.bracketed && b.error.empty();
+
+  nlohmann::json& report = result.report;
+  report_bisection(b, report);
+  report_plan(options, bracket, plan, report);
+  report["particle_spacing_m"] = pristine.settings.particle_spacing;
+  report["soil_particles"] = size.soil_particles;
+  report_lem_context(scene, b, lem_bishop_fs, lem_fs_by_method, report);
+  report["trials"] = trials_json(b.trials);
   report["seconds"] = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }

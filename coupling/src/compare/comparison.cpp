@@ -112,10 +112,9 @@ SphFailure extract_sph_failure(const ParticleSnapshot& particles, const Polyline
   return out;
 }
 
-nlohmann::json comparison_report(const slope::Section& section, const SphFailure& sph,
-                                 const slope::SearchResult& lem, const ComparisonOptions& options) {
-  nlohmann::json report;
-  const Polyline ground = section.profile_lines.front().points;
+namespace {
+
+nlohmann::json sph_surface_json(const SphFailure& sph, const ComparisonOptions& options) {
   nlohmann::json surface;
   surface["plastic_strain_threshold"] = sph.band.plastic_strain_threshold;
   surface["bin_width_m"] = sph.band.bin_width;
@@ -132,7 +131,110 @@ nlohmann::json comparison_report(const slope::Section& section, const SphFailure
   } else {
     surface["fitted_circle"] = nullptr;
   }
-  report["sph_surface"] = surface;
+  return surface;
+}
+
+// The SPH fitted circle as a slip mass of the section, on which every LE method is evaluated.
+struct SphCircleMass {
+  std::optional<slope::SlipMass> mass;
+  std::string reason;         // why the circle is not an admissible slip circle
+  double raised = 0.0;        // m the circle was raised to clear the base
+};
+
+SphCircleMass sph_circle_mass(const slope::Section& section, const SphFailure& sph) {
+  SphCircleMass out;
+  if (!(sph.fitted_circle && sph.entry && sph.exit)) return out;
+  // A band lying on the rigid base gives a fitted circle that dips a little below it, which no slip circle
+  // may do. Raise the circle by the dip when it is within one particle spacing (half a bin).
+  slope::Circle circle = sph.fitted_circle->circle;
+  const double from = std::min(sph.entry->x, sph.exit->x), to = std::max(sph.entry->x, sph.exit->x);
+  const double lowest_x = std::clamp(circle.xc, from, to);
+  const double lowest_y = circle.yc - std::sqrt(std::max(0.0, circle.radius * circle.radius -
+                                                             (lowest_x - circle.xc) * (lowest_x - circle.xc)));
+  const double dip = section.bottom_y - lowest_y;
+  if (dip > 0.0 && dip <= 0.5 * sph.band.bin_width) {
+    out.raised = dip + 1e-6;
+    circle.yc += out.raised;
+  }
+  slope::SliceOptions slicing;
+  out.mass = slope::slice_circle(section, circle, slicing, &out.reason);
+  return out;
+}
+
+// The method's minimum FS next to its FS on the SPH circle.
+void report_factors(const slope::CriticalSurface& critical, const SphFailure& sph, const SphCircleMass& sph_mass,
+                    nlohmann::json& m) {
+  m["lem_factor_of_safety"] = critical.result.factor_of_safety ? nlohmann::json(*critical.result.factor_of_safety)
+                                                                : nlohmann::json();
+  if (sph_mass.mass) {
+    const auto on_sph = slope::factor_of_safety(*sph_mass.mass, critical.method);
+    m["factor_of_safety_on_sph_circle"] =
+        on_sph.factor_of_safety ? nlohmann::json(*on_sph.factor_of_safety) : nlohmann::json();
+    if (!on_sph.factor_of_safety) m["factor_of_safety_on_sph_circle_error"] = on_sph.error;
+  } else {
+    m["factor_of_safety_on_sph_circle"] = nullptr;
+    m["factor_of_safety_on_sph_circle_error"] =
+        sph.fitted_circle ? "the SPH circle is not an admissible slip circle: " + sph_mass.reason
+                          : std::string("no circle could be fitted to the SPH surface");
+  }
+}
+
+// The plain-language verdict against one critical circle.
+std::string verdict_text(const std::string& key, const slope::CriticalSurface& critical, const SphFailure& sph,
+                         const Polyline& lem_line, const SurfaceDistances& distances, const MassOverlap& overlap) {
+  const slope::SlipMass& mass = *critical.mass;
+  const double mid_x = 0.5 * (distances.common_from_x + distances.common_to_x);
+  const double depth_difference = polyline_height(lem_line, mid_x) - polyline_height(sph.band.points, mid_x);
+  std::ostringstream verdict;
+  verdict << "Against the " << key << " critical circle (FS = "
+          << format("%.3f", critical.result.factor_of_safety.value_or(std::nan(""))) << "): the SPH surface is "
+          << format("%.2f m ", std::abs(depth_difference)) << (depth_difference >= 0 ? "deeper" : "shallower")
+          << " at mid-span (x = " << format("%.1f m", mid_x) << "), enters "
+          << format("%.2f m", std::abs(sph.entry->x - mass.entry.x))
+          << (std::abs(sph.entry->x - mass.entry.x) < 2.0 * sph.band.bin_width + 1e-9 ? " (same entry)" : "")
+          << " from the LEM entry and exits " << format("%.2f m", std::abs(sph.exit->x - mass.exit.x))
+          << " from the LEM exit; mean normal distance " << format("%.2f m", distances.mean_normal_distance)
+          << ", sliding masses overlap " << format("%.0f %%", 100.0 * overlap.intersection_over_union)
+          << " (intersection over union).";
+  return verdict.str();
+}
+
+// The comparison with one method's critical surface; `verdict` is set when this method tells it.
+nlohmann::json compare_method(const slope::CriticalSurface& critical, const SphFailure& sph,
+                              const SphCircleMass& sph_mass, const Polyline& ground, const Polyline& sph_polygon,
+                              bool tells_verdict, std::optional<std::string>& verdict) {
+  const std::string key(slope::method_key(critical.method));
+  nlohmann::json m;
+  report_factors(critical, sph, sph_mass, m);
+  if (!critical.mass || sph.band.points.size() < 2) return m;
+  const auto& mass = *critical.mass;
+  const Polyline lem_line = lem_surface_polyline(mass);
+  const auto distances = compare_surfaces(sph.band.points, lem_line);
+  if (sph.entry) {
+    m["entry_offset_m"] = {sph.entry->x - mass.entry.x, sph.entry->y - mass.entry.y};
+    m["exit_offset_m"] = {sph.exit->x - mass.exit.x, sph.exit->y - mass.exit.y};
+  }
+  m["common_span_x_m"] = {distances.common_from_x, distances.common_to_x};
+  m["mean_normal_distance_m"] = distances.mean_normal_distance;
+  m["max_normal_distance_m"] = distances.max_normal_distance;
+  m["area_between_m2"] = distances.area_between;
+  const Polyline lem_polygon = sliding_mass_polygon(ground, lem_line);
+  const auto overlap = mass_overlap(sph_polygon, lem_polygon);
+  m["sph_sliding_mass_area_m2"] = overlap.area_a;
+  m["lem_sliding_mass_area_m2"] = overlap.area_b;
+  m["intersection_area_m2"] = overlap.intersection_area;
+  m["intersection_over_union"] = overlap.intersection_over_union;
+  if (!verdict && tells_verdict && sph.entry) verdict = verdict_text(key, critical, sph, lem_line, distances, overlap);
+  return m;
+}
+
+}  // namespace
+
+nlohmann::json comparison_report(const slope::Section& section, const SphFailure& sph,
+                                 const slope::SearchResult& lem, const ComparisonOptions& options) {
+  nlohmann::json report;
+  const Polyline ground = section.profile_lines.front().points;
+  report["sph_surface"] = sph_surface_json(sph, options);
   report["displacement_check"] = {
       {"displacement_threshold_m", sph.displacement_threshold},
       {"displaced_particles", sph.displaced_particles},
@@ -144,95 +246,25 @@ nlohmann::json comparison_report(const slope::Section& section, const SphFailure
                                {"farthest_toe_advance_m", sph.farthest_toe_advance}};
 
   // Evaluate every method on the SPH fitted circle.
-  std::optional<slope::SlipMass> sph_mass;
-  std::string sph_mass_reason;
-  double circle_raised = 0.0;
-  if (sph.fitted_circle && sph.entry && sph.exit) {
-    // A band lying on the rigid base gives a fitted circle that dips a little below it, which no slip circle
-    // may do. Raise the circle by the dip when it is within one particle spacing (half a bin).
-    slope::Circle circle = sph.fitted_circle->circle;
-    const double from = std::min(sph.entry->x, sph.exit->x), to = std::max(sph.entry->x, sph.exit->x);
-    const double lowest_x = std::clamp(circle.xc, from, to);
-    const double lowest_y = circle.yc - std::sqrt(std::max(0.0, circle.radius * circle.radius -
-                                                               (lowest_x - circle.xc) * (lowest_x - circle.xc)));
-    const double dip = section.bottom_y - lowest_y;
-    if (dip > 0.0 && dip <= 0.5 * sph.band.bin_width) {
-      circle_raised = dip + 1e-6;
-      circle.yc += circle_raised;
-    }
-    slope::SliceOptions slicing;
-    sph_mass = slope::slice_circle(section, circle, slicing, &sph_mass_reason);
-  }
-  report["sph_surface"]["circle_raised_for_lem_m"] = circle_raised;
+  const SphCircleMass sph_mass = sph_circle_mass(section, sph);
+  report["sph_surface"]["circle_raised_for_lem_m"] = sph_mass.raised;
   const Polyline sph_polygon = sliding_mass_polygon(ground, sph.band.points);
 
   nlohmann::json methods = nlohmann::json::object();
   bool has_bishop = false;
   for (const auto& critical : lem.methods)
     has_bishop = has_bishop || (critical.method == slope::Method::bishop && critical.mass.has_value());
-  std::ostringstream verdict;
-  bool verdict_done = false;
+  std::optional<std::string> verdict;
   for (const auto& critical : lem.methods) {
-    const std::string key(slope::method_key(critical.method));
-    nlohmann::json m;
-    m["lem_factor_of_safety"] = critical.result.factor_of_safety ? nlohmann::json(*critical.result.factor_of_safety)
-                                                                  : nlohmann::json();
-    if (sph_mass) {
-      const auto on_sph = slope::factor_of_safety(*sph_mass, critical.method);
-      m["factor_of_safety_on_sph_circle"] =
-          on_sph.factor_of_safety ? nlohmann::json(*on_sph.factor_of_safety) : nlohmann::json();
-      if (!on_sph.factor_of_safety) m["factor_of_safety_on_sph_circle_error"] = on_sph.error;
-    } else {
-      m["factor_of_safety_on_sph_circle"] = nullptr;
-      m["factor_of_safety_on_sph_circle_error"] =
-          sph.fitted_circle ? "the SPH circle is not an admissible slip circle: " + sph_mass_reason
-                            : std::string("no circle could be fitted to the SPH surface");
-    }
-    if (!critical.mass || sph.band.points.size() < 2) {
-      methods[key] = m;
-      continue;
-    }
-    const auto& mass = *critical.mass;
-    const Polyline lem_line = lem_surface_polyline(mass);
-    const auto distances = compare_surfaces(sph.band.points, lem_line);
-    if (sph.entry) {
-      m["entry_offset_m"] = {sph.entry->x - mass.entry.x, sph.entry->y - mass.entry.y};
-      m["exit_offset_m"] = {sph.exit->x - mass.exit.x, sph.exit->y - mass.exit.y};
-    }
-    m["common_span_x_m"] = {distances.common_from_x, distances.common_to_x};
-    m["mean_normal_distance_m"] = distances.mean_normal_distance;
-    m["max_normal_distance_m"] = distances.max_normal_distance;
-    m["area_between_m2"] = distances.area_between;
-    const Polyline lem_polygon = sliding_mass_polygon(ground, lem_line);
-    const auto overlap = mass_overlap(sph_polygon, lem_polygon);
-    m["sph_sliding_mass_area_m2"] = overlap.area_a;
-    m["lem_sliding_mass_area_m2"] = overlap.area_b;
-    m["intersection_area_m2"] = overlap.intersection_area;
-    m["intersection_over_union"] = overlap.intersection_over_union;
-    methods[key] = m;
-
     // The verdict is told against Bishop's circle when Bishop was asked for, else the first method with a surface.
-    const bool verdict_method = critical.method == slope::Method::bishop || !has_bishop;
-    if (!verdict_done && verdict_method && sph.entry) {
-      verdict_done = true;
-      const double mid_x = 0.5 * (distances.common_from_x + distances.common_to_x);
-      const double depth_difference = polyline_height(lem_line, mid_x) - polyline_height(sph.band.points, mid_x);
-      verdict << "Against the " << key << " critical circle (FS = "
-              << format("%.3f", critical.result.factor_of_safety.value_or(std::nan(""))) << "): the SPH surface is "
-              << format("%.2f m ", std::abs(depth_difference)) << (depth_difference >= 0 ? "deeper" : "shallower")
-              << " at mid-span (x = " << format("%.1f m", mid_x) << "), enters "
-              << format("%.2f m", std::abs(sph.entry->x - mass.entry.x))
-              << (std::abs(sph.entry->x - mass.entry.x) < 2.0 * sph.band.bin_width + 1e-9 ? " (same entry)" : "")
-              << " from the LEM entry and exits " << format("%.2f m", std::abs(sph.exit->x - mass.exit.x))
-              << " from the LEM exit; mean normal distance " << format("%.2f m", distances.mean_normal_distance)
-              << ", sliding masses overlap " << format("%.0f %%", 100.0 * overlap.intersection_over_union)
-              << " (intersection over union).";
-    }
+    const bool tells_verdict = critical.method == slope::Method::bishop || !has_bishop;
+    methods[std::string(slope::method_key(critical.method))] =
+        compare_method(critical, sph, sph_mass, ground, sph_polygon, tells_verdict, verdict);
   }
   report["methods"] = methods;
-  report["verdict"] = verdict_done ? verdict.str()
-                                   : std::string("No comparison: the SPH run shows no plastic band above the threshold "
-                                                 "or no LEM method found a critical surface.");
+  report["verdict"] = verdict ? *verdict
+                              : std::string("No comparison: the SPH run shows no plastic band above the threshold "
+                                            "or no LEM method found a critical surface.");
   return report;
 }
 

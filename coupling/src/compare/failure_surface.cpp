@@ -17,67 +17,85 @@
 
 namespace coupling {
 
-FailureSurface plastic_band_surface(const ParticleSnapshot& particles, const BandOptions& options) {
-  FailureSurface surface;
-  surface.plastic_strain_threshold = options.plastic_strain_threshold;
-  surface.bin_width = options.bin_width > 0.0 ? options.bin_width : 2.0 * particles.spacing;
-  const std::vector<double>& xs = options.initial_configuration ? particles.x0 : particles.x;
-  const std::vector<double>& ys = options.initial_configuration ? particles.y0 : particles.y;
-  const std::size_t n = xs.size();
-  if (n == 0 || surface.bin_width <= 0.0) return surface;
+namespace {
 
+// A connected run of band particles up a bin's column (a gap wider than 1.5 spacings ends a run).
+struct BandRun {
+  std::size_t first = 0, last = 0;  // range in `band`
+  double weight = 0.0, weighted_x = 0.0, weighted_y = 0.0, top_y = 0.0;
+  int count = 0;
+};
+
+// The band particles of one column (sorted by height), as connected runs; their indices are appended to `band`.
+std::vector<BandRun> column_runs(const std::vector<std::size_t>& column, const ParticleSnapshot& particles,
+                                 const std::vector<double>& xs, const std::vector<double>& ys, double threshold,
+                                 double gap, std::vector<std::size_t>& band) {
+  std::vector<BandRun> runs;
+  for (std::size_t i : column) {
+    if (particles.plastic_strain[i] < threshold) continue;
+    if (runs.empty() || ys[i] - runs.back().top_y > gap) runs.push_back(BandRun{band.size(), band.size(), 0, 0, 0, 0, 0});
+    BandRun& run = runs.back();
+    const double w = particles.plastic_strain[i];
+    run.weight += w;
+    run.weighted_x += w * xs[i];
+    run.weighted_y += w * ys[i];
+    run.top_y = ys[i];
+    run.last = band.size() + 1;
+    ++run.count;
+    band.push_back(i);
+  }
+  return runs;
+}
+
+// The band is the run with the most plastic strain, preferring runs below the free surface: a zone at the surface
+// (a crest tension zone) is not the slip surface unless the column has nothing else.
+const BandRun* choose_run(const std::vector<BandRun>& runs, double column_top, double gap, int min_particles) {
+  const BandRun* chosen = nullptr;
+  bool chosen_at_surface = true;
+  for (const BandRun& run : runs) {
+    if (run.count < min_particles) continue;
+    const bool at_surface = column_top - run.top_y <= gap;
+    if (!chosen || (chosen_at_surface && !at_surface) ||
+        (chosen_at_surface == at_surface && run.weight > chosen->weight)) {
+      chosen = &run;
+      chosen_at_surface = at_surface;
+    }
+  }
+  return chosen;
+}
+
+// The band's points before the chain and centring steps: one per bin that holds a band, with the particles of
+// the chosen runs in `band` (point k's particles start at point_band_start[k]).
+struct BandPoints {
+  std::vector<slope::Point> points;
+  std::vector<int> point_bin;                 // bin of each point
+  std::vector<std::size_t> point_band_start;  // first entry of `band` that belongs to each point
+  std::vector<std::size_t> band;              // particles of the chosen runs that made a point
+};
+
+BandPoints band_points_per_bin(const ParticleSnapshot& particles, const BandOptions& options,
+                               const std::vector<double>& xs, const std::vector<double>& ys, double bin_width) {
   const auto [x_lo, x_hi] = std::minmax_element(xs.begin(), xs.end());
   const double x_min = *x_lo;
-  const int bins = static_cast<int>(std::floor((*x_hi - x_min) / surface.bin_width)) + 1;
+  const int bins = static_cast<int>(std::floor((*x_hi - x_min) / bin_width)) + 1;
 
   // Particles of each bin, sorted by height.
   std::vector<std::vector<std::size_t>> members(static_cast<std::size_t>(bins));
-  for (std::size_t i = 0; i < n; ++i) {
-    const int b = std::clamp(static_cast<int>((xs[i] - x_min) / surface.bin_width), 0, bins - 1);
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    const int b = std::clamp(static_cast<int>((xs[i] - x_min) / bin_width), 0, bins - 1);
     members[static_cast<std::size_t>(b)].push_back(i);
   }
   const double gap = 1.5 * particles.spacing;
-  std::vector<std::size_t> band;  // particles of the chosen runs that made a point
-  std::vector<int> point_bin;      // bin of each point
-  std::vector<std::size_t> point_band_start;  // first entry of `band` that belongs to each point
+  BandPoints out;
+  std::vector<std::size_t>& band = out.band;
   for (int b = 0; b < bins; ++b) {
     auto& column = members[static_cast<std::size_t>(b)];
     std::sort(column.begin(), column.end(), [&](std::size_t a, std::size_t c) { return ys[a] < ys[c]; });
-    // Connected runs of band particles up the column (a gap wider than 1.5 spacings ends a run). The band is
-    // the run with the most plastic strain, preferring runs below the free surface: a zone at the surface (a
-    // crest tension zone) is not the slip surface unless the column has nothing else.
-    struct Run {
-      std::size_t first = 0, last = 0;  // range in `band`
-      double weight = 0.0, weighted_x = 0.0, weighted_y = 0.0, top_y = 0.0;
-      int count = 0;
-    };
-    std::vector<Run> runs;
     const std::size_t band_start = band.size();
-    for (std::size_t i : column) {
-      if (particles.plastic_strain[i] < options.plastic_strain_threshold) continue;
-      if (runs.empty() || ys[i] - runs.back().top_y > gap) runs.push_back(Run{band.size(), band.size(), 0, 0, 0, 0, 0});
-      Run& run = runs.back();
-      const double w = particles.plastic_strain[i];
-      run.weight += w;
-      run.weighted_x += w * xs[i];
-      run.weighted_y += w * ys[i];
-      run.top_y = ys[i];
-      run.last = band.size() + 1;
-      ++run.count;
-      band.push_back(i);
-    }
+    const std::vector<BandRun> runs =
+        column_runs(column, particles, xs, ys, options.plastic_strain_threshold, gap, band);
     const double column_top = column.empty() ? 0.0 : ys[column.back()];
-    const Run* chosen = nullptr;
-    bool chosen_at_surface = true;
-    for (const Run& run : runs) {
-      if (run.count < options.min_particles_per_bin) continue;
-      const bool at_surface = column_top - run.top_y <= gap;
-      if (!chosen || (chosen_at_surface && !at_surface) ||
-          (chosen_at_surface == at_surface && run.weight > chosen->weight)) {
-        chosen = &run;
-        chosen_at_surface = at_surface;
-      }
-    }
+    const BandRun* chosen = choose_run(runs, column_top, gap, options.min_particles_per_bin);
     if (!chosen || chosen->weight <= 0.0) {
       band.resize(band_start);
       continue;
@@ -88,34 +106,40 @@ FailureSurface plastic_band_surface(const ParticleSnapshot& particles, const Ban
                                   band.begin() + static_cast<std::ptrdiff_t>(chosen->last));
     band.resize(band_start);
     band.insert(band.end(), kept.begin(), kept.end());
-    surface.points.push_back({weighted_x / weight, weighted_y / weight});
-    point_bin.push_back(b);
-    point_band_start.push_back(band_start);
+    out.points.push_back({weighted_x / weight, weighted_y / weight});
+    out.point_bin.push_back(b);
+    out.point_band_start.push_back(band_start);
   }
-  // Keep the longest chain of bins without a gap wider than one bin: isolated plastic spots (a wall corner,
-  // say) are not part of the slip surface.
-  if (!surface.points.empty()) {
-    std::size_t best_first = 0, best_last = 0, first = 0;
-    for (std::size_t k = 1; k <= surface.points.size(); ++k) {
-      if (k == surface.points.size() || point_bin[k] - point_bin[k - 1] > 2) {
-        if (k - 1 - first > best_last - best_first) {
-          best_first = first;
-          best_last = k - 1;
-        }
-        first = k;
-      }
-    }
-    const std::size_t band_end = best_last + 1 < point_band_start.size() ? point_band_start[best_last + 1] : band.size();
-    band = std::vector<std::size_t>(band.begin() + static_cast<std::ptrdiff_t>(point_band_start[best_first]),
-                                    band.begin() + static_cast<std::ptrdiff_t>(band_end));
-    surface.points = std::vector<slope::Point>(surface.points.begin() + static_cast<std::ptrdiff_t>(best_first),
-                                               surface.points.begin() + static_cast<std::ptrdiff_t>(best_last + 1));
-  }
-  surface.band_particles = band.size();
+  return out;
+}
 
-  // A column centre is off the band's centre line where the band is steep (its vertical extent is not
-  // symmetric about the line). Move every point along the local normal to the plastic-strain-weighted mean
-  // offset of the band particles beside it (within half a bin along the tangent); twice, as the normals move.
+// Keep the longest chain of bins without a gap wider than one bin: isolated plastic spots (a wall corner, say)
+// are not part of the slip surface.
+void keep_longest_chain(BandPoints& found) {
+  if (found.points.empty()) return;
+  std::size_t best_first = 0, best_last = 0, first = 0;
+  for (std::size_t k = 1; k <= found.points.size(); ++k) {
+    if (k == found.points.size() || found.point_bin[k] - found.point_bin[k - 1] > 2) {
+      if (k - 1 - first > best_last - best_first) {
+        best_first = first;
+        best_last = k - 1;
+      }
+      first = k;
+    }
+  }
+  const std::vector<std::size_t>& starts = found.point_band_start;
+  const std::size_t band_end = best_last + 1 < starts.size() ? starts[best_last + 1] : found.band.size();
+  found.band = std::vector<std::size_t>(found.band.begin() + static_cast<std::ptrdiff_t>(starts[best_first]),
+                                        found.band.begin() + static_cast<std::ptrdiff_t>(band_end));
+  found.points = std::vector<slope::Point>(found.points.begin() + static_cast<std::ptrdiff_t>(best_first),
+                                           found.points.begin() + static_cast<std::ptrdiff_t>(best_last + 1));
+}
+
+// A column centre is off the band's centre line where the band is steep (its vertical extent is not symmetric
+// about the line). Move every point along the local normal to the plastic-strain-weighted mean offset of the band
+// particles beside it (within half a bin along the tangent); twice, as the normals move.
+void centre_on_band(const std::vector<std::size_t>& band, const ParticleSnapshot& particles,
+                    const std::vector<double>& xs, const std::vector<double>& ys, FailureSurface& surface) {
   const std::size_t m = surface.points.size();
   for (int pass = 0; pass < 2 && m >= 3; ++pass) {
     std::vector<slope::Point> moved = surface.points;
@@ -144,11 +168,32 @@ FailureSurface plastic_band_surface(const ParticleSnapshot& particles, const Ban
     }
     surface.points = std::move(moved);
   }
-  // The surface is a graph y(x): drop points that fall back in x behind their predecessor.
+}
+
+// The surface is a graph y(x): drop points that fall back in x behind their predecessor.
+std::vector<slope::Point> monotone_in_x(const std::vector<slope::Point>& points) {
   std::vector<slope::Point> monotone;
-  for (const auto& p : surface.points)
+  for (const auto& p : points)
     if (monotone.empty() || p.x > monotone.back().x) monotone.push_back(p);
-  surface.points = std::move(monotone);
+  return monotone;
+}
+
+}  // namespace
+
+FailureSurface plastic_band_surface(const ParticleSnapshot& particles, const BandOptions& options) {
+  FailureSurface surface;
+  surface.plastic_strain_threshold = options.plastic_strain_threshold;
+  surface.bin_width = options.bin_width > 0.0 ? options.bin_width : 2.0 * particles.spacing;
+  const std::vector<double>& xs = options.initial_configuration ? particles.x0 : particles.x;
+  const std::vector<double>& ys = options.initial_configuration ? particles.y0 : particles.y;
+  if (xs.empty() || surface.bin_width <= 0.0) return surface;
+
+  BandPoints found = band_points_per_bin(particles, options, xs, ys, surface.bin_width);
+  keep_longest_chain(found);
+  surface.points = std::move(found.points);
+  surface.band_particles = found.band.size();
+  centre_on_band(found.band, particles, xs, ys, surface);
+  surface.points = monotone_in_x(surface.points);
   return surface;
 }
 

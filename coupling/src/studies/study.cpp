@@ -180,57 +180,34 @@ RunRecord run_one_spacing(const Scene& scene, const nlohmann::json& document, co
 
 }  // namespace
 
-StudyResult run_study(const std::filesystem::path& scene_file, const StudyOptions& options) {
-  StudyResult out;
-  const Clock::time_point start = Clock::now();
-  std::vector<double> spacings = options.spacings;
-  {
-    std::vector<std::string> problems;
-    if (spacings.empty()) problems.push_back("--spacings: give at least one particle spacing in metres, e.g. 0.4,0.2,0.1");
-    for (double s : spacings)
-      if (!(s > 0.0) || !std::isfinite(s))
-        problems.push_back("--spacings: " + format_number(s) + " is not a positive spacing in metres");
-    std::sort(spacings.begin(), spacings.end(), std::greater<>());
-    if (std::adjacent_find(spacings.begin(), spacings.end()) != spacings.end())
-      problems.push_back("--spacings: a spacing is given twice");
-    if (!problems.empty()) {
-      out.status = ExitStatus::invalid_input;
-      out.errors = problems;
-      return out;
-    }
-  }
-  Scene scene;
-  nlohmann::json document;
-  CaseSetup setup;
-  try {
-    scene = load_scene(scene_file);
-    document = read_scene_document(scene_file);
-    setup = setup_case(scene);
-  } catch (const SceneError& error) {
-    out.status = ExitStatus::invalid_input;
-    out.errors = error.messages();
-    return out;
-  }
+namespace {
 
-  nlohmann::json& study = out.study;
-  study = report_header(scene);
-  study["format"] = study_format;
-  study["reference_case"] = setup.kind_key;
-  study["parameters"] = setup.parameters;
-  study["spacings_m"] = spacings;
-  nlohmann::json quantities = nlohmann::json::array();
-  for (const Quantity& q : setup.quantities)
-    quantities.push_back({{"key", q.key},
-                          {"description", q.description},
-                          {"reference", optional_number(q.reference)},
-                          {"reference_source", q.reference_source},
-                          {"error_definition", q.error_definition}});
+// --spacings: positive, finite, each once; sorted coarse to fine. Returns the problems found.
+std::vector<std::string> check_spacings(std::vector<double>& spacings) {
+  std::vector<std::string> problems;
+  if (spacings.empty()) problems.push_back("--spacings: give at least one particle spacing in metres, e.g. 0.4,0.2,0.1");
+  for (double s : spacings)
+    if (!(s > 0.0) || !std::isfinite(s))
+      problems.push_back("--spacings: " + format_number(s) + " is not a positive spacing in metres");
+  std::sort(spacings.begin(), spacings.end(), std::greater<>());
+  if (std::adjacent_find(spacings.begin(), spacings.end()) != spacings.end())
+    problems.push_back("--spacings: a spacing is given twice");
+  return problems;
+}
 
-  std::filesystem::create_directories(options.output_dir / "runs");
-  std::filesystem::create_directories(options.output_dir / "figures");
-  install_interrupt_handler();
+nlohmann::json quantities_json(const std::vector<Quantity>& quantities) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Quantity& q : quantities)
+    out.push_back({{"key", q.key},
+                   {"description", q.description},
+                   {"reference", optional_number(q.reference)},
+                   {"reference_source", q.reference_source},
+                   {"error_definition", q.error_definition}});
+  return out;
+}
 
-  // Wall time already spent on unfinished spacings, from the study.json of an interrupted study.
+// Wall time already spent on unfinished spacings, from the study.json of an interrupted study.
+std::map<double, double> earlier_seconds_of(const StudyOptions& options) {
   std::map<double, double> earlier_seconds;
   if (options.resume && std::filesystem::exists(options.output_dir / "study.json")) {
     std::ifstream in(options.output_dir / "study.json");
@@ -240,9 +217,14 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
         if (run.value("status", std::string()) == "failed" && run.contains("wall_seconds"))
           earlier_seconds[run["particle_spacing_m"].get<double>()] = run["wall_seconds"].get<double>();
   }
+  return earlier_seconds;
+}
 
-  std::vector<RunRecord> runs;
-  bool interrupted = false;
+// Every spacing in turn (those finished by an earlier session are read back). Returns whether an interrupt
+// stopped the study.
+bool run_spacings(const Scene& scene, const nlohmann::json& document, const CaseSetup& setup,
+                  const std::vector<double>& spacings, const StudyOptions& options, std::vector<RunRecord>& runs) {
+  const std::map<double, double> earlier_seconds = earlier_seconds_of(options);
   for (std::size_t k = 0; k < spacings.size(); ++k) {
     const double dx = spacings[k];
     const std::filesystem::path folder = options.output_dir / "runs" / spacing_folder(dx);
@@ -266,62 +248,59 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
       record.entry["wall_seconds_before_resume"] = before->second;
     }
     if (interrupt_pending()) {
-      interrupted = true;
       runs.push_back(std::move(record));
-      break;
+      return true;
     }
     if (record.ok) sph::write_file_atomically(saved, record.entry.dump(2) + "\n");
     runs.push_back(std::move(record));
   }
+  return false;
+}
 
-  // Errors, orders and the figure.
-  std::vector<StudySeries> series;
-  for (std::size_t q = 0; q < setup.quantities.size(); ++q) {
-    const Quantity& quantity = setup.quantities[q];
-    StudySeries s;
-    s.label = quantity.key + " against " + quantity.reference_short;
-    std::vector<double> h, e, f;
-    for (RunRecord& r : runs) {
-      nlohmann::json& errors = r.entry["errors_vs_reference"];
-      if (!errors.is_array()) errors = nlohmann::json::array();
-      if (errors.size() <= q) errors.push_back(nullptr);
-      if (!r.values[q]) continue;
-      const double error = relative_error(quantity, *r.values[q]);
-      errors[q] = error;
-      h.push_back(r.spacing);
-      e.push_back(error);
-      f.push_back(*r.values[q]);
-      s.seconds.push_back(r.seconds);
-      s.errors.push_back(error);
-      s.point_labels.push_back("dx " + format_number(r.spacing) + " m");
-    }
-    nlohmann::json& jq = quantities[q];
-    jq["observed_order"] = optional_number(observed_order(h, e));
-    jq["observed_order_note"] = "least-squares slope of log(error) against log(dx) over the runs";
-    if (f.size() >= 3) {
-      const std::size_t n = f.size();
-      if (auto sc = self_convergence(h[n - 3], f[n - 3], h[n - 2], f[n - 2], h[n - 1], f[n - 1]))
-      {
-        jq["self_convergence"] = {{"order", sc->order},
-                                  {"extrapolated_value", sc->extrapolated},
-                                  {"from_spacings_m", {h[n - 3], h[n - 2], h[n - 1]}}};
-        if (sc->order < 0.5)
-          jq["self_convergence"]["note"] = "order below 0.5: the runs converge too slowly for Richardson "
-                                           "extrapolation, the extrapolated value is not reliable";
-      }
-      else
-        jq["self_convergence"] = {{"order", nullptr},
-                                  {"note", "the three finest runs are not monotone in dx (not yet in the asymptotic "
-                                           "range), so no order can be formed without the reference"}};
-    }
-    series.push_back(std::move(s));
+// Richardson self-convergence of the three finest runs (h, f coarse to fine), or why there is none.
+nlohmann::json self_convergence_json(const std::vector<double>& h, const std::vector<double>& f) {
+  const std::size_t n = f.size();
+  if (auto sc = self_convergence(h[n - 3], f[n - 3], h[n - 2], f[n - 2], h[n - 1], f[n - 1])) {
+    nlohmann::json out = {{"order", sc->order},
+                          {"extrapolated_value", sc->extrapolated},
+                          {"from_spacings_m", {h[n - 3], h[n - 2], h[n - 1]}}};
+    if (sc->order < 0.5)
+      out["note"] = "order below 0.5: the runs converge too slowly for Richardson "
+                    "extrapolation, the extrapolated value is not reliable";
+    return out;
   }
-  study["quantities"] = quantities;
-  study["runs"] = nlohmann::json::array();
-  for (const RunRecord& r : runs) study["runs"].push_back(r.entry);
-  if (setup.kind == CaseKind::slope_failure_surface && options.lem_search && !interrupted)
-    study["lem_search"] = lem_search_study(scene, series, options.log);
+  return {{"order", nullptr},
+          {"note", "the three finest runs are not monotone in dx (not yet in the asymptotic "
+                   "range), so no order can be formed without the reference"}};
+}
 
+// Errors of quantity q against its reference in every run, its observed order, and its series for the figure.
+StudySeries measure_quantity(const Quantity& quantity, std::size_t q, std::vector<RunRecord>& runs,
+                             nlohmann::json& jq) {
+  StudySeries s;
+  s.label = quantity.key + " against " + quantity.reference_short;
+  std::vector<double> h, e, f;
+  for (RunRecord& r : runs) {
+    nlohmann::json& errors = r.entry["errors_vs_reference"];
+    if (!errors.is_array()) errors = nlohmann::json::array();
+    if (errors.size() <= q) errors.push_back(nullptr);
+    if (!r.values[q]) continue;
+    const double error = relative_error(quantity, *r.values[q]);
+    errors[q] = error;
+    h.push_back(r.spacing);
+    e.push_back(error);
+    f.push_back(*r.values[q]);
+    s.seconds.push_back(r.seconds);
+    s.errors.push_back(error);
+    s.point_labels.push_back("dx " + format_number(r.spacing) + " m");
+  }
+  jq["observed_order"] = optional_number(observed_order(h, e));
+  jq["observed_order_note"] = "least-squares slope of log(error) against log(dx) over the runs";
+  if (f.size() >= 3) jq["self_convergence"] = self_convergence_json(h, f);
+  return s;
+}
+
+std::vector<std::string> study_failures(const std::vector<RunRecord>& runs, bool interrupted) {
   std::vector<std::string> failures;
   for (const RunRecord& r : runs)
     if (!r.ok)
@@ -330,6 +309,58 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
                               ? r.entry["errors"][0].get<std::string>()
                               : std::string("the run did not finish")));
   if (interrupted) failures.push_back("interrupted: run `sphslope study ... --resume` to continue");
+  return failures;
+}
+
+}  // namespace
+
+StudyResult run_study(const std::filesystem::path& scene_file, const StudyOptions& options) {
+  StudyResult out;
+  const Clock::time_point start = Clock::now();
+  std::vector<double> spacings = options.spacings;
+  if (std::vector<std::string> problems = check_spacings(spacings); !problems.empty()) {
+    out.status = ExitStatus::invalid_input;
+    out.errors = problems;
+    return out;
+  }
+  Scene scene;
+  nlohmann::json document;
+  CaseSetup setup;
+  try {
+    scene = load_scene(scene_file);
+    document = read_scene_document(scene_file);
+    setup = setup_case(scene);
+  } catch (const SceneError& error) {
+    out.status = ExitStatus::invalid_input;
+    out.errors = error.messages();
+    return out;
+  }
+
+  nlohmann::json& study = out.study;
+  study = report_header(scene);
+  study["format"] = study_format;
+  study["reference_case"] = setup.kind_key;
+  study["parameters"] = setup.parameters;
+  study["spacings_m"] = spacings;
+  nlohmann::json quantities = quantities_json(setup.quantities);
+
+  std::filesystem::create_directories(options.output_dir / "runs");
+  std::filesystem::create_directories(options.output_dir / "figures");
+  install_interrupt_handler();
+  std::vector<RunRecord> runs;
+  const bool interrupted = run_spacings(scene, document, setup, spacings, options, runs);
+
+  // Errors, orders and the figure.
+  std::vector<StudySeries> series;
+  for (std::size_t q = 0; q < setup.quantities.size(); ++q)
+    series.push_back(measure_quantity(setup.quantities[q], q, runs, quantities[q]));
+  study["quantities"] = quantities;
+  study["runs"] = nlohmann::json::array();
+  for (const RunRecord& r : runs) study["runs"].push_back(r.entry);
+  if (setup.kind == CaseKind::slope_failure_surface && options.lem_search && !interrupted)
+    study["lem_search"] = lem_search_study(scene, series, options.log);
+
+  const std::vector<std::string> failures = study_failures(runs, interrupted);
   out.errors = failures;
   study["status"] = failures.empty() ? "ok" : "failed";
   study["errors"] = failures;
