@@ -179,92 +179,107 @@ std::vector<std::string> sph_refusals(const SphAnalysis& analysis, const SphPlan
   return out;
 }
 
+namespace {
+
+sph::BoxWalls box_walls(double x_min, double x_max, double y_min, double height, const WallSides& sides, int layers) {
+  sph::BoxWalls box;
+  box.x_min = x_min;
+  box.x_max = x_max;
+  box.y_min = y_min;
+  box.height = height;
+  box.left = sides.left;
+  box.right = sides.right;
+  box.bottom = sides.bottom;
+  box.layers = layers;
+  return box;
+}
+
+// A slope section: its soil on the cell-centred lattice and the walls of the section box.
+void build_section_particles(const SceneSection& scene_section, const SphAnalysis& analysis, sph::Model& model,
+                             SphSize& counted) {
+  const double dx = model.settings.particle_spacing, h = model.settings.smoothing_length();
+  const auto& section = scene_section.section;
+  double top = section.bottom_y;
+  for (const auto& p : section.profile_lines.front().points) top = std::max(top, p.y);
+  const double width = section.x_max() - section.x_min(), height = top - section.bottom_y;
+  // Refuse before allocating anything per particle.
+  const auto soil_estimate = particle_count(section_area(section) / (dx * dx));
+  refuse_if_too_large(analysis, soil_estimate + wall_estimate(width, height, analysis.section_walls, dx, analysis.wall_layers));
+
+  for (const auto& m : scene_section.materials) model.materials.push_back(to_sph_material(m));
+  const SectionFill fill = fill_section(section, dx);
+  model.particles.reserve(fill.points.size() + wall_estimate(width, height, analysis.section_walls, dx, analysis.wall_layers));
+  for (std::size_t i = 0; i < fill.points.size(); ++i) {
+    const double density = model.materials[fill.materials[i]].density;
+    model.particles.add(fill.points[i].x, fill.points[i].y, density * dx * dx, density,
+                        static_cast<std::uint16_t>(fill.materials[i]), sph::ParticleKind::soil);
+  }
+  counted.soil_particles = fill.points.size();
+  const sph::BoxWalls box = box_walls(section.x_min(), section.x_min() + dx * std::floor(width / dx + 1e-9),
+                                      section.bottom_y, height, analysis.section_walls, analysis.wall_layers);
+  if (box.left || box.right || box.bottom)
+    counted.wall_particles = sph::add_box_walls(model.particles, box, dx, h, 0, model.materials.front().density);
+}
+
+// The soil of one body: the lattice points strictly inside its polygon.
+std::size_t add_body(const ParticleBody& body, const sph::Point& anchor, sph::Model& model) {
+  const double dx = model.settings.particle_spacing;
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  CGAL::Polygon_2<Kernel> polygon;
+  double x_lo = std::numeric_limits<double>::infinity(), y_lo = x_lo, x_hi = -x_lo, y_hi = -x_lo;
+  for (const auto& p : body.polygon) {
+    polygon.push_back({p.x, p.y});
+    x_lo = std::min(x_lo, p.x);
+    y_lo = std::min(y_lo, p.y);
+    x_hi = std::max(x_hi, p.x);
+    y_hi = std::max(y_hi, p.y);
+  }
+  const auto points = sph::lattice_points_in_region(
+      x_lo, y_lo, x_hi, y_hi, dx,
+      [&](double x, double y) { return polygon.bounded_side(Kernel::Point_2(x, y)) == CGAL::ON_BOUNDED_SIDE; },
+      anchor);
+  model.materials.push_back(to_sph_material(body.material));
+  return sph::add_soil(model.particles, points, dx, static_cast<std::uint16_t>(model.materials.size() - 1),
+                       body.material.density());
+}
+
+// A particle scene: every body on one lattice, and the wall box when there is one.
+void build_body_particles(const std::vector<ParticleBody>& bodies, const std::optional<WallBox>& walls,
+                          const SphAnalysis& analysis, sph::Model& model, SphSize& counted) {
+  const double dx = model.settings.particle_spacing, h = model.settings.smoothing_length();
+  double area = 0.0;
+  for (const auto& body : bodies) area += polygon_area(body.polygon);
+  std::size_t wall_count = 0;
+  if (walls) wall_count = wall_estimate(walls->x_max - walls->x_min, walls->height, walls->sides, dx, analysis.wall_layers);
+  refuse_if_too_large(analysis, particle_count(area / (dx * dx)) + wall_count);
+
+  // Bodies share the lattice of the wall box (or of the first body's lower-left corner).
+  sph::Point anchor{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  if (walls) {
+    anchor = {walls->x_min, walls->bottom_y};
+  } else {
+    for (const auto& p : bodies.front().polygon) anchor = {std::min(anchor.x, p.x), std::min(anchor.y, p.y)};
+  }
+  for (const auto& body : bodies) counted.soil_particles += add_body(body, anchor, model);
+  if (walls) {
+    const sph::BoxWalls box =
+        box_walls(walls->x_min, walls->x_max, walls->bottom_y, walls->height, walls->sides, analysis.wall_layers);
+    counted.wall_particles = sph::add_box_walls(model.particles, box, dx, h, 0, model.materials.front().density);
+  }
+}
+
+}  // namespace
+
 sph::Model build_sph_model(const Scene& scene, SphSize* size) {
   const std::optional<SphAnalysis>& analysis = scene.analyses.sph;
   if (!analysis) throw SceneError({"analyses.sph: missing (the scene asks for no SPH analysis)"});
   sph::Model model;
   model.settings = analysis->settings;
-  const double dx = model.settings.particle_spacing, h = model.settings.smoothing_length();
   SphSize counted;
-
   if (scene.section) {
-    const auto& section = scene.section->section;
-    double top = section.bottom_y;
-    for (const auto& p : section.profile_lines.front().points) top = std::max(top, p.y);
-    const double width = section.x_max() - section.x_min(), height = top - section.bottom_y;
-    // Refuse before allocating anything per particle.
-    const auto soil_estimate = particle_count(section_area(section) / (dx * dx));
-    refuse_if_too_large(*analysis, soil_estimate + wall_estimate(width, height, analysis->section_walls, dx, analysis->wall_layers));
-
-    for (const auto& m : scene.section->materials) model.materials.push_back(to_sph_material(m));
-    const SectionFill fill = fill_section(section, dx);
-    model.particles.reserve(fill.points.size() + wall_estimate(width, height, analysis->section_walls, dx, analysis->wall_layers));
-    for (std::size_t i = 0; i < fill.points.size(); ++i) {
-      const double density = model.materials[fill.materials[i]].density;
-      model.particles.add(fill.points[i].x, fill.points[i].y, density * dx * dx, density,
-                          static_cast<std::uint16_t>(fill.materials[i]), sph::ParticleKind::soil);
-    }
-    counted.soil_particles = fill.points.size();
-    sph::BoxWalls box;
-    box.x_min = section.x_min();
-    box.x_max = section.x_min() + dx * std::floor(width / dx + 1e-9);
-    box.y_min = section.bottom_y;
-    box.height = height;
-    box.left = analysis->section_walls.left;
-    box.right = analysis->section_walls.right;
-    box.bottom = analysis->section_walls.bottom;
-    box.layers = analysis->wall_layers;
-    if (box.left || box.right || box.bottom)
-      counted.wall_particles =
-          sph::add_box_walls(model.particles, box, dx, h, 0, model.materials.front().density);
+    build_section_particles(*scene.section, *analysis, model, counted);
   } else if (scene.bodies) {
-    const std::optional<std::vector<ParticleBody>>& bodies = scene.bodies;
-    const std::optional<WallBox>& walls = scene.walls;
-    double area = 0.0;
-    for (const auto& body : *bodies) area += polygon_area(body.polygon);
-    std::size_t wall_count = 0;
-    if (walls) wall_count = wall_estimate(walls->x_max - walls->x_min, walls->height, walls->sides, dx, analysis->wall_layers);
-    refuse_if_too_large(*analysis, particle_count(area / (dx * dx)) + wall_count);
-
-    // Bodies share the lattice of the wall box (or of the first body's lower-left corner).
-    sph::Point anchor{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-    if (walls) {
-      anchor = {walls->x_min, walls->bottom_y};
-    } else {
-      for (const auto& p : bodies->front().polygon) anchor = {std::min(anchor.x, p.x), std::min(anchor.y, p.y)};
-    }
-    for (const auto& body : *bodies) {
-      using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-      CGAL::Polygon_2<Kernel> polygon;
-      double x_lo = std::numeric_limits<double>::infinity(), y_lo = x_lo, x_hi = -x_lo, y_hi = -x_lo;
-      for (const auto& p : body.polygon) {
-        polygon.push_back({p.x, p.y});
-        x_lo = std::min(x_lo, p.x);
-        y_lo = std::min(y_lo, p.y);
-        x_hi = std::max(x_hi, p.x);
-        y_hi = std::max(y_hi, p.y);
-      }
-      const auto points = sph::lattice_points_in_region(
-          x_lo, y_lo, x_hi, y_hi, dx,
-          [&](double x, double y) { return polygon.bounded_side(Kernel::Point_2(x, y)) == CGAL::ON_BOUNDED_SIDE; },
-          anchor);
-      model.materials.push_back(to_sph_material(body.material));
-      counted.soil_particles += sph::add_soil(model.particles, points, dx,
-                                              static_cast<std::uint16_t>(model.materials.size() - 1),
-                                              body.material.density());
-    }
-    if (walls) {
-      sph::BoxWalls box;
-      box.x_min = walls->x_min;
-      box.x_max = walls->x_max;
-      box.y_min = walls->bottom_y;
-      box.height = walls->height;
-      box.left = walls->sides.left;
-      box.right = walls->sides.right;
-      box.bottom = walls->sides.bottom;
-      box.layers = analysis->wall_layers;
-      counted.wall_particles = sph::add_box_walls(model.particles, box, dx, h, 0, model.materials.front().density);
-    }
+    build_body_particles(*scene.bodies, scene.walls, *analysis, model, counted);
   } else {
     throw SceneError({"section: missing (an SPH analysis needs a \"section\" or \"bodies\")"});
   }

@@ -202,6 +202,104 @@ int run_batch_command(coupling::BatchOptions options) {
   }
 }
 
+// Everything the command line can say; filled by CLI11, read by the run_* functions.
+struct CommandLine {
+  std::string scene_file;
+  std::string output_dir;
+  bool resume = false;               // run --resume
+  std::vector<double> spacings;      // study --spacings
+  bool study_resume = false;         // study --resume
+  bool no_lem_search = false;        // study --no-lem-search
+  coupling::BatchOptions batch;
+  CLI::App* check = nullptr;
+  CLI::App* lem = nullptr;
+  CLI::App* run = nullptr;
+  CLI::App* study = nullptr;
+  CLI::App* batch_command = nullptr;
+};
+
+void add_scene_commands(CLI::App& app, CommandLine& cli) {
+  cli.check = app.add_subcommand("check", "Validate a scene file and explain every error.");
+  cli.check->add_option("SCENE", cli.scene_file, "Scene file (JSON, \"format\": \"sphslope-scene/1\")")
+      ->required()
+      ->type_name("FILE");
+
+  cli.lem = app.add_subcommand(
+      "lem", "Limit equilibrium only: critical circle and factor of safety per method, as a table on stdout.");
+  cli.lem->add_option("SCENE", cli.scene_file, "Scene file with a \"section\"")->required()->type_name("FILE");
+  cli.lem->add_option("-o,--output", cli.output_dir, "Also write DIR/report.json (default: print only, write nothing)")
+      ->type_name("DIR");
+
+  cli.run = app.add_subcommand("run", "Run every analysis the scene asks for and write DIR/report.json.");
+  cli.run->add_option("SCENE", cli.scene_file, "Scene file")->required()->type_name("FILE");
+  cli.run->add_option("-o,--output", cli.output_dir, "Output folder (default: runs/<scene file stem>)")->type_name("DIR");
+  cli.run->add_flag("--resume", cli.resume,
+                    "Continue an interrupted SPH run from DIR/checkpoint.bin (same scene, same DIR); the result is "
+                    "the same as an uninterrupted run");
+}
+
+void add_study_command(CLI::App& app, CommandLine& cli) {
+  cli.study = app.add_subcommand(
+      "study", "Error against run time: run the scene at several particle spacings and measure each monitored "
+               "quantity against its reference (DIR/study.json, DIR/figures/error_vs_runtime.svg).");
+  cli.study->add_option("SCENE", cli.scene_file, "Scene file with analyses.sph (a slope section, or one column body)")
+      ->required()
+      ->type_name("FILE");
+  cli.study->add_option("--spacings", cli.spacings, "Particle spacings in metres, comma-separated, e.g. 0.4,0.2,0.1")
+      ->required()
+      ->delimiter(',')
+      ->type_name("DX,...");
+  cli.study->add_option("-o,--output", cli.output_dir, "Output folder (default: runs/<scene file stem>_study)")
+      ->type_name("DIR");
+  cli.study->add_flag("--resume", cli.study_resume,
+                      "Reuse the spacings already finished in DIR and continue an interrupted one from its checkpoint");
+  cli.study->add_flag("--no-lem-search", cli.no_lem_search,
+                      "Slope sections: skip the study of the limit-equilibrium search");
+}
+
+int run_study_command(const CommandLine& cli) {
+  coupling::StudyOptions study_options;
+  study_options.spacings = cli.spacings;
+  study_options.resume = cli.study_resume;
+  study_options.lem_search = !cli.no_lem_search;
+  study_options.log = &std::cerr;
+  study_options.output_dir =
+      cli.output_dir.empty()
+          ? std::filesystem::path("runs") / (std::filesystem::path(cli.scene_file).stem().string() + "_study")
+          : std::filesystem::path(cli.output_dir);
+  try {
+    return print_study(cli.scene_file, study_options.output_dir, coupling::run_study(cli.scene_file, study_options));
+  } catch (const std::exception& error) {
+    std::cerr << "sphslope: unexpected failure: " << error.what() << "\n";
+    return static_cast<int>(coupling::ExitStatus::failed);
+  }
+}
+
+// check, lem and run: the pipeline on one scene file.
+int run_scene_command(const CommandLine& cli) {
+  coupling::WorkflowOptions options;
+  options.log = &std::cerr;
+  if (cli.check->parsed()) {
+    options.mode = coupling::Mode::check;
+  } else if (cli.lem->parsed()) {
+    options.mode = coupling::Mode::lem;
+    if (!cli.output_dir.empty()) options.output_dir = cli.output_dir;
+  } else {
+    options.mode = coupling::Mode::run;
+    options.resume = cli.resume;
+    coupling::install_interrupt_handler();  // Ctrl-C: checkpoint, report "interrupted", exit 1; --resume continues
+    options.output_dir = cli.output_dir.empty() ? coupling::default_output_dir(cli.scene_file)
+                                                : std::filesystem::path(cli.output_dir);
+  }
+  try {
+    const coupling::WorkflowResult result = coupling::run_scene_file(cli.scene_file, options);
+    return print_outcome(cli.scene_file, result, options.mode);
+  } catch (const std::exception& error) {
+    std::cerr << "sphslope: unexpected failure: " << error.what() << "\n";
+    return static_cast<int>(coupling::ExitStatus::failed);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -218,50 +316,10 @@ int main(int argc, char** argv) {
                "sphslope"};
   app.set_version_flag("--version", "sphslope " + std::string(coupling::program_version()));
   app.require_subcommand(1);
-
-  std::string scene_file;
-  std::string output_dir;
-
-  CLI::App* check = app.add_subcommand("check", "Validate a scene file and explain every error.");
-  check->add_option("SCENE", scene_file, "Scene file (JSON, \"format\": \"sphslope-scene/1\")")
-      ->required()
-      ->type_name("FILE");
-
-  CLI::App* lem = app.add_subcommand(
-      "lem", "Limit equilibrium only: critical circle and factor of safety per method, as a table on stdout.");
-  lem->add_option("SCENE", scene_file, "Scene file with a \"section\"")->required()->type_name("FILE");
-  lem->add_option("-o,--output", output_dir, "Also write DIR/report.json (default: print only, write nothing)")
-      ->type_name("DIR");
-
-  CLI::App* run = app.add_subcommand("run", "Run every analysis the scene asks for and write DIR/report.json.");
-  run->add_option("SCENE", scene_file, "Scene file")->required()->type_name("FILE");
-  run->add_option("-o,--output", output_dir, "Output folder (default: runs/<scene file stem>)")->type_name("DIR");
-  bool resume = false;
-  run->add_flag("--resume", resume,
-                "Continue an interrupted SPH run from DIR/checkpoint.bin (same scene, same DIR); the result is the "
-                "same as an uninterrupted run");
-
-  CLI::App* study = app.add_subcommand(
-      "study", "Error against run time: run the scene at several particle spacings and measure each monitored "
-               "quantity against its reference (DIR/study.json, DIR/figures/error_vs_runtime.svg).");
-  study->add_option("SCENE", scene_file, "Scene file with analyses.sph (a slope section, or one column body)")
-      ->required()
-      ->type_name("FILE");
-  std::vector<double> spacings;
-  study->add_option("--spacings", spacings, "Particle spacings in metres, comma-separated, e.g. 0.4,0.2,0.1")
-      ->required()
-      ->delimiter(',')
-      ->type_name("DX,...");
-  study->add_option("-o,--output", output_dir, "Output folder (default: runs/<scene file stem>_study)")
-      ->type_name("DIR");
-  bool study_resume = false;
-  study->add_flag("--resume", study_resume,
-                  "Reuse the spacings already finished in DIR and continue an interrupted one from its checkpoint");
-  bool no_lem_search = false;
-  study->add_flag("--no-lem-search", no_lem_search, "Slope sections: skip the study of the limit-equilibrium search");
-
-  coupling::BatchOptions batch_options;
-  CLI::App* batch = add_batch_command(app, batch_options);
+  CommandLine cli;
+  add_scene_commands(app, cli);
+  add_study_command(app, cli);
+  cli.batch_command = add_batch_command(app, cli.batch);
 
   try {
     app.parse(argc, argv);
@@ -269,46 +327,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(error);  // prints help, the version or the usage error
     return code == 0 ? 0 : static_cast<int>(coupling::ExitStatus::invalid_input);
   }
-
-  if (batch->parsed()) return run_batch_command(batch_options);
-
-  if (study->parsed()) {
-    coupling::StudyOptions study_options;
-    study_options.spacings = spacings;
-    study_options.resume = study_resume;
-    study_options.lem_search = !no_lem_search;
-    study_options.log = &std::cerr;
-    study_options.output_dir = output_dir.empty()
-                                   ? std::filesystem::path("runs") / (std::filesystem::path(scene_file).stem().string() + "_study")
-                                   : std::filesystem::path(output_dir);
-    try {
-      return print_study(scene_file, study_options.output_dir, coupling::run_study(scene_file, study_options));
-    } catch (const std::exception& error) {
-      std::cerr << "sphslope: unexpected failure: " << error.what() << "\n";
-      return static_cast<int>(coupling::ExitStatus::failed);
-    }
-  }
-
-  coupling::WorkflowOptions options;
-  options.log = &std::cerr;
-  if (check->parsed()) {
-    options.mode = coupling::Mode::check;
-  } else if (lem->parsed()) {
-    options.mode = coupling::Mode::lem;
-    if (!output_dir.empty()) options.output_dir = output_dir;
-  } else {
-    options.mode = coupling::Mode::run;
-    options.resume = resume;
-    coupling::install_interrupt_handler();  // Ctrl-C: checkpoint, report "interrupted", exit 1; --resume continues
-    options.output_dir = output_dir.empty() ? coupling::default_output_dir(scene_file)
-                                            : std::filesystem::path(output_dir);
-  }
-
-  try {
-    const coupling::WorkflowResult result = coupling::run_scene_file(scene_file, options);
-    return print_outcome(scene_file, result, options.mode);
-  } catch (const std::exception& error) {
-    std::cerr << "sphslope: unexpected failure: " << error.what() << "\n";
-    return static_cast<int>(coupling::ExitStatus::failed);
-  }
+  if (cli.batch_command->parsed()) return run_batch_command(cli.batch);
+  if (cli.study->parsed()) return run_study_command(cli);
+  return run_scene_command(cli);
 }

@@ -19,8 +19,7 @@ using Polyline = std::vector<slope::Point>;
 std::string range_text(double a, double b) { return format_number(a) + " to " + format_number(b); }
 
 // A polyline of [x, y] points with x strictly increasing.
-std::optional<Polyline> read_polyline(const nlohmann::json& points, const std::string& path,
-                                      Diagnostics& diagnostics) {
+std::optional<Polyline> read_polyline(const nlohmann::json& points, const std::string& path, Diagnostics& diagnostics) {
   Polyline line;
   bool ok = true;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -45,8 +44,8 @@ std::optional<Polyline> read_polyline(const nlohmann::json& points, const std::s
 double height_at(const Polyline& line, double x) {
   if (x <= line.front().x) return line.front().y;
   if (x >= line.back().x) return line.back().y;
-  const auto upper = std::upper_bound(line.begin(), line.end(), x,
-                                      [](double value, const slope::Point& p) { return value < p.x; });
+  const auto upper =
+      std::upper_bound(line.begin(), line.end(), x, [](double value, const slope::Point& p) { return value < p.x; });
   const slope::Point& b = *upper;
   const slope::Point& a = *(upper - 1);
   return a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x);
@@ -71,18 +70,9 @@ struct LineRead {
   std::string path;
 };
 
-// Profile lines: same x span as the ground surface, at or below it, pairwise not crossing, not below the bottom.
-bool check_profile_geometry(const std::vector<LineRead>& lines, std::optional<double> bottom_y,
-                            const std::string& section_path, Diagnostics& diagnostics) {
-  const std::size_t errors_before = diagnostics.size();
-  const Polyline& ground = *lines[0].points;
-  const double x_min = ground.front().x, x_max = ground.back().x;
-  double scale = std::max(1.0, x_max - x_min);
-  for (const LineRead& line : lines) {
-    for (const slope::Point& p : *line.points) scale = std::max(scale, std::fabs(p.y));
-  }
-  const double tolerance = 1e-9 * scale;
-
+// Every profile line spans the ground surface's x range.
+void check_line_spans(const std::vector<LineRead>& lines, double x_min, double x_max, double tolerance,
+                      Diagnostics& diagnostics) {
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const Polyline& line = *lines[i].points;
     const std::string points_path = join_path(lines[i].path, "points_m");
@@ -95,24 +85,31 @@ bool check_profile_geometry(const std::vector<LineRead>& lines, std::optional<do
                             range_text(line.front().x, line.back().x) + " m");
     }
   }
-  if (diagnostics.size() != errors_before) return false;
+}
 
+// The ground surface is on top of every other line.
+void check_ground_on_top(const std::vector<LineRead>& lines, double x_min, double x_max, double tolerance,
+                         Diagnostics& diagnostics) {
+  const Polyline& ground = *lines[0].points;
   for (std::size_t j = 1; j < lines.size(); ++j) {
-    // The ground surface is on top of every other line.
     const Polyline& line = *lines[j].points;
     for (double x : common_abscissae(ground, line, x_min, x_max)) {
       const double above = height_at(line, x) - height_at(ground, x);
       if (above > tolerance) {
         diagnostics.error(lines[j].path,
-                          "rises above the ground surface (profile_lines[0]) at x = " + format_number(x) +
-                              " m (y = " + format_number(height_at(line, x)) + " above " +
-                              format_number(height_at(ground, x)) +
+                          "rises above the ground surface (profile_lines[0]) at x = " + format_number(x) + " m (y = " +
+                              format_number(height_at(line, x)) + " above " + format_number(height_at(ground, x)) +
                               "); the first profile line is the ground surface and must be on top (lines may touch "
                               "but not cross)");
         break;
       }
     }
   }
+}
+
+// Lines below the ground may touch but not cross each other.
+void check_lines_do_not_cross(const std::vector<LineRead>& lines, double x_min, double x_max, double tolerance,
+                              Diagnostics& diagnostics) {
   for (std::size_t i = 1; i < lines.size(); ++i) {
     for (std::size_t j = i + 1; j < lines.size(); ++j) {
       const Polyline& a = *lines[i].points;
@@ -134,29 +131,51 @@ bool check_profile_geometry(const std::vector<LineRead>& lines, std::optional<do
       }
     }
   }
+}
 
-  if (bottom_y) {
-    const std::string bottom_path = join_path(section_path, "bottom_y_m");
-    bool reported = false;
-    for (std::size_t i = 0; i < lines.size() && !reported; ++i) {
-      const Polyline& line = *lines[i].points;
-      for (std::size_t k = 0; k < line.size(); ++k) {
-        if (line[k].y < *bottom_y - tolerance) {
-          diagnostics.error(bottom_path, "must be at or below every profile line (got " + format_number(*bottom_y) +
-                                             ", but " + index_path(join_path(lines[i].path, "points_m"), k) +
-                                             " has y = " + format_number(line[k].y) + ")");
-          reported = true;
-          break;
-        }
+// bottom_y_m is at or below every profile line, and below the ground somewhere (else there is no soil).
+void check_bottom(const std::vector<LineRead>& lines, double bottom_y, double tolerance,
+                  const std::string& section_path, Diagnostics& diagnostics) {
+  const Polyline& ground = *lines[0].points;
+  const std::string bottom_path = join_path(section_path, "bottom_y_m");
+  bool reported = false;
+  for (std::size_t i = 0; i < lines.size() && !reported; ++i) {
+    const Polyline& line = *lines[i].points;
+    for (std::size_t k = 0; k < line.size(); ++k) {
+      if (line[k].y < bottom_y - tolerance) {
+        diagnostics.error(bottom_path, "must be at or below every profile line (got " + format_number(bottom_y) +
+                                           ", but " + index_path(join_path(lines[i].path, "points_m"), k) +
+                                           " has y = " + format_number(line[k].y) + ")");
+        reported = true;
+        break;
       }
     }
-    const bool ground_above = std::any_of(ground.begin(), ground.end(),
-                                          [&](const slope::Point& p) { return p.y > *bottom_y + tolerance; });
-    if (!reported && !ground_above) {
-      diagnostics.error(bottom_path, "must be below the ground surface (got " + format_number(*bottom_y) +
-                                         "; the ground surface is nowhere above it, so the section holds no soil)");
-    }
   }
+  const bool ground_above =
+      std::any_of(ground.begin(), ground.end(), [&](const slope::Point& p) { return p.y > bottom_y + tolerance; });
+  if (!reported && !ground_above) {
+    diagnostics.error(bottom_path, "must be below the ground surface (got " + format_number(bottom_y) +
+                                       "; the ground surface is nowhere above it, so the section holds no soil)");
+  }
+}
+
+// Profile lines: same x span as the ground surface, at or below it, pairwise not crossing, not below the bottom.
+bool check_profile_geometry(const std::vector<LineRead>& lines, std::optional<double> bottom_y,
+                            const std::string& section_path, Diagnostics& diagnostics) {
+  const std::size_t errors_before = diagnostics.size();
+  const Polyline& ground = *lines[0].points;
+  const double x_min = ground.front().x, x_max = ground.back().x;
+  double scale = std::max(1.0, x_max - x_min);
+  for (const LineRead& line : lines) {
+    for (const slope::Point& p : *line.points) scale = std::max(scale, std::fabs(p.y));
+  }
+  const double tolerance = 1e-9 * scale;
+
+  check_line_spans(lines, x_min, x_max, tolerance, diagnostics);
+  if (diagnostics.size() != errors_before) return false;
+  check_ground_on_top(lines, x_min, x_max, tolerance, diagnostics);
+  check_lines_do_not_cross(lines, x_min, x_max, tolerance, diagnostics);
+  if (bottom_y) check_bottom(lines, *bottom_y, tolerance, section_path, diagnostics);
   return diagnostics.size() == errors_before;
 }
 
@@ -180,8 +199,8 @@ std::optional<slope::Water> read_water(JsonReader& water, double x_min, double x
   const double tolerance = 1e-9 * std::max(1.0, x_max - x_min);
   if (line->front().x > x_min + tolerance || line->back().x < x_max - tolerance) {
     diagnostics.error(path, "must span the section's x range (x " + range_text(x_min, x_max) +
-                                " m; it may extend beyond it), got x " +
-                                range_text(line->front().x, line->back().x) + " m");
+                                " m; it may extend beyond it), got x " + range_text(line->front().x, line->back().x) +
+                                " m");
     return std::nullopt;
   }
   if (bottom_y) {
@@ -354,75 +373,120 @@ void check_materials_for_sph(const std::string& section_path, const SceneSection
   }
 }
 
+namespace {
+
+// The names of section.materials, for the profile lines that refer to them.
+struct MaterialNames {
+  std::map<std::string, std::size_t> index;
+  std::vector<std::string> names;  // in the order defined, for messages
+};
+
+// Materials first: profile lines refer to them by name.
+MaterialNames read_section_materials(JsonReader& section, std::vector<SoilMaterial>& materials_out,
+                                     Diagnostics& diagnostics) {
+  MaterialNames known;
+  const nlohmann::json* materials =
+      section.array("materials", Need::required, 1, limits::materials, "an array of materials");
+  if (!materials) return known;
+  std::map<std::string, std::string> first_path;
+  for (std::size_t i = 0; i < materials->size(); ++i) {
+    JsonReader m((*materials)[i], index_path(section.path_of("materials"), i), diagnostics);
+    auto material = read_material(m);
+    if (!material) {
+      // Keep the name (if readable) so profile lines naming it do not report a second, misleading error.
+      if (m.is_object() && (*materials)[i].contains("name") && (*materials)[i]["name"].is_string()) {
+        known.index.emplace((*materials)[i]["name"].get<std::string>(), materials_out.size());
+        known.names.push_back((*materials)[i]["name"].get<std::string>());
+        materials_out.emplace_back();
+      }
+      continue;
+    }
+    const auto [it, inserted] = first_path.emplace(material->name, m.path());
+    if (!inserted) {
+      diagnostics.error(m.path_of("name"), "duplicate material name \"" + material->name + "\" (already used by " +
+                                               it->second + "; names must be unique)");
+      continue;
+    }
+    known.index.emplace(material->name, materials_out.size());
+    known.names.push_back(material->name);
+    materials_out.push_back(std::move(*material));
+  }
+  return known;
+}
+
+LineRead read_profile_line(const nlohmann::json& entry, std::string path, JsonReader& section,
+                           const MaterialNames& known, Diagnostics& diagnostics) {
+  LineRead line;
+  line.path = std::move(path);
+  JsonReader l(entry, line.path, diagnostics);
+  if (const auto name = l.string("material", Need::required)) {
+    const auto it = known.index.find(*name);
+    if (it != known.index.end()) {
+      line.material = it->second;
+    } else if (!known.index.empty() || section.has("materials")) {
+      std::string defined;
+      for (const std::string& n : known.names) defined += (defined.empty() ? "" : ", ") + n;
+      const std::string suggestion = closest_match(*name, known.names);
+      diagnostics.error(l.path_of("material"),
+                        "unknown material \"" + *name + "\" (" +
+                            (suggestion.empty() ? "" : "did you mean \"" + suggestion + "\"? ") +
+                            "defined in section.materials: " + (defined.empty() ? "none" : defined) + ")");
+    }
+  }
+  if (const nlohmann::json* points = l.array("points_m", Need::required, 2, limits::polyline_points,
+                                             "an array of at least two points [x_m, y_m]")) {
+    line.points = read_polyline(*points, l.path_of("points_m"), diagnostics);
+  }
+  l.finish();
+  return line;
+}
+
+// section.profile_lines; returns whether every line has its material and points.
+bool read_profile_lines(JsonReader& section, const MaterialNames& known, std::vector<LineRead>& lines,
+                        Diagnostics& diagnostics) {
+  const nlohmann::json* profile = section.array("profile_lines", Need::required, 1, limits::profile_lines,
+                                                "an array of profile lines, the ground surface first");
+  if (!profile) return false;
+  bool lines_ok = true;
+  for (std::size_t i = 0; i < profile->size(); ++i) {
+    LineRead line =
+        read_profile_line((*profile)[i], index_path(section.path_of("profile_lines"), i), section, known, diagnostics);
+    if (!line.material || !line.points) lines_ok = false;
+    lines.push_back(std::move(line));
+  }
+  return lines_ok;
+}
+
+// Water, surcharges and the seismic coefficient; their positions are checked against the section's x range
+// only when the geometry is valid.
+void read_section_loads(JsonReader& section, double x_min, double x_max, std::optional<double> bottom_y,
+                        bool geometry_ok, slope::Section& out, Diagnostics& diagnostics) {
+  if (auto water = section.object("water", Need::optional,
+                                  "an object {\"piezometric_line_m\": [[x, y], ...], \"unit_weight_kN_m3\": 9.81}")) {
+    out.water = read_water(*water, x_min, x_max, bottom_y, geometry_ok);
+  }
+  bool surcharges_ok = true;
+  if (const nlohmann::json* surcharges = section.array("surcharges", Need::optional, 0, limits::surcharges)) {
+    out.surcharges = read_surcharges(*surcharges, section.path_of("surcharges"), x_min, x_max, geometry_ok, diagnostics,
+                                     surcharges_ok);
+  }
+  if (auto seismic = section.object("seismic", Need::optional, "an object {\"horizontal_coefficient\": 0.1}")) {
+    out.seismic_coefficient =
+        seismic->number("horizontal_coefficient", Need::required, Bounds::half_open(0.0, 1.0)).value_or(0.0);
+    seismic->finish();
+  }
+}
+
+}  // namespace
+
 std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagnostics) {
   const std::size_t errors_before = diagnostics.size();
   SceneSection result;
 
   const auto bottom_y = section.number("bottom_y_m", Need::required);
-
-  // Materials first: profile lines refer to them by name.
-  std::map<std::string, std::size_t> material_index;
-  std::vector<std::string> material_names;  // in the order defined, for messages
-  if (const nlohmann::json* materials = section.array("materials", Need::required, 1, limits::materials,
-                                                      "an array of materials")) {
-    std::map<std::string, std::string> first_path;
-    for (std::size_t i = 0; i < materials->size(); ++i) {
-      JsonReader m((*materials)[i], index_path(section.path_of("materials"), i), diagnostics);
-      auto material = read_material(m);
-      if (!material) {
-        // Keep the name (if readable) so profile lines naming it do not report a second, misleading error.
-        if (m.is_object() && (*materials)[i].contains("name") && (*materials)[i]["name"].is_string()) {
-          material_index.emplace((*materials)[i]["name"].get<std::string>(), result.materials.size());
-          material_names.push_back((*materials)[i]["name"].get<std::string>());
-          result.materials.emplace_back();
-        }
-        continue;
-      }
-      const auto [it, inserted] = first_path.emplace(material->name, m.path());
-      if (!inserted) {
-        diagnostics.error(m.path_of("name"), "duplicate material name \"" + material->name + "\" (already used by " +
-                                                 it->second + "; names must be unique)");
-        continue;
-      }
-      material_index.emplace(material->name, result.materials.size());
-      material_names.push_back(material->name);
-      result.materials.push_back(std::move(*material));
-    }
-  }
-
+  const MaterialNames known = read_section_materials(section, result.materials, diagnostics);
   std::vector<LineRead> lines;
-  bool lines_ok = false;
-  if (const nlohmann::json* profile = section.array("profile_lines", Need::required, 1, limits::profile_lines,
-                                                    "an array of profile lines, the ground surface first")) {
-    lines_ok = true;
-    for (std::size_t i = 0; i < profile->size(); ++i) {
-      LineRead line;
-      line.path = index_path(section.path_of("profile_lines"), i);
-      JsonReader l((*profile)[i], line.path, diagnostics);
-      if (const auto name = l.string("material", Need::required)) {
-        const auto it = material_index.find(*name);
-        if (it != material_index.end()) {
-          line.material = it->second;
-        } else if (!material_index.empty() || section.has("materials")) {
-          std::string defined;
-          for (const std::string& n : material_names) defined += (defined.empty() ? "" : ", ") + n;
-          const std::string suggestion = closest_match(*name, material_names);
-          diagnostics.error(l.path_of("material"),
-                            "unknown material \"" + *name + "\" (" +
-                                (suggestion.empty() ? "" : "did you mean \"" + suggestion + "\"? ") +
-                                "defined in section.materials: " + (defined.empty() ? "none" : defined) + ")");
-        }
-      }
-      if (const nlohmann::json* points =
-              l.array("points_m", Need::required, 2, limits::polyline_points,
-                      "an array of at least two points [x_m, y_m]")) {
-        line.points = read_polyline(*points, l.path_of("points_m"), diagnostics);
-      }
-      l.finish();
-      if (!line.material || !line.points) lines_ok = false;
-      lines.push_back(std::move(line));
-    }
-  }
+  const bool lines_ok = read_profile_lines(section, known, lines, diagnostics);
 
   // Geometry checks need every line's points.
   bool geometry_ok = lines_ok && !lines.empty();
@@ -436,22 +500,7 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
     x_min = lines[0].points->front().x;
     x_max = lines[0].points->back().x;
   }
-
-  if (auto water = section.object("water", Need::optional,
-                                  "an object {\"piezometric_line_m\": [[x, y], ...], \"unit_weight_kN_m3\": 9.81}")) {
-    result.section.water = read_water(*water, x_min, x_max, bottom_y, geometry_ok);
-  }
-  bool surcharges_ok = true;
-  if (const nlohmann::json* surcharges = section.array("surcharges", Need::optional, 0, limits::surcharges)) {
-    result.section.surcharges = read_surcharges(*surcharges, section.path_of("surcharges"), x_min, x_max,
-                                                geometry_ok, diagnostics, surcharges_ok);
-  }
-  if (auto seismic = section.object("seismic", Need::optional, "an object {\"horizontal_coefficient\": 0.1}")) {
-    result.section.seismic_coefficient =
-        seismic->number("horizontal_coefficient", Need::required, Bounds::half_open(0.0, 1.0)).value_or(0.0);
-    seismic->finish();
-  }
-
+  read_section_loads(section, x_min, x_max, bottom_y, geometry_ok, result.section, diagnostics);
   if (diagnostics.size() != errors_before || !geometry_ok) return std::nullopt;
 
   result.section.bottom_y = *bottom_y;

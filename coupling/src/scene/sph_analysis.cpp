@@ -102,75 +102,85 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
   return loads;
 }
 
-std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagnostics& diagnostics) {
-  JsonReader r(block, "analyses.sph", diagnostics);
-  const std::size_t errors_before = diagnostics.size();
-  SphAnalysis a;
-  sph::Settings& s = a.settings;
-  const auto spacing = r.number("particle_spacing_m", Need::required, Bounds::positive());
-  const auto end_time = r.number("end_time_s", Need::required, Bounds::positive());
-  s.h_over_dx = r.number_or("smoothing_length_ratio", s.h_over_dx, Bounds::closed(1.0, 2.0));
-  if (const auto kernel = r.string("kernel", Need::optional)) {
-    if (*kernel == "cubic_spline") {
-      s.kernel = sph::KernelType::cubic_spline;
-    } else if (*kernel == "wendland_c2") {
-      s.kernel = sph::KernelType::wendland_c2;
+namespace {
+
+void read_kernel(JsonReader& r, sph::Settings& s) {
+  const auto kernel = r.string("kernel", Need::optional);
+  if (!kernel) return;
+  if (*kernel == "cubic_spline") {
+    s.kernel = sph::KernelType::cubic_spline;
+  } else if (*kernel == "wendland_c2") {
+    s.kernel = sph::KernelType::wendland_c2;
+  } else {
+    r.diagnostics().error(r.path_of("kernel"), "unknown kernel \"" + *kernel + "\" (allowed: cubic_spline, wendland_c2)");
+  }
+}
+
+void read_gravity_mode(JsonReader& r, sph::Settings& s) {
+  const auto gravity = r.string("gravity", Need::optional);
+  if (!gravity) return;
+  if (*gravity == "sudden") {
+    s.gravity_mode = sph::GravityMode::sudden;
+  } else if (*gravity == "geostatic_k0") {
+    s.gravity_mode = sph::GravityMode::geostatic_k0;
+  } else if (*gravity == "ramped") {
+    s.gravity_mode = sph::GravityMode::ramped;
+  } else {
+    r.diagnostics().error(r.path_of("gravity"),
+                          "unknown gravity mode \"" + *gravity + "\" (allowed: sudden, geostatic_k0, ramped)");
+  }
+}
+
+void read_artificial_viscosity(JsonReader& r, sph::Settings& s) {
+  auto viscosity = r.object("artificial_viscosity", Need::optional);
+  if (!viscosity) return;
+  s.viscosity.alpha = viscosity->number_or("alpha", s.viscosity.alpha, Bounds::non_negative());
+  s.viscosity.beta = viscosity->number_or("beta", s.viscosity.beta, Bounds::non_negative());
+  viscosity->finish();
+}
+
+void read_artificial_stress(JsonReader& r, sph::Settings& s) {
+  auto stress = r.object("artificial_stress", Need::optional);
+  if (!stress) return;
+  if (const auto mode = stress->string("mode", Need::optional)) {
+    if (*mode == "auto") {
+      s.artificial_stress.mode = sph::ArtificialStressMode::automatic;
+    } else if (*mode == "on") {
+      s.artificial_stress.mode = sph::ArtificialStressMode::on;
+    } else if (*mode == "off") {
+      s.artificial_stress.mode = sph::ArtificialStressMode::off;
     } else {
-      diagnostics.error(r.path_of("kernel"), "unknown kernel \"" + *kernel + "\" (allowed: cubic_spline, wendland_c2)");
+      r.diagnostics().error(stress->path_of("mode"), "unknown mode \"" + *mode + "\" (allowed: auto, on, off)");
     }
   }
-  if (const auto gravity = r.string("gravity", Need::optional)) {
-    if (*gravity == "sudden") {
-      s.gravity_mode = sph::GravityMode::sudden;
-    } else if (*gravity == "geostatic_k0") {
-      s.gravity_mode = sph::GravityMode::geostatic_k0;
-    } else if (*gravity == "ramped") {
-      s.gravity_mode = sph::GravityMode::ramped;
-    } else {
-      diagnostics.error(r.path_of("gravity"),
-                        "unknown gravity mode \"" + *gravity + "\" (allowed: sudden, geostatic_k0, ramped)");
-    }
-  }
-  const auto ramp = r.number("gravity_ramp_s", Need::optional, Bounds::positive());
-  if (auto viscosity = r.object("artificial_viscosity", Need::optional)) {
-    s.viscosity.alpha = viscosity->number_or("alpha", s.viscosity.alpha, Bounds::non_negative());
-    s.viscosity.beta = viscosity->number_or("beta", s.viscosity.beta, Bounds::non_negative());
-    viscosity->finish();
-  }
-  if (auto stress = r.object("artificial_stress", Need::optional)) {
-    if (const auto mode = stress->string("mode", Need::optional)) {
-      if (*mode == "auto") {
-        s.artificial_stress.mode = sph::ArtificialStressMode::automatic;
-      } else if (*mode == "on") {
-        s.artificial_stress.mode = sph::ArtificialStressMode::on;
-      } else if (*mode == "off") {
-        s.artificial_stress.mode = sph::ArtificialStressMode::off;
-      } else {
-        diagnostics.error(stress->path_of("mode"), "unknown mode \"" + *mode + "\" (allowed: auto, on, off)");
-      }
-    }
-    s.artificial_stress.epsilon = stress->number_or("epsilon", s.artificial_stress.epsilon, Bounds::closed(0.0, 1.0));
-    s.artificial_stress.exponent = stress->number_or("exponent", s.artificial_stress.exponent, Bounds::positive());
-    stress->finish();
-  }
-  const double chi = r.number_or("xsph", 0.0, Bounds::closed(0.0, 1.0));
-  s.xsph.enabled = chi > 0.0;
-  if (chi > 0.0) s.xsph.chi = chi;
+  s.artificial_stress.epsilon = stress->number_or("epsilon", s.artificial_stress.epsilon, Bounds::closed(0.0, 1.0));
+  s.artificial_stress.exponent = stress->number_or("exponent", s.artificial_stress.exponent, Bounds::positive());
+  stress->finish();
+}
+
+// analyses.sph.walls: sides, slip and the layer count (returned when given; checked once the spacing is known).
+std::optional<long> read_section_walls(JsonReader& r, SphAnalysis& a) {
   std::optional<long> wall_layers;
-  if (auto walls = r.object("walls", Need::optional)) {
-    if (auto sides = read_sides(*walls, "sides", a.section_walls)) a.section_walls = *sides;
-    wall_layers = walls->integer("layers", Need::optional, Bounds::closed(1, 50));
-    if (const auto slip = walls->string("slip", Need::optional)) {
-      if (*slip == "no_slip") {
-        s.wall_slip = sph::WallSlip::no_slip;
-      } else if (*slip == "free_slip") {
-        s.wall_slip = sph::WallSlip::free_slip;
-      } else {
-        diagnostics.error(walls->path_of("slip"), "unknown slip \"" + *slip + "\" (allowed: no_slip, free_slip)");
-      }
+  auto walls = r.object("walls", Need::optional);
+  if (!walls) return wall_layers;
+  if (auto sides = read_sides(*walls, "sides", a.section_walls)) a.section_walls = *sides;
+  wall_layers = walls->integer("layers", Need::optional, Bounds::closed(1, 50));
+  if (const auto slip = walls->string("slip", Need::optional)) {
+    if (*slip == "no_slip") {
+      a.settings.wall_slip = sph::WallSlip::no_slip;
+    } else if (*slip == "free_slip") {
+      a.settings.wall_slip = sph::WallSlip::free_slip;
+    } else {
+      r.diagnostics().error(walls->path_of("slip"), "unknown slip \"" + *slip + "\" (allowed: no_slip, free_slip)");
     }
-    walls->finish();
   }
+  walls->finish();
+  return wall_layers;
+}
+
+// Stopping, checkpoint and the limits that refuse a case before it starts.
+void read_run_limits(JsonReader& r, SphAnalysis& a) {
+  sph::Settings& s = a.settings;
   s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, 0.5, true});  // sph::Settings accepts (0, 0.5]
   s.damping = r.number_or("damping_per_s", s.damping, Bounds::non_negative());
   s.checkpoint_interval_wall_s = r.number_or("checkpoint_interval_s", 300.0, Bounds::non_negative());
@@ -179,6 +189,70 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   a.memory_limit_bytes = r.number_or("max_memory_GiB", 16.0, Bounds::positive()) * gibibyte;
   a.max_particles = static_cast<std::size_t>(r.number_or("max_particles", 5.0e6, Bounds::at_least(1.0)));
   a.max_steps = r.number_or("max_steps", 5.0e6, Bounds::at_least(1.0));
+}
+
+// Gravity ramp: only with "ramped"; default 10 % of the simulated time; full gravity must be reached.
+bool resolve_gravity_ramp(JsonReader& r, std::optional<double> ramp, sph::Settings& s) {
+  if (ramp && s.gravity_mode != sph::GravityMode::ramped) {
+    r.diagnostics().error(r.path_of("gravity_ramp_s"), "is only used with \"gravity\": \"ramped\" (remove it, or set "
+                                                       "gravity to \"ramped\")");
+    return false;
+  }
+  if (s.gravity_mode == sph::GravityMode::ramped) {
+    s.gravity_ramp_time = ramp.value_or(0.1 * s.end_time);
+    if (s.gravity_ramp_time > s.end_time) {
+      r.diagnostics().error(r.path_of("gravity_ramp_s"),
+                            format_number(s.gravity_ramp_time) + " s is longer than end_time_s = " +
+                                format_number(s.end_time) + " s: full gravity would never be reached (use a ramp of "
+                                "at most end_time_s, e.g. a few times the slope's first shear-mode period)");
+      return false;
+    }
+  }
+  return true;
+}
+
+// Wall thickness: the kernel support 2h must be covered, or soil beside a wall misses part of its neighbourhood.
+bool resolve_wall_layers(std::optional<long> wall_layers, SphAnalysis& a, Diagnostics& diagnostics) {
+  const sph::Settings& s = a.settings;
+  const int layers_needed = sph::wall_layers_for(s.particle_spacing, s.smoothing_length());
+  if (!wall_layers) {
+    a.wall_layers = layers_needed;
+    return true;
+  }
+  if (*wall_layers < layers_needed) {
+    diagnostics.error("analyses.sph.walls.layers",
+                      std::to_string(*wall_layers) + " wall layer" + (*wall_layers == 1 ? "" : "s") + " of " +
+                          format_number(s.particle_spacing) + " m do not cover the kernel support 2h = " +
+                          format_number(2.0 * s.smoothing_length()) + " m (h = " + format_number(s.h_over_dx) +
+                          " x particle_spacing_m): at least " + std::to_string(layers_needed) +
+                          " layers are needed, or soil particles next to the wall miss part of their "
+                          "neighbourhood (too little wall pressure) and can leak through it");
+    return false;
+  }
+  a.wall_layers = static_cast<int>(*wall_layers);
+  return true;
+}
+
+}  // namespace
+
+std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagnostics& diagnostics) {
+  JsonReader r(block, "analyses.sph", diagnostics);
+  const std::size_t errors_before = diagnostics.size();
+  SphAnalysis a;
+  sph::Settings& s = a.settings;
+  const auto spacing = r.number("particle_spacing_m", Need::required, Bounds::positive());
+  const auto end_time = r.number("end_time_s", Need::required, Bounds::positive());
+  s.h_over_dx = r.number_or("smoothing_length_ratio", s.h_over_dx, Bounds::closed(1.0, 2.0));
+  read_kernel(r, s);
+  read_gravity_mode(r, s);
+  const auto ramp = r.number("gravity_ramp_s", Need::optional, Bounds::positive());
+  read_artificial_viscosity(r, s);
+  read_artificial_stress(r, s);
+  const double chi = r.number_or("xsph", 0.0, Bounds::closed(0.0, 1.0));
+  s.xsph.enabled = chi > 0.0;
+  if (chi > 0.0) s.xsph.chi = chi;
+  const std::optional<long> wall_layers = read_section_walls(r, a);
+  read_run_limits(r, a);
   const auto output_interval = r.number("output_interval_s", Need::optional, Bounds::positive());
   a.ignored_loads = read_ignored_loads(r);
   r.finish();
@@ -186,39 +260,8 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   s.particle_spacing = *spacing;
   s.end_time = *end_time;
   s.output_interval = output_interval.value_or(*end_time / 20.0);
-  // Gravity ramp: only with "ramped"; default 10 % of the simulated time; full gravity must be reached.
-  if (ramp && s.gravity_mode != sph::GravityMode::ramped) {
-    diagnostics.error(r.path_of("gravity_ramp_s"), "is only used with \"gravity\": \"ramped\" (remove it, or set "
-                                                   "gravity to \"ramped\")");
-    return std::nullopt;
-  }
-  if (s.gravity_mode == sph::GravityMode::ramped) {
-    s.gravity_ramp_time = ramp.value_or(0.1 * *end_time);
-    if (s.gravity_ramp_time > *end_time) {
-      diagnostics.error(r.path_of("gravity_ramp_s"),
-                        format_number(s.gravity_ramp_time) + " s is longer than end_time_s = " +
-                            format_number(*end_time) + " s: full gravity would never be reached (use a ramp of "
-                            "at most end_time_s, e.g. a few times the slope's first shear-mode period)");
-      return std::nullopt;
-    }
-  }
-  // Wall thickness: the kernel support 2h must be covered, or soil beside a wall misses part of its neighbourhood.
-  const int layers_needed = sph::wall_layers_for(s.particle_spacing, s.smoothing_length());
-  if (wall_layers) {
-    if (*wall_layers < layers_needed) {
-      diagnostics.error("analyses.sph.walls.layers",
-                        std::to_string(*wall_layers) + " wall layer" + (*wall_layers == 1 ? "" : "s") + " of " +
-                            format_number(s.particle_spacing) + " m do not cover the kernel support 2h = " +
-                            format_number(2.0 * s.smoothing_length()) + " m (h = " + format_number(s.h_over_dx) +
-                            " x particle_spacing_m): at least " + std::to_string(layers_needed) +
-                            " layers are needed, or soil particles next to the wall miss part of their "
-                            "neighbourhood (too little wall pressure) and can leak through it");
-      return std::nullopt;
-    }
-    a.wall_layers = static_cast<int>(*wall_layers);
-  } else {
-    a.wall_layers = layers_needed;
-  }
+  if (!resolve_gravity_ramp(r, ramp, s)) return std::nullopt;
+  if (!resolve_wall_layers(wall_layers, a, diagnostics)) return std::nullopt;
   s.gravity_x = 0.0;
   s.gravity_y = -standard_gravity;
   return a;
