@@ -11,6 +11,7 @@
 
 #include "slope/evaluator.hpp"
 #include "slope/search.hpp"
+#include "sphslope/units.hpp"
 
 namespace {
 
@@ -19,7 +20,7 @@ using Clock = std::chrono::steady_clock;
 slope::Section griffiths_lane() {
   slope::Section s;
   s.bottom_y = 0.0;
-  s.materials.push_back({"soil", 20e3, 10e3, 20.0 * M_PI / 180.0});
+  s.materials.push_back({"soil", 20e3, 10e3, sphslope::radians(20.0)});
   s.profile_lines.push_back({0, {{0, 20}, {20, 20}, {40, 10}, {60, 10}}});
   return s;
 }

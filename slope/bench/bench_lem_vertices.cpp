@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "slope/search.hpp"
+#include "sphslope/units.hpp"
 
 namespace {
 
@@ -52,7 +53,7 @@ std::vector<slope::Point> griffiths_lane_ground(std::size_t vertices, bool rough
 slope::Section section_with(const std::vector<slope::Point>& ground) {
   slope::Section s;
   s.bottom_y = 0.0;
-  s.materials.push_back({"soil", 20e3, 10e3, 20.0 * M_PI / 180.0});
+  s.materials.push_back({"soil", 20e3, 10e3, sphslope::radians(20.0)});
   s.profile_lines.push_back({0, ground});
   return s;
 }

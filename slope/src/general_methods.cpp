@@ -21,6 +21,7 @@
 #include <mutex>
 
 #include "method_kernels.hpp"
+#include "sphslope/units.hpp"
 
 namespace slope::detail {
 
@@ -122,7 +123,7 @@ void fill_interface_function(const SliceTable& t, bool half_sine, std::vector<do
     const int i = t.direction > 0 ? k : n - 1 - k;
     const double x_boundary = t.direction > 0 ? t.x_right[i] : t.x_left[i];  // downslope boundary
     const double fraction = (x_boundary - x_entry) / span;
-    f[k] = std::sin(M_PI * fraction);
+    f[k] = std::sin(sphslope::pi * fraction);
   }
   if (half_sine) f[n - 1] = 0.0;  // the exit
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "method_table.hpp"
+#include "sphslope/units.hpp"
 
 namespace slope {
 
@@ -36,7 +37,7 @@ std::string describe_failure(const Outcome& outcome, const SliceTable& table) {
   auto slice_text = [&](int i) {
     if (i < 0 || i >= table.count) return;
     out << " at slice " << i + 1 << " of " << table.count << " (x = " << table.base_x[i]
-        << " m, base angle " << std::atan2(table.sin_a[i], table.cos_a[i]) * 180.0 / M_PI << " deg)";
+        << " m, base angle " << sphslope::degrees(std::atan2(table.sin_a[i], table.cos_a[i])) << " deg)";
   };
   switch (outcome.failure) {
     case Failure::none: return {};

@@ -7,6 +7,7 @@
 //  - grid-and-radius (when a centre grid is given): every grid centre with radii from the range, or automatic radii
 //    from the one that just reaches the ground to the one tangent to the rigid base.
 #include "search_internal.hpp"
+#include "sphslope/units.hpp"
 
 namespace slope::detail {
 
@@ -157,7 +158,8 @@ std::vector<Circle> entry_exit_circles(const PreparedSection& ps, const SearchLi
           if (auto c = circle_through(p, q, radius)) circles.push_back(*c);
       } else {
         for (double deg : half_angles_deg) {
-          const double radius = 0.5 * length / std::sin(deg * M_PI / 180.0);
+          // deg * pi / 180, not radians(deg): this order of operations gives the pinned circles.
+          const double radius = 0.5 * length / std::sin(deg * sphslope::pi / 180.0);
           if (auto c = circle_through(p, q, radius)) circles.push_back(*c);
         }
         circles_tangent_to_base(p, q, ps.bottom_y, circles);

@@ -17,6 +17,7 @@
 #include "coupling/compare/sliding_mass.hpp"
 #include "sph/engine/fill.hpp"
 #include "sph/engine/kernel.hpp"
+#include "sphslope/units.hpp"
 
 namespace coupling {
 
@@ -29,8 +30,8 @@ sph::Material to_sph_material(const SoilMaterial& m) {
   out.youngs_modulus = m.youngs_modulus.value_or(0.0);
   out.poisson_ratio = m.poisson_ratio.value_or(0.0);
   out.cohesion = m.cohesion;
-  out.friction_angle_deg = m.friction_angle * 180.0 / M_PI;
-  out.dilatancy_angle_deg = m.dilatancy_angle.value_or(0.0) * 180.0 / M_PI;
+  out.friction_angle_deg = sphslope::degrees(m.friction_angle);
+  out.dilatancy_angle_deg = sphslope::degrees(m.dilatancy_angle.value_or(0.0));
   out.plastic = !m.elastic;
   return out;
 }

@@ -11,6 +11,7 @@
 #include "coupling/analyses/sph_model.hpp"
 #include "coupling/analyses/sph_stage.hpp"
 #include "sph/soil/run.hpp"
+#include "sphslope/units.hpp"
 
 namespace coupling {
 
@@ -19,7 +20,8 @@ namespace {
 constexpr double min_factor = srm_min_factor, max_factor = srm_max_factor, expansion = 1.5;
 
 double reduce_angle_deg(double angle_deg, double factor) {
-  return std::atan(std::tan(angle_deg * M_PI / 180.0) / factor) * 180.0 / M_PI;
+  // angle_deg * pi / 180, not radians(angle_deg): this order of operations gives the pinned trials.
+  return sphslope::degrees(std::atan(std::tan(angle_deg * sphslope::pi / 180.0) / factor));
 }
 
 // Slope height: highest minus lowest point of the ground line.
@@ -124,7 +126,7 @@ SrmPlan plan_trials(const SceneSection& scene_section, const SrmOptions& options
   plan.height = slope_height(scene_section.section);
   const double vs = slowest_shear_wave(scene_section);
   plan.period = 4.0 * plan.height / vs;  // first shear mode of a layer of the slope height
-  const double omega = 2.0 * M_PI / plan.period;
+  const double omega = 2.0 * sphslope::pi / plan.period;
 
   plan.damping = options.damping_per_s.value_or(omega);
   plan.max_time = options.max_time_s.value_or(std::max(2.0, 40.0 * plan.period));

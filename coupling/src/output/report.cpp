@@ -1,7 +1,7 @@
 #include "coupling/output/report.hpp"
 
 #include <cmath>
-#include <numbers>
+#include "sphslope/units.hpp"
 
 #ifndef SPHSLOPE_VERSION
 #define SPHSLOPE_VERSION "0.1.0"
@@ -12,7 +12,6 @@ namespace coupling {
 namespace {
 
 constexpr double to_kilo = 1e-3;  // N -> kN, Pa -> kPa
-constexpr double to_degrees = 180.0 / std::numbers::pi;
 
 nlohmann::json point(const slope::Point& p) { return nlohmann::json::array({p.x, p.y}); }
 
@@ -25,11 +24,11 @@ nlohmann::json slice_report(const slope::Section& section, const slope::Slice& s
   s["x_left_m"] = slice.x_left;
   s["x_right_m"] = slice.x_right;
   s["width_m"] = slice.width;
-  s["base_angle_deg"] = slice.base_angle * to_degrees;
+  s["base_angle_deg"] = sphslope::degrees(slice.base_angle);
   s["base_length_m"] = slice.base_length;
   s["material"] = slice.base_material < section.materials.size() ? section.materials[slice.base_material].name : "";
   s["cohesion_kPa"] = slice.cohesion * to_kilo;
-  s["friction_angle_deg"] = std::atan(slice.tan_friction) * to_degrees;
+  s["friction_angle_deg"] = sphslope::degrees(std::atan(slice.tan_friction));
   s["weight_kN_m"] = slice.weight * to_kilo;
   s["surcharge_kN_m"] = slice.surcharge_load * to_kilo;
   s["ponded_water_kN_m"] = slice.ponded_water_load * to_kilo;

@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numbers>
 
 #include "scene_internal.hpp"
+#include "sphslope/units.hpp"
 
 namespace coupling {
 
@@ -12,7 +12,6 @@ namespace {
 
 constexpr double kilo = 1e3;
 constexpr double mega = 1e6;
-constexpr double degree = std::numbers::pi / 180.0;
 
 using Polyline = std::vector<slope::Point>;
 
@@ -301,8 +300,8 @@ std::optional<SoilMaterial> read_material(JsonReader& m) {
   material.name = *name;
   material.unit_weight = *unit_weight * kilo;
   material.cohesion = *cohesion * kilo;
-  material.friction_angle = *friction * degree;
-  if (dilatancy) material.dilatancy_angle = *dilatancy * degree;
+  material.friction_angle = sphslope::radians(*friction);
+  if (dilatancy) material.dilatancy_angle = sphslope::radians(*dilatancy);
   if (youngs) material.youngs_modulus = *youngs * mega;
   material.poisson_ratio = poisson;
   material.elastic = model && *model == "elastic";

@@ -26,8 +26,8 @@ namespace coupling {
 namespace {
 
 std::optional<WallSides> read_sides(JsonReader& reader, std::string_view key, WallSides fallback) {
-  const nlohmann::json* sides = reader.array(key, Need::optional, 0, limits::name_list,
-                                             "an array of \"left\", \"right\", \"bottom\"");
+  const nlohmann::json* sides =
+      reader.array(key, Need::optional, 0, limits::name_list, "an array of \"left\", \"right\", \"bottom\"");
   if (!sides) return reader.has(key) ? std::nullopt : std::optional<WallSides>(fallback);
   WallSides out{false, false, false};
   bool ok = true;
@@ -85,7 +85,8 @@ void check_unmodelled_loads(const Scene& scene, const SphAnalysis& analysis, Dia
     diagnostics.error(load.path, "the SPH model does not carry " + load.name +
                                      " yet: SPH (and strength reduction and the comparison) would analyse the "
                                      "slope without it, unlike limit equilibrium. Remove analyses.sph, or add \"" +
-                                     load.name + "\" to analyses.sph.ignore_loads to run SPH without it (the "
+                                     load.name +
+                                     "\" to analyses.sph.ignore_loads to run SPH without it (the "
                                      "report then warns)");
   }
 }
@@ -112,7 +113,8 @@ void read_kernel(JsonReader& r, sph::Settings& s) {
   } else if (*kernel == "wendland_c2") {
     s.kernel = sph::KernelType::wendland_c2;
   } else {
-    r.diagnostics().error(r.path_of("kernel"), "unknown kernel \"" + *kernel + "\" (allowed: cubic_spline, wendland_c2)");
+    r.diagnostics().error(r.path_of("kernel"),
+                          "unknown kernel \"" + *kernel + "\" (allowed: cubic_spline, wendland_c2)");
   }
 }
 
@@ -183,7 +185,8 @@ void read_run_limits(JsonReader& r, SphAnalysis& a) {
   sph::Settings& s = a.settings;
   s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, 0.5, true});  // sph::Settings accepts (0, 0.5]
   s.damping = r.number_or("damping_per_s", s.damping, Bounds::non_negative());
-  s.checkpoint_interval_wall_s = r.number_or("checkpoint_interval_s", 300.0, Bounds::non_negative());
+  s.checkpoint_interval_wall_s =
+      r.number_or("checkpoint_interval_s", s.checkpoint_interval_wall_s, Bounds::non_negative());
   a.quasi_static_speed = r.number_or("stop_below_speed_m_s", 0.0, Bounds::non_negative());
   a.quasi_static_min_time = r.number_or("stop_below_speed_after_s", 0.0, Bounds::non_negative());
   a.memory_limit_bytes = r.number_or("max_memory_GiB", 16.0, Bounds::positive()) * gibibyte;
@@ -194,16 +197,18 @@ void read_run_limits(JsonReader& r, SphAnalysis& a) {
 // Gravity ramp: only with "ramped"; default 10 % of the simulated time; full gravity must be reached.
 bool resolve_gravity_ramp(JsonReader& r, std::optional<double> ramp, sph::Settings& s) {
   if (ramp && s.gravity_mode != sph::GravityMode::ramped) {
-    r.diagnostics().error(r.path_of("gravity_ramp_s"), "is only used with \"gravity\": \"ramped\" (remove it, or set "
-                                                       "gravity to \"ramped\")");
+    r.diagnostics().error(r.path_of("gravity_ramp_s"),
+                          "is only used with \"gravity\": \"ramped\" (remove it, or set "
+                          "gravity to \"ramped\")");
     return false;
   }
   if (s.gravity_mode == sph::GravityMode::ramped) {
     s.gravity_ramp_time = ramp.value_or(0.1 * s.end_time);
     if (s.gravity_ramp_time > s.end_time) {
       r.diagnostics().error(r.path_of("gravity_ramp_s"),
-                            format_number(s.gravity_ramp_time) + " s is longer than end_time_s = " +
-                                format_number(s.end_time) + " s: full gravity would never be reached (use a ramp of "
+                            format_number(s.gravity_ramp_time) +
+                                " s is longer than end_time_s = " + format_number(s.end_time) +
+                                " s: full gravity would never be reached (use a ramp of "
                                 "at most end_time_s, e.g. a few times the slope's first shear-mode period)");
       return false;
     }
@@ -242,7 +247,8 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   sph::Settings& s = a.settings;
   const auto spacing = r.number("particle_spacing_m", Need::required, Bounds::positive());
   const auto end_time = r.number("end_time_s", Need::required, Bounds::positive());
-  s.h_over_dx = r.number_or("smoothing_length_ratio", s.h_over_dx, Bounds::closed(1.0, 2.0));
+  s.h_over_dx = r.number_or("smoothing_length_ratio", s.h_over_dx,
+                            Bounds::closed(sph::EngineSettings::h_over_dx_min, sph::EngineSettings::h_over_dx_max));
   read_kernel(r, s);
   read_gravity_mode(r, s);
   const auto ramp = r.number("gravity_ramp_s", Need::optional, Bounds::positive());
@@ -279,8 +285,8 @@ std::optional<std::vector<ParticleBody>> read_particle_bodies(const nlohmann::js
     JsonReader b(bodies[i], index_path("bodies", i), diagnostics);
     ParticleBody body;
     body.name = b.string("name", Need::optional).value_or("body " + std::to_string(i));
-    if (const nlohmann::json* polygon = b.array("polygon_m", Need::required, 3, limits::polygon_vertices,
-                                                "an array of at least 3 [x, y] points")) {
+    if (const nlohmann::json* polygon =
+            b.array("polygon_m", Need::required, 3, limits::polygon_vertices, "an array of at least 3 [x, y] points")) {
       for (std::size_t k = 0; k < polygon->size(); ++k)
         if (auto p = read_pair((*polygon)[k], index_path(b.path_of("polygon_m"), k), diagnostics))
           body.polygon.push_back({p->first, p->second});
@@ -301,8 +307,8 @@ std::optional<std::vector<ParticleBody>> read_particle_bodies(const nlohmann::js
         if (!material->youngs_modulus) missing = "youngs_modulus_MPa";
         if (!material->poisson_ratio) missing += std::string(missing.empty() ? "" : " and ") + "poisson_ratio";
         if (!missing.empty())
-          diagnostics.error(m->path(), "material \"" + material->name + "\" lacks " + missing +
-                                           ", which the SPH soil model needs");
+          diagnostics.error(
+              m->path(), "material \"" + material->name + "\" lacks " + missing + ", which the SPH soil model needs");
       }
     }
     b.finish();
@@ -324,9 +330,8 @@ std::optional<WallBox> read_wall_box(const nlohmann::json& walls, Diagnostics& d
   const auto sides = read_sides(w, "sides", WallSides{});
   w.finish();
   if (x_range && x_range->second <= x_range->first)
-    diagnostics.error(w.path_of("x_range_m"), "x_max must be greater than x_min (got " +
-                                                  format_number(x_range->first) + ", " +
-                                                  format_number(x_range->second) + ")");
+    diagnostics.error(w.path_of("x_range_m"), "x_max must be greater than x_min (got " + format_number(x_range->first) +
+                                                  ", " + format_number(x_range->second) + ")");
   if (!x_range || !bottom || !height || !sides || diagnostics.size() != errors_before) return std::nullopt;
   box = {x_range->first, x_range->second, *bottom, *height, *sides};
   return box;
@@ -396,8 +401,9 @@ void read_sph_scene(const SphBlocks& blocks, Scene& scene, Diagnostics& diagnost
   if (blocks.bodies) {
     read_particle_scene(blocks, analysis, scene, diagnostics);
   } else if (blocks.walls) {
-    diagnostics.error("walls", "walls belong to particle scenes with \"bodies\"; for a slope section set "
-                               "analyses.sph.walls.sides instead");
+    diagnostics.error("walls",
+                      "walls belong to particle scenes with \"bodies\"; for a slope section set "
+                      "analyses.sph.walls.sides instead");
   }
   if (analysis) check_unmodelled_loads(scene, *analysis, diagnostics);
   if (analysis && scene.section)

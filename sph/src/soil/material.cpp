@@ -1,6 +1,7 @@
 #include "sph/soil/material.hpp"
 
 #include <stdexcept>
+#include "sphslope/units.hpp"
 
 namespace sph {
 
@@ -30,15 +31,14 @@ void Material::validate() const {
 MaterialConstants MaterialConstants::from(const Material& m) {
   m.validate();
   MaterialConstants c;
-  constexpr double deg = 3.14159265358979323846 / 180.0;
   c.density = m.density;
   c.bulk_modulus = m.youngs_modulus / (3.0 * (1.0 - 2.0 * m.poisson_ratio));
   c.shear_modulus = m.youngs_modulus / (2.0 * (1.0 + m.poisson_ratio));
   c.lame_lambda = c.bulk_modulus - 2.0 * c.shear_modulus / 3.0;
   c.plastic = m.plastic;
   if (m.plastic) {
-    const double tphi = std::tan(m.friction_angle_deg * deg);
-    const double tpsi = std::tan(m.dilatancy_angle_deg * deg);
+    const double tphi = std::tan(sphslope::radians(m.friction_angle_deg));
+    const double tpsi = std::tan(sphslope::radians(m.dilatancy_angle_deg));
     c.alpha_phi = tphi / std::sqrt(9.0 + 12.0 * tphi * tphi);
     c.k_c = 3.0 * m.cohesion / std::sqrt(9.0 + 12.0 * tphi * tphi);
     c.alpha_psi = tpsi / std::sqrt(9.0 + 12.0 * tpsi * tpsi);

@@ -18,29 +18,16 @@ bool finite_positive(double v) { return std::isfinite(v) && v > 0; }
 }  // namespace
 
 void Settings::validate() const {
-  require(finite_positive(particle_spacing), "settings.particle_spacing must be > 0 m (the lattice spacing dx)");
-  require(finite_positive(h_over_dx) && h_over_dx >= 0.8 && h_over_dx <= 3.0,
-          "settings.h_over_dx must lie in [0.8, 3] (typical 1.2-1.5), got " + std::to_string(h_over_dx));
+  validate_engine();
   require(std::isfinite(viscosity.alpha) && viscosity.alpha >= 0, "settings.viscosity.alpha must be >= 0");
   require(std::isfinite(viscosity.beta) && viscosity.beta >= 0, "settings.viscosity.beta must be >= 0");
   require(finite_positive(viscosity.eta_factor), "settings.viscosity.eta_factor must be > 0 (typical 0.01)");
-  require(std::isfinite(artificial_stress.epsilon) && artificial_stress.epsilon >= 0 &&
-              artificial_stress.epsilon <= 1,
+  require(std::isfinite(artificial_stress.epsilon) && artificial_stress.epsilon >= 0 && artificial_stress.epsilon <= 1,
           "settings.artificial_stress.epsilon must lie in [0, 1] (typical 0.3-0.5)");
-  require(finite_positive(artificial_stress.exponent), "settings.artificial_stress.exponent must be > 0 (typical 2.55-4)");
+  require(finite_positive(artificial_stress.exponent),
+          "settings.artificial_stress.exponent must be > 0 (typical 2.55-4)");
   require(std::isfinite(xsph.chi) && xsph.chi >= 0 && xsph.chi <= 1, "settings.xsph.chi must lie in [0, 1]");
-  require(std::isfinite(gravity_x) && std::isfinite(gravity_y), "settings.gravity must be finite");
-  if (gravity_mode == GravityMode::ramped)
-    require(finite_positive(gravity_ramp_time), "settings.gravity_ramp_time must be > 0 s when gravity is ramped");
   require(std::isfinite(damping) && damping >= 0, "settings.damping must be >= 0 1/s");
-  require(finite_positive(cfl) && cfl <= 0.5, "settings.cfl must lie in (0, 0.5] (typical 0.1-0.2)");
-  require(finite_positive(acceleration_safety) && acceleration_safety <= 0.5,
-          "settings.acceleration_safety must lie in (0, 0.5]");
-  require(std::isfinite(end_time) && end_time >= 0, "settings.end_time must be >= 0 s");
-  require(std::isfinite(output_interval), "settings.output_interval must be finite");
-  require(std::isfinite(checkpoint_interval_wall_s), "settings.checkpoint_interval_wall_s must be finite");
-  require(finite_positive(blow_up_speed_factor), "settings.blow_up_speed_factor must be > 0");
-  require(finite_positive(blow_up_energy_factor), "settings.blow_up_energy_factor must be > 0");
 }
 
 void Model::validate() const {
@@ -57,19 +44,14 @@ void Model::validate() const {
   for (std::size_t i = 0; i < n; ++i) {
     if (p.material[i] >= materials.size())
       throw std::invalid_argument("model: particle " + std::to_string(p.id[i]) + " has material " +
-                                  std::to_string(p.material[i]) + " but only " +
-                                  std::to_string(materials.size()) + " materials exist");
-    if (!finite_positive(p.mass[i]) || !finite_positive(p.rho[i]) || !std::isfinite(p.x[i]) ||
-        !std::isfinite(p.y[i]))
+                                  std::to_string(p.material[i]) + " but only " + std::to_string(materials.size()) +
+                                  " materials exist");
+    if (!finite_positive(p.mass[i]) || !finite_positive(p.rho[i]) || !std::isfinite(p.x[i]) || !std::isfinite(p.y[i]))
       throw std::invalid_argument("model: particle " + std::to_string(p.id[i]) +
                                   " has a non-positive mass/density or a non-finite position");
-    if (p.kind[i] > 1) throw std::invalid_argument("model: particle " + std::to_string(p.id[i]) + " has an unknown kind");
+    if (p.kind[i] > 1)
+      throw std::invalid_argument("model: particle " + std::to_string(p.id[i]) + " has an unknown kind");
   }
-}
-
-double Settings::gravity_factor(double t) const {
-  if (gravity_mode != GravityMode::ramped) return 1.0;
-  return t >= gravity_ramp_time ? 1.0 : std::max(t, 0.0) / gravity_ramp_time;
 }
 
 bool Model::uses_artificial_stress() const {
@@ -100,10 +82,10 @@ std::size_t estimate_memory_bytes(std::size_t n) {
   SoilStep::register_workspace(prototype.particles);
   const auto workspace_doubles = static_cast<std::size_t>(prototype.particles.double_array_count()) - state_doubles;
   const std::size_t per_particle_state = state_doubles * sizeof(double) + 4 + 2 + 1;
-  const std::size_t state = 2 * n * per_particle_state;                    // particles + reorder back buffers
+  const std::size_t state = 2 * n * per_particle_state;  // particles + reorder back buffers
   const std::size_t workspace = n * (2 * workspace_doubles + 11) * sizeof(double)  // half-step values (+ back), scratch
-                                + n * 2 * sizeof(std::uint32_t);            // index lists, moved list
-  const std::size_t output = n * (per_particle_state + 200);               // checkpoint buffer, VTU buffer
+                                + n * 2 * sizeof(std::uint32_t);  // index lists, moved list
+  const std::size_t output = n * (per_particle_state + 200);  // checkpoint buffer, VTU buffer
   return state + workspace + CellList::estimate_bytes(n) + output + (std::size_t{1} << 20);
 }
 

@@ -3,9 +3,11 @@
 #include <optional>
 #include <string>
 
+#include "sphslope/units.hpp"
+
 namespace coupling {
 
-inline constexpr double standard_gravity = 9.81;  // m/s^2, as in the source thesis; density = unit weight / g
+using sphslope::standard_gravity;  // density = unit weight / g
 
 // A soil of the section, SI units. Section::materials holds the strength and weight for limit equilibrium;
 // this keeps everything the scene said, including what only SPH needs.
