@@ -6,6 +6,7 @@
 // arrays with order() (new position k holds old particle order()[k]); afterwards the neighbours of a
 // sorted particle i lie in three contiguous index ranges (the rows cy-1, cy, cy+1, columns cx-1..cx+1).
 // Work arrays grow geometrically and are reused, so a steady run does not allocate.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -44,6 +45,25 @@ class CellList {
     const int nr = candidate_ranges(i, r);
     for (int k = 0; k < nr; ++k)
       for (std::uint32_t j = r[k].begin; j < r[k].end; ++j) f(j);
+  }
+
+  // The (at most 3) ranges of sorted indices of this list that can hold neighbours of the point (x, y), which need
+  // not belong to the list (a particle of another set: soil next to water). None when the point lies more than one
+  // cell outside the list's grid.
+  int candidate_ranges_at(double x, double y, IndexRange out[3]) const {
+    const double fx = std::floor((x - x_min_) * inv_cell_), fy = std::floor((y - y_min_) * inv_cell_);
+    if (!(fx >= -1.0 && fx <= static_cast<double>(nx_) && fy >= -1.0 && fy <= static_cast<double>(ny_))) return 0;
+    const auto cx = static_cast<std::int64_t>(fx), cy = static_cast<std::int64_t>(fy);
+    const std::int64_t x_lo = cx > 0 ? cx - 1 : 0, x_hi = cx + 1 < nx_ ? cx + 1 : nx_ - 1;
+    const std::int64_t y_lo = cy > 0 ? cy - 1 : 0, y_hi = cy + 1 < ny_ ? cy + 1 : ny_ - 1;
+    if (x_lo > x_hi) return 0;
+    int k = 0;
+    for (std::int64_t yy = y_lo; yy <= y_hi; ++yy) {
+      out[k].begin = cell_start_[static_cast<std::size_t>(yy * nx_ + x_lo)];
+      out[k].end = cell_start_[static_cast<std::size_t>(yy * nx_ + x_hi + 1)];
+      ++k;
+    }
+    return k;
   }
 
   std::int64_t cells_x() const { return nx_; }
