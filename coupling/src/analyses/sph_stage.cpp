@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <ostream>
 
+#include "coupling/output/sph_report.hpp"
 #include "coupling/scene/json_reader.hpp"
 #include "coupling/analyses/sph_model.hpp"
 #include "sph/soil/checkpoint.hpp"
@@ -38,13 +39,9 @@ std::string duration_text(double seconds) {
   return buffer;
 }
 
-const char* kernel_key(sph::KernelType kernel) {
-  return kernel == sph::KernelType::cubic_spline ? "cubic_spline" : "wendland_c2";
-}
-
 // Extent of the soil before and after, for particle scenes (column collapse): the front is the farthest particle
 // still in contact with the deposit (a gap wider than 1.5 spacings separates stray particles).
-nlohmann::json deposit_report(const ParticleSnapshot& p) {
+SphDeposit deposit_of(const ParticleSnapshot& p) {
   auto front = [&](const std::vector<double>& xs) {
     std::vector<double> sorted(xs);
     std::sort(sorted.begin(), sorted.end(), std::greater<>());
@@ -54,16 +51,12 @@ nlohmann::json deposit_report(const ParticleSnapshot& p) {
   };
   const double x_min0 = *std::min_element(p.x0.begin(), p.x0.end());
   const double y_min0 = *std::min_element(p.y0.begin(), p.y0.end());
-  const double length0 = front(p.x0) - x_min0 + p.spacing, height0 = *std::max_element(p.y0.begin(), p.y0.end()) - y_min0 + p.spacing;
-  const double length = front(p.x) - x_min0 + p.spacing, height = *std::max_element(p.y.begin(), p.y.end()) - y_min0 + p.spacing;
-  return {{"initial_length_m", length0},
-          {"initial_height_m", height0},
-          {"final_length_m", length},
-          {"final_height_m", height},
-          {"runout_ratio", (length - length0) / length0},
-          {"final_height_ratio", height / height0},
-          {"note", "lengths from the leftmost initial particle edge to the front of the deposit (stray particles "
-                   "beyond a 1.5-spacing gap excluded); heights from the lowest initial particle edge to the top"}};
+  SphDeposit d;
+  d.initial_length_m = front(p.x0) - x_min0 + p.spacing;
+  d.initial_height_m = *std::max_element(p.y0.begin(), p.y0.end()) - y_min0 + p.spacing;
+  d.final_length_m = front(p.x) - x_min0 + p.spacing;
+  d.final_height_m = *std::max_element(p.y.begin(), p.y.end()) - y_min0 + p.spacing;
+  return d;
 }
 
 }  // namespace
@@ -86,37 +79,32 @@ void refuse_before_start(const Scene& scene, const SphAnalysis& analysis) {
   }
 }
 
-// The model's size, kernel, wave speed, time step and gravity in the report, and the plan on the log.
-void report_model(const sph::Model& model, const SphSize& size, const SphAnalysis& analysis, nlohmann::json& report,
-                  std::ostream* log) {
-  double fastest_wave = 0.0;
-  for (const auto& m : model.materials) fastest_wave = std::max(fastest_wave, sph::MaterialConstants::from(m).sound_speed);
-  const double h = model.settings.smoothing_length();
-  const double time_step = sph::time_step_estimate(model);
-  const double planned_steps = model.settings.end_time / time_step;
-
-  report["particles"] = model.particles.size();
-  report["soil_particles"] = size.soil_particles;
-  report["wall_particles"] = size.wall_particles;
-  report["particle_spacing_m"] = model.settings.particle_spacing;
-  report["smoothing_length_m"] = h;
-  report["kernel"] = kernel_key(model.settings.kernel);
-  report["p_wave_speed_m_s"] = fastest_wave;
-  report["time_step_estimate_s"] = time_step;
-  report["planned_steps"] = std::llround(planned_steps);
-  report["gravity"] = model.settings.gravity_mode == sph::GravityMode::sudden         ? "sudden"
-                      : model.settings.gravity_mode == sph::GravityMode::geostatic_k0 ? "geostatic_k0"
-                                                                                      : "ramped";
-  if (model.settings.gravity_mode == sph::GravityMode::ramped) report["gravity_ramp_s"] = model.settings.gravity_ramp_time;
-  report["wall_layers"] = analysis.wall_layers;
-  report["memory_estimate_MiB"] = static_cast<double>(size.memory_bytes) / (1024.0 * 1024.0);
-
+// The model's size, kernel, wave speed, time step and gravity, and the plan on the log.
+SphModelFacts model_facts(const sph::Model& model, const SphSize& size, const SphAnalysis& analysis,
+                          std::ostream* log) {
+  SphModelFacts f;
+  for (const auto& m : model.materials)
+    f.p_wave_speed_m_s = std::max(f.p_wave_speed_m_s, sph::MaterialConstants::from(m).sound_speed);
+  f.smoothing_length_m = model.settings.smoothing_length();
+  f.time_step_estimate_s = sph::time_step_estimate(model);
+  const double planned_steps = model.settings.end_time / f.time_step_estimate_s;
+  f.planned_steps = std::llround(planned_steps);
+  f.particles = model.particles.size();
+  f.soil_particles = size.soil_particles;
+  f.wall_particles = size.wall_particles;
+  f.particle_spacing_m = model.settings.particle_spacing;
+  f.kernel = model.settings.kernel;
+  f.gravity = model.settings.gravity_mode;
+  f.gravity_ramp_s = model.settings.gravity_ramp_time;
+  f.wall_layers = analysis.wall_layers;
+  f.memory_estimate_MiB = static_cast<double>(size.memory_bytes) / (1024.0 * 1024.0);
   if (log) {
     *log << "sph: " << size.soil_particles << " soil + " << size.wall_particles << " wall particles, dx = "
-         << model.settings.particle_spacing << " m, h = " << h << " m, P-wave speed " << fastest_wave
-         << " m/s, time step about " << time_step << " s: about " << std::llround(planned_steps) << " steps for "
-         << model.settings.end_time << " s\n";
+         << model.settings.particle_spacing << " m, h = " << f.smoothing_length_m << " m, P-wave speed "
+         << f.p_wave_speed_m_s << " m/s, time step about " << f.time_step_estimate_s << " s: about "
+         << f.planned_steps << " steps for " << model.settings.end_time << " s\n";
   }
+  return f;
 }
 
 // --resume: the model continues from the run folder's checkpoint.
@@ -156,58 +144,38 @@ sph::RunCallbacks run_callbacks(std::ostream* log) {
   return callbacks;
 }
 
-void report_summary(const sph::RunSummary& summary, nlohmann::json& report) {
-  report["steps"] = summary.total_steps;
-  report["steps_this_session"] = summary.steps;
-  report["simulated_time_s"] = summary.simulated_time;
-  report["seconds"] = summary.wall_seconds;
-  report["particle_steps_per_second"] = summary.particle_steps_per_second;
-  report["stopped_because"] = summary.stopped_because;
-  report["frames"] = summary.frames_written;
-}
-
-// Final energies and the energy balance; returns the warnings of the run (loads left out, energy created).
-nlohmann::json report_energies(const Scene& scene, const sph::Model& model, const sph::RunSummary& summary,
-                               nlohmann::json& report) {
-  const bool energies_finite = std::isfinite(summary.kinetic_energy) && std::isfinite(summary.potential_energy) &&
-                               std::isfinite(summary.plastic_dissipation);
-  if (energies_finite) {
-    report["final_energy_J_m"] = {{"kinetic", summary.kinetic_energy},
-                                  {"potential", summary.potential_energy},
-                                  {"plastic_dissipation", summary.plastic_dissipation}};
-  } else {
-    report["final_energy_J_m"] = nullptr;  // diverged state (blow-up): see "error"
-  }
+// Final energies and the energy balance, and the warnings of the run (loads left out, energy created).
+void check_energies(const Scene& scene, const sph::Model& model, SphStageResult& result) {
+  const sph::RunSummary& summary = result.summary;
+  result.energies_finite = std::isfinite(summary.kinetic_energy) && std::isfinite(summary.potential_energy) &&
+                           std::isfinite(summary.plastic_dissipation);
   // Energy balance: kinetic energy + plastic work cannot exceed the potential energy released (elastic energy and
   // viscous losses are >= 0; with ramped gravity the work of gravity is smaller still). More means the scheme
   // created energy. Not applicable with a K0 initial stress, whose stored elastic energy is released as well.
   const double released = model.state.initial_potential_energy - summary.potential_energy;
-  nlohmann::json warnings = nlohmann::json::array();
   for (const SectionLoad& load : loads_sph_leaves_out(scene))  // only those the user listed get this far
-    warnings.push_back(load.path + " is not carried by the SPH model (analyses.sph.ignore_loads): this SPH result "
-                       "is for the slope without " + load.name + ", unlike the limit-equilibrium result");
-  if (energies_finite && released > 0.0) {
-    const double ratio = (summary.kinetic_energy + summary.plastic_dissipation) / released;
-    report["energy_balance"] = {{"released_potential_J_m", released},
-                                {"kinetic_plus_plastic_J_m", summary.kinetic_energy + summary.plastic_dissipation},
-                                {"ratio", ratio}};
+    result.warnings.push_back(load.path + " is not carried by the SPH model (analyses.sph.ignore_loads): this SPH "
+                              "result is for the slope without " + load.name + ", unlike the limit-equilibrium result");
+  if (result.energies_finite && released > 0.0) {
+    const double work = summary.kinetic_energy + summary.plastic_dissipation;
+    const double ratio = work / released;
+    result.energy_balance = SphEnergyBalance{released, work, ratio};
     if (ratio > 1.05 && model.settings.gravity_mode != sph::GravityMode::geostatic_k0)
-      warnings.push_back("kinetic energy + plastic work = " + format_number(ratio) +
-                         " x the potential energy released: the scheme created energy (time step too large for the "
-                         "material, artificial viscosity too low?); treat the result as unreliable");
+      result.warnings.push_back("kinetic energy + plastic work = " + format_number(ratio) +
+                                " x the potential energy released: the scheme created energy (time step too large "
+                                "for the material, artificial viscosity too low?); treat the result as unreliable");
   }
-  return warnings;
 }
 
 // Whether the run reached its end; if not, why (in result.error and the report).
-void judge_run(const sph::RunSummary& summary, SphStageResult& result) {
+void judge_run(SphStageResult& result) {
+  const sph::RunSummary& summary = result.summary;
   result.ok = summary.stopped_because == "end_time" || summary.stopped_because == "quasi_static";
   if (!result.ok) {
     result.error = summary.stopped_because == "interrupted"
                        ? "the SPH run was interrupted at t = " + format_number(summary.simulated_time) +
                              " s; continue it with --resume"
                        : "the SPH run stopped (" + summary.stopped_because + "): " + summary.diagnostic;
-    result.report["error"] = result.error;
   }
 }
 
@@ -230,9 +198,10 @@ ParticleSnapshot soil_snapshot(const sph::Model& model) {
   return snapshot;
 }
 
-// Largest displacement and accumulated plastic strain of any soil particle at the end (null if not finite), and
+// Largest displacement and accumulated plastic strain of any soil particle at the end (none if not finite), and
 // the deposit of a particle scene.
-void report_final_state(const Scene& scene, const ParticleSnapshot& snapshot, nlohmann::json& report) {
+void final_state_extremes(const Scene& scene, SphStageResult& result) {
+  const ParticleSnapshot& snapshot = result.final_state;
   double max_displacement = 0.0, max_plastic_strain = 0.0;
   bool finite = true;
   for (std::size_t i = 0; i < snapshot.x.size(); ++i) {
@@ -241,9 +210,11 @@ void report_final_state(const Scene& scene, const ParticleSnapshot& snapshot, nl
     max_displacement = std::max(max_displacement, u);
     max_plastic_strain = std::max(max_plastic_strain, snapshot.plastic_strain[i]);
   }
-  report["max_displacement_m"] = finite ? nlohmann::json(max_displacement) : nlohmann::json(nullptr);
-  report["max_plastic_strain"] = finite ? nlohmann::json(max_plastic_strain) : nlohmann::json(nullptr);
-  if (scene.bodies && !snapshot.x.empty()) report["deposit"] = deposit_report(snapshot);
+  if (finite) {
+    result.max_displacement_m = max_displacement;
+    result.max_plastic_strain = max_plastic_strain;
+  }
+  if (scene.bodies && !snapshot.x.empty()) result.deposit = deposit_of(snapshot);
 }
 
 }  // namespace
@@ -255,23 +226,19 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   sph::Model model = build_sph_model(scene, &size);
 
   SphStageResult result;
-  nlohmann::json& report = result.report;
-  report_model(model, size, analysis, report, options.log);
+  result.model = model_facts(model, size, analysis, options.log);
   const sph::RunOptions run_options = run_options_of(analysis, options);
   if (options.resume) resume_from_checkpoint(options, model);
 
-  const sph::RunSummary summary = sph::run(model, run_options, run_callbacks(options.log));
-  report_summary(summary, report);
-  const nlohmann::json warnings = report_energies(scene, model, summary, report);
-  report["warnings"] = warnings;
+  result.summary = sph::run(model, run_options, run_callbacks(options.log));
+  check_energies(scene, model, result);
   if (options.log)
-    for (const auto& w : warnings) *options.log << "sph: warning: " << w.get<std::string>() << "\n";
-  if (options.output_dir)
-    report["files"] = {{"frames", "frames.pvd"}, {"energy_history", "energy.csv"}, {"checkpoint", "checkpoint.bin"}};
-  judge_run(summary, result);
+    for (const auto& w : result.warnings) *options.log << "sph: warning: " << w << "\n";
+  result.files_written = options.output_dir.has_value();
+  judge_run(result);
 
   result.final_state = soil_snapshot(model);
-  report_final_state(scene, result.final_state, report);
+  final_state_extremes(scene, result);
   return result;
 }
 
@@ -296,11 +263,11 @@ StageOutcome run_sph_analysis_stage(const Scene& scene, StageContext& context) {
   } catch (const std::exception& error) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back(std::string("sph: ") + error.what());
-    out.report["sph"] = {{"error", outcome.errors.back()}, {"stopped_because", "error"}};
+    out.report["sph"] = sph_error_report(outcome.errors.back());
     out.report["timing_s"]["sph"] = seconds_since(start);
     return outcome;
   }
-  out.report["sph"] = result.report;
+  out.report["sph"] = sph_report(result);
   out.report["timing_s"]["sph"] = seconds_since(start);
   if (!result.ok) {
     outcome.status = ExitStatus::failed;
@@ -308,7 +275,7 @@ StageOutcome run_sph_analysis_stage(const Scene& scene, StageContext& context) {
   }
   // After a blow-up the particle state is the diverged one (non-finite or meaningless values): no comparison or
   // figure is drawn from it (the last good frame is in frames/).
-  if (result.report.value("stopped_because", std::string()) != "blow_up") context.final_state = std::move(result.final_state);
+  if (result.summary.reason != sph::StopReason::blow_up) context.final_state = std::move(result.final_state);
   return outcome;
 }
 

@@ -5,11 +5,12 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
-
-#include <nlohmann/json.hpp>
+#include <vector>
 
 #include "coupling/compare/failure_surface.hpp"
 #include "coupling/scene/scene.hpp"
+#include "sph/engine/run_loop.hpp"
+#include "sph/engine/settings.hpp"
 
 namespace coupling {
 
@@ -19,10 +20,41 @@ struct SphStageOptions {
   std::ostream* log = nullptr;                      // plan, progress and notes (stderr in the program)
 };
 
+// The model as built: what the report states about the run before it starts.
+struct SphModelFacts {
+  std::size_t particles = 0, soil_particles = 0, wall_particles = 0;
+  double particle_spacing_m = 0, smoothing_length_m = 0;
+  sph::KernelType kernel = sph::KernelType::cubic_spline;
+  double p_wave_speed_m_s = 0, time_step_estimate_s = 0;
+  long long planned_steps = 0;
+  sph::GravityMode gravity = sph::GravityMode::sudden;
+  double gravity_ramp_s = 0;  // ramped gravity only
+  int wall_layers = 0;
+  double memory_estimate_MiB = 0;
+};
+
+// Kinetic energy + plastic work against the potential energy released (when some was released).
+struct SphEnergyBalance {
+  double released_potential_J_m = 0, kinetic_plus_plastic_J_m = 0, ratio = 0;
+};
+
+// Extent of a particle scene's soil before and after (column collapse), in metres.
+struct SphDeposit {
+  double initial_length_m = 0, initial_height_m = 0, final_length_m = 0, final_height_m = 0;
+};
+
+// What the SPH stage found; coupling/output/sph_report writes it as the "sph" block of report.json.
 struct SphStageResult {
   bool ok = false;               // the run reached its end (end time or quasi-static state)
   std::string error;             // why not (blow-up diagnostic, interruption, ...)
-  nlohmann::json report;         // the "sph" block of report.json
+  SphModelFacts model;
+  sph::RunSummary summary;
+  bool energies_finite = false;  // false after a blow-up: no final energies
+  std::optional<SphEnergyBalance> energy_balance;
+  std::vector<std::string> warnings;  // loads left out, energy created
+  bool files_written = false;         // frames.pvd, energy.csv and checkpoint.bin in the run folder
+  std::optional<double> max_displacement_m, max_plastic_strain;  // none when not finite
+  std::optional<SphDeposit> deposit;                              // particle scenes only
   ParticleSnapshot final_state;  // soil particles at the end, for surface extraction
 };
 
