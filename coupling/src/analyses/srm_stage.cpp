@@ -4,10 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <map>
+#include <string>
 #include <ostream>
 
 #include "coupling/analyses/strength_reduction.hpp"
 #include "coupling/output/report.hpp"
+#include "coupling/output/srm_report.hpp"
 
 namespace coupling {
 
@@ -17,7 +20,7 @@ StageOutcome run_srm_stage(const Scene& scene, StageContext& context) {
   StageOutcome outcome;
   const StageClock::time_point start = StageClock::now();
   std::optional<double> bishop;
-  nlohmann::json lem_fs = nlohmann::json::object();
+  std::map<std::string, double> lem_fs;
   if (out.lem)
     for (const auto& critical : out.lem->methods)
       if (critical.mass && critical.result.factor_of_safety && std::isfinite(*critical.result.factor_of_safety)) {
@@ -28,10 +31,11 @@ StageOutcome run_srm_stage(const Scene& scene, StageContext& context) {
   try {
     const SrmOptions& srm = *scene.analyses.srm;
     const SrmResult result = run_strength_reduction(scene, srm, bishop, lem_fs, options.log);
-    out.report["srm"] = result.report;
+    out.report["srm"] = srm_report(result);
     if (!result.ok) {
       outcome.status = ExitStatus::failed;
-      outcome.errors.push_back(result.report.value("error", std::string("srm: no factor of safety")));
+      outcome.errors.push_back(result.bisection.error.empty() ? std::string("srm: no factor of safety")
+                                                              : "srm: " + result.bisection.error);
     }
     if (options.log) {
       char line[200];
@@ -50,7 +54,7 @@ StageOutcome run_srm_stage(const Scene& scene, StageContext& context) {
   } catch (const std::exception& error) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back(std::string("srm: ") + error.what());
-    out.report["srm"] = {{"error", outcome.errors.back()}};
+    out.report["srm"] = srm_error_report(outcome.errors.back());
   }
   out.report["timing_s"]["srm"] = seconds_since(start);
   return outcome;

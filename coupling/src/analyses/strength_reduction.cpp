@@ -111,16 +111,6 @@ namespace {
 
 // The per-scene values of the trials: the defaults of analyses.srm resolved from the slope's height and its first
 // shear mode.
-struct SrmPlan {
-  double height = 0.0;                // m
-  double period = 0.0;                // s, first shear mode of a layer of the slope height
-  double damping = 0.0;               // 1/s
-  double max_time = 0.0;              // s per trial
-  double failure_displacement = 0.0;  // m
-  double rest_speed = 0.0;            // m/s
-  double min_time = 0.0;              // s, rest is not checked before
-};
-
 SrmPlan plan_trials(const SceneSection& scene_section, const SrmOptions& options) {
   SrmPlan plan;
   plan.height = slope_height(scene_section.section);
@@ -255,14 +245,9 @@ class TrialRunner {
   std::vector<double> cohesion_, friction_, dilatancy_;
 };
 
-struct Bracket {
-  double lo = 0.5, hi = 3.0;
-  std::string source = "default [0.5, 3]";
-};
-
 // The user's bracket, else [0.8, 1.25] x the LEM Bishop FS, else [0.5, 3].
-Bracket initial_bracket(const SrmOptions& options, std::optional<double> lem_bishop_fs) {
-  Bracket bracket;
+SrmBracket initial_bracket(const SrmOptions& options, std::optional<double> lem_bishop_fs) {
+  SrmBracket bracket;
   if (options.bracket) {
     bracket.lo = options.bracket->first;
     bracket.hi = options.bracket->second;
@@ -275,69 +260,19 @@ Bracket initial_bracket(const SrmOptions& options, std::optional<double> lem_bis
   return bracket;
 }
 
-nlohmann::json trials_json(const std::vector<SrmTrial>& trials) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const SrmTrial& t : trials)
-    out.push_back({{"factor", t.factor},
-                   {"failed", t.failed},
-                   {"max_displacement_m", t.max_displacement_m},
-                   {"stopped_because", t.stopped_because},
-                   {"reason", t.reason},
-                   {"simulated_time_s", t.simulated_time_s},
-                   {"wall_seconds", t.wall_seconds}});
-  return out;
-}
-
-// The bisection's outcome: method, criterion, factor of safety and bracket.
-void report_bisection(const BisectionResult& b, nlohmann::json& report) {
-  report["method"] = "SPH strength reduction: c/F, atan(tan(phi)/F), atan(tan(psi)/F) for every material; "
-                     "geostatic K0 initial stress, linear velocity damping; bisection on F";
-  report["failure_criterion"] = "a trial fails if the largest soil-particle displacement exceeds "
-                                "failure_displacement_m, or if the soil is still moving faster than rest_speed_m_s "
-                                "at max_time_s, or if the run stops abnormally; it is stable if it comes to rest";
-  report["bracketed"] = b.bracketed;
-  if (b.bracketed) {
-    report["factor_of_safety"] = b.factor_of_safety;
-    report["bracket"] = {b.lo, b.hi};
-  } else {
-    report["factor_of_safety"] = nullptr;
-  }
-  if (!b.error.empty()) report["error"] = "srm: " + b.error;
-}
-
-// The settings the trials used.
-void report_plan(const SrmOptions& options, const Bracket& bracket, const SrmPlan& plan, nlohmann::json& report) {
-  report["tolerance"] = options.tolerance;
-  report["initial_bracket"] = {bracket.lo, bracket.hi};
-  report["initial_bracket_source"] = bracket.source;
-  report["slope_height_m"] = plan.height;
-  report["failure_displacement_m"] = plan.failure_displacement;
-  report["damping_per_s"] = plan.damping;
-  report["first_mode_period_s"] = plan.period;
-  report["max_time_s"] = plan.max_time;
-  report["rest_speed_m_s"] = plan.rest_speed;
-  report["rest_check_after_s"] = plan.min_time;
-}
-
-// The LEM factors next to FS_SPH, and the loads SPH left out (only those listed in analyses.sph.ignore_loads).
-void report_lem_context(const Scene& scene, const BisectionResult& b, std::optional<double> lem_bishop_fs,
-                        const nlohmann::json& lem_fs_by_method, nlohmann::json& report) {
-  report["lem_factor_of_safety"] = lem_fs_by_method;
-  nlohmann::json warnings = nlohmann::json::array();
-  for (const SectionLoad& load : loads_sph_leaves_out(scene))  // only those listed in analyses.sph.ignore_loads
+// The loads SPH left out (only those listed in analyses.sph.ignore_loads).
+std::vector<std::string> left_out_load_warnings(const Scene& scene) {
+  std::vector<std::string> warnings;
+  for (const SectionLoad& load : loads_sph_leaves_out(scene))
     warnings.push_back(load.path + " is not carried by the SPH model (analyses.sph.ignore_loads): FS_SPH is for "
                        "the slope without " + load.name + ", the limit-equilibrium factors of safety are with it");
-  report["warnings"] = warnings;
-  if (lem_bishop_fs) {
-    report["lem_bishop"] = *lem_bishop_fs;
-    if (b.bracketed) report["ratio_to_lem_bishop"] = b.factor_of_safety / *lem_bishop_fs;
-  }
+  return warnings;
 }
 
 }  // namespace
 
 SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, std::optional<double> lem_bishop_fs,
-                                 const nlohmann::json& lem_fs_by_method, std::ostream* log) {
+                                 const std::map<std::string, double>& lem_fs_by_method, std::ostream* log) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   if (!scene.section || !scene.analyses.sph) throw SceneError({"analyses.srm: needs a slope section and analyses.sph"});
@@ -351,7 +286,7 @@ SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, 
   pristine.settings.output_interval = 0.0;
   pristine.settings.checkpoint_interval_wall_s = 0.0;
 
-  const Bracket bracket = initial_bracket(options, lem_bishop_fs);
+  const SrmBracket bracket = initial_bracket(options, lem_bishop_fs);
   if (log)
     *log << "srm: " << size.soil_particles << " soil particles, dx = " << pristine.settings.particle_spacing
          << " m, H = " << plan.height << " m, damping " << plan.damping << " /s, trials up to " << plan.max_time
@@ -364,14 +299,15 @@ SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, 
   const BisectionResult& b = result.bisection;
   result.ok = b.bracketed && b.error.empty();
 
-  nlohmann::json& report = result.report;
-  report_bisection(b, report);
-  report_plan(options, bracket, plan, report);
-  report["particle_spacing_m"] = pristine.settings.particle_spacing;
-  report["soil_particles"] = size.soil_particles;
-  report_lem_context(scene, b, lem_bishop_fs, lem_fs_by_method, report);
-  report["trials"] = trials_json(b.trials);
-  report["seconds"] = std::chrono::duration<double>(Clock::now() - start).count();
+  result.tolerance = options.tolerance;
+  result.initial_bracket = bracket;
+  result.plan = plan;
+  result.particle_spacing_m = pristine.settings.particle_spacing;
+  result.soil_particles = size.soil_particles;
+  result.lem_fs_by_method = lem_fs_by_method;
+  result.lem_bishop = lem_bishop_fs;
+  result.warnings = left_out_load_warnings(scene);
+  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }
 

@@ -6,18 +6,15 @@
 #include <cstddef>
 #include <functional>
 #include <iosfwd>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "coupling/scene/json_reader.hpp"
 #include "coupling/scene/scene.hpp"
 
 namespace coupling {
-
-
 
 // One run of the oracle.
 struct SrmTrial {
@@ -44,16 +41,41 @@ struct BisectionResult {
 BisectionResult bisect_factor(const std::function<SrmTrial(double)>& oracle, double lo, double hi, double tolerance,
                               int max_trials);
 
+// How the trials are run (from the slope's height and slowest shear wave, or analyses.srm).
+struct SrmPlan {
+  double height = 0.0;                // m
+  double period = 0.0;                // s, first shear mode of a layer of the slope height
+  double damping = 0.0;               // 1/s
+  double max_time = 0.0;              // s per trial
+  double failure_displacement = 0.0;  // m
+  double rest_speed = 0.0;            // m/s
+  double min_time = 0.0;              // s, rest is not checked before
+};
+
+struct SrmBracket {
+  double lo = 0.5, hi = 3.0;
+  std::string source = "default [0.5, 3]";
+};
+
+// What the strength reduction found; coupling/output/srm_report writes it as the "srm" block of report.json.
 struct SrmResult {
   BisectionResult bisection;
-  nlohmann::json report;  // the "srm" block of report.json
   bool ok = false;
+  double tolerance = 0.0;
+  SrmBracket initial_bracket;
+  SrmPlan plan;
+  double particle_spacing_m = 0.0;
+  std::size_t soil_particles = 0;
+  std::map<std::string, double> lem_fs_by_method;  // method key -> LEM FS
+  std::optional<double> lem_bishop;
+  std::vector<std::string> warnings;  // loads SPH leaves out
+  double seconds = 0.0;
 };
 
 // Runs the strength-reduction analysis of a validated slope scene (needs section + analyses.sph + analyses.srm).
 // `lem_bishop_fs`: the LEM Bishop factor (for the default bracket and the report), when available.
-// `lem_fs_by_method`: method key -> LEM FS, copied into the report.
+// `lem_fs_by_method`: method key -> LEM FS, copied into the result.
 SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, std::optional<double> lem_bishop_fs,
-                                 const nlohmann::json& lem_fs_by_method, std::ostream* log);
+                                 const std::map<std::string, double>& lem_fs_by_method, std::ostream* log);
 
 }  // namespace coupling
