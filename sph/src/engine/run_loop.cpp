@@ -1,5 +1,9 @@
 #include "sph/engine/run_loop.hpp"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -282,7 +286,39 @@ class Loop {
 
 }  // namespace
 
+namespace {
+
+// Sets the OpenMP thread count for one run and restores it afterwards. The results do not depend on it (the
+// parallel loops gather per particle and reduce only by min and max).
+class ThreadBudget {
+ public:
+  ThreadBudget(std::size_t particles, std::size_t min_particles_per_thread) {
+#ifdef _OPENMP
+    previous_ = omp_get_max_threads();
+    const std::size_t per_thread = std::max<std::size_t>(min_particles_per_thread, 1);
+    const std::size_t wanted = std::max<std::size_t>(particles / per_thread, 1);
+    omp_set_num_threads(static_cast<int>(std::min<std::size_t>(wanted, static_cast<std::size_t>(previous_))));
+#else
+    (void)particles;
+    (void)min_particles_per_thread;
+#endif
+  }
+  ~ThreadBudget() {
+#ifdef _OPENMP
+    omp_set_num_threads(previous_);
+#endif
+  }
+  ThreadBudget(const ThreadBudget&) = delete;
+  ThreadBudget& operator=(const ThreadBudget&) = delete;
+
+ private:
+  int previous_ = 1;
+};
+
+}  // namespace
+
 RunSummary run_loop(RunTarget& target, const RunOptions& options, const RunCallbacks& callbacks) {
+  const ThreadBudget threads(target.particles.size(), options.min_particles_per_thread);
   Loop loop(target, options, callbacks);
   return loop.run();
 }

@@ -36,6 +36,10 @@ struct RunOptions {
   bool write_frames = true;          // output_dir/frames/frame_NNNNNN.vtu + output_dir/frames.pvd
   bool write_energy = true;          // output_dir/energy.csv
   std::string checkpoint_path;       // empty: output_dir/checkpoint.bin (none if output_dir is empty)
+  // OpenMP threads: one per this many particles, at most what OpenMP offers (OMP_NUM_THREADS). A small run on
+  // more threads pays a fork and join per loop for little work, and on a machine whose other cores are busy its
+  // waiting threads slow it down many times over (docs/performance.md).
+  std::size_t min_particles_per_thread = 2000;
   bool checkpoint_on_stop = true;    // also write a checkpoint when the run stops normally or is interrupted
   std::uint64_t max_steps = 0;       // stop when the step counter reaches this (0: no limit)
   double progress_interval_wall_s = 1.0;
