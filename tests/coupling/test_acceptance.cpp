@@ -9,6 +9,8 @@
 #include <string>
 
 #include "coupling/compare/acceptance.hpp"
+#include "coupling/compare/comparison.hpp"
+#include "coupling/output/comparison_report.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -23,16 +25,24 @@ std::string all_messages(const Diagnostics& diagnostics) {
   return text;
 }
 
-// The figures the comparison writes for one method (the keys of report.json's comparison.methods.<key>).
-nlohmann::json comparison_with(double entry_dx, double mean_distance, double overlap) {
-  nlohmann::json bishop = {{"lem_factor_of_safety", 0.935},
-                           {"factor_of_safety_on_sph_circle", 1.010},
-                           {"entry_offset_m", {entry_dx, 0.0}},
-                           {"exit_offset_m", {0.3, 0.4}},
-                           {"mean_normal_distance_m", mean_distance},
-                           {"max_normal_distance_m", 3 * mean_distance},
-                           {"intersection_over_union", overlap}};
-  return {{"methods", {{"bishop", bishop}, {"spencer", {{"lem_factor_of_safety", 0.93}}}}}};
+// The figures of a comparison for two methods: Bishop with both surfaces, Spencer without a critical surface.
+coupling::ComparisonResult comparison_with(double entry_dx, double mean_distance, double overlap) {
+  coupling::MethodComparison bishop;
+  bishop.method = "bishop";
+  bishop.lem_factor_of_safety = 0.935;
+  bishop.factor_of_safety_on_sph_circle = 1.010;
+  bishop.has_geometry = true;
+  bishop.entry_offset_m = slope::Point{entry_dx, 0.0};
+  bishop.exit_offset_m = slope::Point{0.3, 0.4};
+  bishop.mean_normal_distance_m = mean_distance;
+  bishop.max_normal_distance_m = 3 * mean_distance;
+  bishop.intersection_over_union = overlap;
+  coupling::MethodComparison spencer;
+  spencer.method = "spencer";
+  spencer.lem_factor_of_safety = 0.93;
+  coupling::ComparisonResult comparison;
+  comparison.methods = {bishop, spencer};
+  return comparison;
 }
 
 }  // namespace

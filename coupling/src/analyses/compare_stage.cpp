@@ -4,6 +4,7 @@
 
 #include "coupling/compare/acceptance.hpp"
 #include "coupling/compare/comparison.hpp"
+#include "coupling/output/comparison_report.hpp"
 
 namespace coupling {
 
@@ -16,28 +17,25 @@ StageOutcome run_compare_stage(const Scene& scene, StageContext& context) {
   if (!final_state || !out.lem || !scene.section) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back("compare: needs both a finished SPH run and a limit-equilibrium result");
-    out.report["comparison"] = {{"error", outcome.errors.back()}};
+    out.report["comparison"] = comparison_error_report(outcome.errors.back());
     return outcome;
   }
   const ComparisonOptions& options = *scene.analyses.compare;
   const slope::Section& section = scene.section->section;
   failure = extract_sph_failure(*final_state, section.profile_lines.front().points, options);
-  out.report["comparison"] = comparison_report(section, *failure, *out.lem, options);
+  ComparisonResult comparison = compare_with_lem(section, *failure, *out.lem, options);
   // Loads SPH left out on request (analyses.sph.ignore_loads): the two surfaces answer different problems.
-  for (const SectionLoad& load : loads_sph_leaves_out(scene)) {
-    nlohmann::json& comparison = out.report["comparison"];
-    comparison["verdict"] = comparison["verdict"].get<std::string>() + " Caution: the SPH run leaves out " +
-                            load.name + " (" + load.path + "), the limit-equilibrium analysis includes it.";
-  }
+  for (const SectionLoad& load : loads_sph_leaves_out(scene))
+    comparison.verdict += " Caution: the SPH run leaves out " + load.name + " (" + load.path +
+                          "), the limit-equilibrium analysis includes it.";
   if (options.acceptance) {
-    const double spacing = out.report["sph"].value("particle_spacing_m", 0.0);
-    const AcceptanceResult acceptance = evaluate_acceptance(*options.acceptance, out.report["comparison"], spacing);
-    out.report["comparison"]["acceptance"] = acceptance_json(acceptance);
-    if (!acceptance.accepted) {
+    comparison.acceptance = evaluate_acceptance(*options.acceptance, comparison, final_state->spacing);
+    if (!comparison.acceptance->accepted) {
       outcome.status = ExitStatus::not_accepted;
-      outcome.errors = failed_criteria_lines(acceptance);
+      outcome.errors = failed_criteria_lines(*comparison.acceptance);
     }
   }
+  out.report["comparison"] = comparison_report(comparison);
   out.report["timing_s"]["compare"] = seconds_since(start);
   return outcome;
 }

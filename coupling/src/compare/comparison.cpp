@@ -14,14 +14,6 @@ namespace coupling {
 
 namespace {
 
-nlohmann::json point_json(const slope::Point& p) { return nlohmann::json::array({p.x, p.y}); }
-
-nlohmann::json polyline_json(const Polyline& line) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& p : line) out.push_back(point_json(p));
-  return out;
-}
-
 // Per x-bin lowest initial height of the particles displaced more than delta.
 Polyline displaced_base(const ParticleSnapshot& p, double delta, double bin, std::size_t* count) {
   Polyline base;
@@ -114,26 +106,6 @@ SphFailure extract_sph_failure(const ParticleSnapshot& particles, const Polyline
 
 namespace {
 
-nlohmann::json sph_surface_json(const SphFailure& sph, const ComparisonOptions& options) {
-  nlohmann::json surface;
-  surface["plastic_strain_threshold"] = sph.band.plastic_strain_threshold;
-  surface["bin_width_m"] = sph.band.bin_width;
-  surface["configuration"] = options.band.initial_configuration ? "initial" : "current";
-  surface["band_particles"] = sph.band.band_particles;
-  surface["points_m"] = polyline_json(sph.band.points);
-  surface["entry_m"] = sph.entry ? point_json(*sph.entry) : nlohmann::json();
-  surface["exit_m"] = sph.exit ? point_json(*sph.exit) : nlohmann::json();
-  if (sph.fitted_circle) {
-    surface["fitted_circle"] = {{"center_m", {sph.fitted_circle->circle.xc, sph.fitted_circle->circle.yc}},
-                                {"radius_m", sph.fitted_circle->circle.radius},
-                                {"rms_residual_m", sph.fitted_circle->rms_residual},
-                                {"max_residual_m", sph.fitted_circle->max_residual}};
-  } else {
-    surface["fitted_circle"] = nullptr;
-  }
-  return surface;
-}
-
 // The SPH fitted circle as a slip mass of the section, on which every LE method is evaluated.
 struct SphCircleMass {
   std::optional<slope::SlipMass> mass;
@@ -162,20 +134,16 @@ SphCircleMass sph_circle_mass(const slope::Section& section, const SphFailure& s
 }
 
 // The method's minimum FS next to its FS on the SPH circle.
-void report_factors(const slope::CriticalSurface& critical, const SphFailure& sph, const SphCircleMass& sph_mass,
-                    nlohmann::json& m) {
-  m["lem_factor_of_safety"] = critical.result.factor_of_safety ? nlohmann::json(*critical.result.factor_of_safety)
-                                                                : nlohmann::json();
+void compare_factors(const slope::CriticalSurface& critical, const SphFailure& sph, const SphCircleMass& sph_mass,
+                     MethodComparison& m) {
+  m.lem_factor_of_safety = critical.result.factor_of_safety;
   if (sph_mass.mass) {
     const auto on_sph = slope::factor_of_safety(*sph_mass.mass, critical.method);
-    m["factor_of_safety_on_sph_circle"] =
-        on_sph.factor_of_safety ? nlohmann::json(*on_sph.factor_of_safety) : nlohmann::json();
-    if (!on_sph.factor_of_safety) m["factor_of_safety_on_sph_circle_error"] = on_sph.error;
+    m.factor_of_safety_on_sph_circle = on_sph.factor_of_safety;
+    if (!on_sph.factor_of_safety) m.on_sph_circle_error = on_sph.error;
   } else {
-    m["factor_of_safety_on_sph_circle"] = nullptr;
-    m["factor_of_safety_on_sph_circle_error"] =
-        sph.fitted_circle ? "the SPH circle is not an admissible slip circle: " + sph_mass.reason
-                          : std::string("no circle could be fitted to the SPH surface");
+    m.on_sph_circle_error = sph.fitted_circle ? "the SPH circle is not an admissible slip circle: " + sph_mass.reason
+                                              : std::string("no circle could be fitted to the SPH surface");
   }
 }
 
@@ -200,57 +168,57 @@ std::string verdict_text(const std::string& key, const slope::CriticalSurface& c
 }
 
 // The comparison with one method's critical surface; `verdict` is set when this method tells it.
-nlohmann::json compare_method(const slope::CriticalSurface& critical, const SphFailure& sph,
-                              const SphCircleMass& sph_mass, const Polyline& ground, const Polyline& sph_polygon,
-                              bool tells_verdict, std::optional<std::string>& verdict) {
+MethodComparison compare_method(const slope::CriticalSurface& critical, const SphFailure& sph,
+                                const SphCircleMass& sph_mass, const Polyline& ground, const Polyline& sph_polygon,
+                                bool tells_verdict, std::optional<std::string>& verdict) {
   const std::string key(slope::method_key(critical.method));
-  nlohmann::json m;
-  report_factors(critical, sph, sph_mass, m);
+  MethodComparison m;
+  m.method = key;
+  compare_factors(critical, sph, sph_mass, m);
   if (!critical.mass || sph.band.points.size() < 2) return m;
   const auto& mass = *critical.mass;
   const Polyline lem_line = lem_surface_polyline(mass);
   const auto distances = compare_surfaces(sph.band.points, lem_line);
+  m.has_geometry = true;
   if (sph.entry) {
-    m["entry_offset_m"] = {sph.entry->x - mass.entry.x, sph.entry->y - mass.entry.y};
-    m["exit_offset_m"] = {sph.exit->x - mass.exit.x, sph.exit->y - mass.exit.y};
+    m.entry_offset_m = slope::Point{sph.entry->x - mass.entry.x, sph.entry->y - mass.entry.y};
+    m.exit_offset_m = slope::Point{sph.exit->x - mass.exit.x, sph.exit->y - mass.exit.y};
   }
-  m["common_span_x_m"] = {distances.common_from_x, distances.common_to_x};
-  m["mean_normal_distance_m"] = distances.mean_normal_distance;
-  m["max_normal_distance_m"] = distances.max_normal_distance;
-  m["area_between_m2"] = distances.area_between;
+  m.common_from_x_m = distances.common_from_x;
+  m.common_to_x_m = distances.common_to_x;
+  m.mean_normal_distance_m = distances.mean_normal_distance;
+  m.max_normal_distance_m = distances.max_normal_distance;
+  m.area_between_m2 = distances.area_between;
   const Polyline lem_polygon = sliding_mass_polygon(ground, lem_line);
   const auto overlap = mass_overlap(sph_polygon, lem_polygon);
-  m["sph_sliding_mass_area_m2"] = overlap.area_a;
-  m["lem_sliding_mass_area_m2"] = overlap.area_b;
-  m["intersection_area_m2"] = overlap.intersection_area;
-  m["intersection_over_union"] = overlap.intersection_over_union;
+  m.sph_sliding_mass_area_m2 = overlap.area_a;
+  m.lem_sliding_mass_area_m2 = overlap.area_b;
+  m.intersection_area_m2 = overlap.intersection_area;
+  m.intersection_over_union = overlap.intersection_over_union;
   if (!verdict && tells_verdict && sph.entry) verdict = verdict_text(key, critical, sph, lem_line, distances, overlap);
   return m;
 }
 
 }  // namespace
 
-nlohmann::json comparison_report(const slope::Section& section, const SphFailure& sph,
-                                 const slope::SearchResult& lem, const ComparisonOptions& options) {
-  nlohmann::json report;
+const MethodComparison* ComparisonResult::find(const std::string& method) const {
+  for (const MethodComparison& m : methods)
+    if (m.method == method) return &m;
+  return nullptr;
+}
+
+ComparisonResult compare_with_lem(const slope::Section& section, const SphFailure& sph, const slope::SearchResult& lem,
+                                  const ComparisonOptions& options) {
+  ComparisonResult result;
+  result.sph = sph;
+  result.initial_configuration = options.band.initial_configuration;
   const Polyline ground = section.profile_lines.front().points;
-  report["sph_surface"] = sph_surface_json(sph, options);
-  report["displacement_check"] = {
-      {"displacement_threshold_m", sph.displacement_threshold},
-      {"displaced_particles", sph.displaced_particles},
-      {"base_points_m", polyline_json(sph.displaced_mass_base)},
-      {"mean_distance_to_band_m", sph.band_vs_displacement.mean_normal_distance},
-      {"max_distance_to_band_m", sph.band_vs_displacement.max_normal_distance}};
-  report["deformed_ground"] = {{"points_m", polyline_json(sph.final_ground)},
-                               {"initial_toe_x_m", sph.initial_toe_x},
-                               {"farthest_toe_advance_m", sph.farthest_toe_advance}};
 
   // Evaluate every method on the SPH fitted circle.
   const SphCircleMass sph_mass = sph_circle_mass(section, sph);
-  report["sph_surface"]["circle_raised_for_lem_m"] = sph_mass.raised;
+  result.circle_raised_for_lem_m = sph_mass.raised;
   const Polyline sph_polygon = sliding_mass_polygon(ground, sph.band.points);
 
-  nlohmann::json methods = nlohmann::json::object();
   bool has_bishop = false;
   for (const auto& critical : lem.methods)
     has_bishop = has_bishop || (critical.method == slope::Method::bishop && critical.mass.has_value());
@@ -258,14 +226,12 @@ nlohmann::json comparison_report(const slope::Section& section, const SphFailure
   for (const auto& critical : lem.methods) {
     // The verdict is told against Bishop's circle when Bishop was asked for, else the first method with a surface.
     const bool tells_verdict = critical.method == slope::Method::bishop || !has_bishop;
-    methods[std::string(slope::method_key(critical.method))] =
-        compare_method(critical, sph, sph_mass, ground, sph_polygon, tells_verdict, verdict);
+    result.methods.push_back(compare_method(critical, sph, sph_mass, ground, sph_polygon, tells_verdict, verdict));
   }
-  report["methods"] = methods;
-  report["verdict"] = verdict ? *verdict
-                              : std::string("No comparison: the SPH run shows no plastic band above the threshold "
-                                            "or no LEM method found a critical surface.");
-  return report;
+  result.verdict = verdict ? *verdict
+                           : std::string("No comparison: the SPH run shows no plastic band above the threshold "
+                                         "or no LEM method found a critical surface.");
+  return result;
 }
 
 }  // namespace coupling

@@ -6,8 +6,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "coupling/scene/analysis_options.hpp"
 
 namespace coupling {
@@ -27,12 +25,13 @@ struct AcceptanceResult {
   bool accepted = false;  // every criterion passed (a criterion that cannot be measured fails)
 };
 
-// Evaluates the criteria on the "comparison" block of the report (its "methods.<key>" figures).
-AcceptanceResult evaluate_acceptance(const AcceptanceCriteria& criteria, const nlohmann::json& comparison,
+struct ComparisonResult;
+
+// Evaluates the criteria on the comparison's figures per method.
+AcceptanceResult evaluate_acceptance(const AcceptanceCriteria& criteria, const ComparisonResult& comparison,
                                      double particle_spacing);
 
-// The "acceptance" block of the comparison report, and one line per failed criterion for stderr.
-nlohmann::json acceptance_json(const AcceptanceResult& result);
+// One line per failed criterion, for stderr.
 std::vector<std::string> failed_criteria_lines(const AcceptanceResult& result);
 
 }  // namespace coupling

@@ -5,8 +5,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "coupling/compare/acceptance.hpp"
 #include "coupling/compare/failure_surface.hpp"
 #include "coupling/scene/json_reader.hpp"
@@ -14,7 +12,6 @@
 #include "slope/search.hpp"
 
 namespace coupling {
-
 
 struct SphFailure {
   FailureSurface band;                      // band centre line, on the initial configuration
@@ -34,11 +31,38 @@ struct SphFailure {
 SphFailure extract_sph_failure(const ParticleSnapshot& particles, const Polyline& initial_ground,
                                const ComparisonOptions& options);
 
-// The "comparison" block of report.json: the SPH surface, and for every LEM method with a critical surface:
-// entry/exit offsets, mean/max normal distance, area between, sliding-mass areas and intersection over union,
-// the method's FS on the SPH fitted circle next to its minimum FS; plus "verdict" (plain language).
-nlohmann::json comparison_report(const slope::Section& section, const SphFailure& sph,
-                                 const slope::SearchResult& lem, const ComparisonOptions& options);
+// One LE method's critical surface against the SPH failure surface.
+struct MethodComparison {
+  std::string method;                                     // method key
+  std::optional<double> lem_factor_of_safety;             // its minimum FS (none: the method failed)
+  std::optional<double> factor_of_safety_on_sph_circle;   // its FS on the SPH fitted circle
+  std::optional<std::string> on_sph_circle_error;         // why that FS is missing
+  bool has_geometry = false;                              // the figures below are set (both surfaces exist)
+  std::optional<slope::Point> entry_offset_m, exit_offset_m;  // SPH - LEM (when the SPH band has ends)
+  double common_from_x_m = 0, common_to_x_m = 0;
+  double mean_normal_distance_m = 0, max_normal_distance_m = 0, area_between_m2 = 0;
+  double sph_sliding_mass_area_m2 = 0, lem_sliding_mass_area_m2 = 0, intersection_area_m2 = 0;
+  double intersection_over_union = 0;
+};
+
+// The SPH failure surface against every LEM method's critical surface; coupling/output/comparison_report writes
+// it as the "comparison" block of report.json.
+struct ComparisonResult {
+  SphFailure sph;
+  bool initial_configuration = true;  // the band is drawn on the initial particle positions
+  double circle_raised_for_lem_m = 0;  // the SPH circle was raised this much to clear the base
+  std::vector<MethodComparison> methods;  // in the order of the LE result
+  std::string verdict;                    // plain language
+  std::optional<AcceptanceResult> acceptance;
+
+  const MethodComparison* find(const std::string& method) const;
+};
+
+// Entry/exit offsets, mean/max normal distance, area between, sliding-mass areas and intersection over union for
+// every LEM method with a critical surface, the method's FS on the SPH fitted circle next to its minimum FS, and a
+// verdict against Bishop's circle (else the first method's).
+ComparisonResult compare_with_lem(const slope::Section& section, const SphFailure& sph, const slope::SearchResult& lem,
+                                  const ComparisonOptions& options);
 
 // The slip surface of a critical LEM mass as a polyline from entry to exit.
 Polyline lem_surface_polyline(const slope::SlipMass& mass, int segments = 200);
