@@ -2,21 +2,11 @@
 
 #include <string>
 
+#include "coupling/output/json_values.hpp"
+
 namespace coupling {
 
 namespace {
-
-nlohmann::json point_json(const slope::Point& p) { return nlohmann::json::array({p.x, p.y}); }
-
-nlohmann::json polyline_json(const Polyline& line) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& p : line) out.push_back(point_json(p));
-  return out;
-}
-
-nlohmann::json optional_number(const std::optional<double>& value) {
-  return value ? nlohmann::json(*value) : nlohmann::json();
-}
 
 nlohmann::json sph_surface_json(const ComparisonResult& c) {
   const SphFailure& sph = c.sph;

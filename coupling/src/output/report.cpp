@@ -1,6 +1,8 @@
 #include "coupling/output/report.hpp"
 
 #include <cmath>
+
+#include "coupling/output/json_values.hpp"
 #include "sphslope/units.hpp"
 
 #ifndef SPHSLOPE_VERSION
@@ -13,7 +15,6 @@ namespace {
 
 constexpr double to_kilo = 1e-3;  // N -> kN, Pa -> kPa
 
-nlohmann::json point(const slope::Point& p) { return nlohmann::json::array({p.x, p.y}); }
 
 // A finite number, or null (JSON has no NaN or infinity; never write a made-up number).
 nlohmann::json number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
@@ -78,8 +79,8 @@ nlohmann::json method_report(const slope::Section& section, const slope::Critica
   m["surface"] = {{"type", "circle"},
                   {"center_m", nlohmann::json::array({mass.circle.xc, mass.circle.yc})},
                   {"radius_m", mass.circle.radius},
-                  {"entry_m", point(mass.entry)},
-                  {"exit_m", point(mass.exit)},
+                  {"entry_m", point_json(mass.entry)},
+                  {"exit_m", point_json(mass.exit)},
                   {"slides_toward", mass.direction >= 0 ? "+x" : "-x"}};
   const bool with_forces = result.forces.size() == mass.slices.size();
   nlohmann::json slices = nlohmann::json::array();
@@ -120,8 +121,8 @@ nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& anal
 
   nlohmann::json map = nlohmann::json::array();
   for (const slope::FsMapEntry& entry : result.fs_map) {
-    map.push_back({{"entry_m", point(entry.entry)},
-                   {"exit_m", point(entry.exit)},
+    map.push_back({{"entry_m", point_json(entry.entry)},
+                   {"exit_m", point_json(entry.exit)},
                    {"center_m", nlohmann::json::array({entry.circle.xc, entry.circle.yc})},
                    {"radius_m", entry.circle.radius},
                    {"factor_of_safety", number(entry.factor_of_safety)}});

@@ -1,5 +1,7 @@
 #include "coupling/output/sph_report.hpp"
 
+#include "coupling/output/json_values.hpp"
+
 namespace coupling {
 
 namespace {
@@ -69,10 +71,6 @@ nlohmann::json deposit_json(const SphDeposit& d) {
           {"note",
            "lengths from the leftmost initial particle edge to the front of the deposit (stray particles "
            "beyond a 1.5-spacing gap excluded); heights from the lowest initial particle edge to the top"}};
-}
-
-nlohmann::json optional_number(const std::optional<double>& value) {
-  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
 }
 
 }  // namespace

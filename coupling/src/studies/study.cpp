@@ -12,6 +12,7 @@
 #include "sph/engine/atomic_file.hpp"
 #include "coupling/studies/convergence.hpp"
 #include "coupling/scene/json_reader.hpp"
+#include "coupling/output/json_values.hpp"
 #include "coupling/output/report.hpp"
 #include "coupling/analyses/sph_stage.hpp"
 #include "study_cases.hpp"
@@ -34,7 +35,6 @@ std::string spacing_folder(double spacing) {
   return name.str();
 }
 
-nlohmann::json optional_number(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
 
 // ---- the limit-equilibrium search against its finest setting --------------------------------------------------
 
