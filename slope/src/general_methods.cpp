@@ -13,6 +13,8 @@
 // & Chen 2005). Two residuals in (F, lambda):
 //     r1 = E at the exit / sum(V)                          (horizontal force equilibrium of the whole mass)
 //     r2 = sum(d S) / M_drive - 1                          (moment equilibrium about the circle centre)
+// (about the moment point of a polyline surface, where the base normal forces N have arms g and
+// M_drive = sum(moments of V and H) + sum(g N): Fredlund & Krahn 1977)
 // are solved with GSL's hybrid (Powell dogleg) multiroot solver in (ln F, lambda), which keeps F positive.
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multiroots.h>
@@ -30,6 +32,7 @@ namespace {
 struct Sweep {
   double end_force = 0.0;         // E after the last slice
   double resisting_moment = 0.0;  // sum d (c' l + N' tan phi')
+  double normal_moment = 0.0;     // polylines: sum of the base normal forces' moments about the moment point
   bool finite = true;
   int weakest_slice = -1;         // slice with the least available shear strength (relative to its scale)
   double weakest_strength = 0.0;  // (c' l + N' tan phi') / (c' l + |N'| tan phi') there: < 0 is impossible
@@ -59,6 +62,7 @@ Sweep sweep(const SliceTable& t, const double* f, double F, double lambda, Slice
     const double effective_normal = (a0 - x_right) * inv_m;
     const double available = cl + effective_normal * tp;
     moment += t.shear_arm[i] * available;
+    if (!t.circular) out.normal_moment += t.normal_arm[i] * (effective_normal + U);
     if (forces != nullptr) {
       const double scale = cl + std::fabs(effective_normal) * tp;
       const double relative = scale > 0.0 ? available / scale : 0.0;
@@ -106,7 +110,9 @@ int residual(const gsl_vector* x, void* params, gsl_vector* r) {
   const Sweep s = sweep(*p.table, p.f, F, lambda, nullptr);
   if (!s.finite) return GSL_EBADFUNC;
   gsl_vector_set(r, 0, s.end_force / p.force_scale);
-  gsl_vector_set(r, 1, s.resisting_moment / (F * p.table->total_drive_moment) - 1.0);
+  // a polyline's base normal forces add to the driving moment (zero for a circle: they pass through its centre)
+  const double drive = p.table->circular ? p.table->total_drive_moment : p.table->total_drive_moment + s.normal_moment;
+  gsl_vector_set(r, 1, s.resisting_moment / (F * drive) - 1.0);
   return GSL_SUCCESS;
 }
 

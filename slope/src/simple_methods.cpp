@@ -180,6 +180,95 @@ Outcome solve_simplified(const SliceTable& t, const RatioEquation& eq, double or
   return out;
 }
 
+// Bishop on a polyline: moments about the moment point, where the base normal forces have arms g_i:
+//     h(F) = F (M + sum g (N' + U)) - sum d (c' l + N' tan phi') = 0,   N' as in Bishop's vertical equilibrium.
+// The admissible range keeps m_a >= 0.2 as for circles; the first sign change of h on a geometric scan of it is
+// refined by GSL Brent.
+double bishop_polyline_residual(double F, void* params) {
+  const SliceTable& t = *static_cast<const SliceTable*>(params);
+  double drive = t.total_drive_moment, resist = 0.0;
+  for (int i = 0; i < t.count; ++i) {
+    const double effective_normal = simplified_normal(t, i, F);
+    drive += t.normal_arm[i] * (effective_normal + t.pore_force[i]);
+    resist += t.shear_arm[i] * (t.cohesion_force[i] + effective_normal * t.tan_phi[i]);
+  }
+  return F * drive - resist;
+}
+
+Outcome bishop_polyline(const SliceTable& t) {
+  Outcome out;
+  double f_min = 0.0;
+  for (int i = 0; i < t.count; ++i) {
+    if (t.sin_a[i] >= 0.0) continue;
+    if (t.cos_a[i] <= minimum_m_alpha) {
+      out.failure = Failure::m_alpha;
+      out.slice = i;
+      out.value = t.cos_a[i];
+      return out;
+    }
+    if (t.sin_a[i] * t.tan_phi[i] < 0.0) f_min = std::max(f_min, -t.sin_a[i] * t.tan_phi[i] / (t.cos_a[i] - minimum_m_alpha));
+  }
+  void* params = const_cast<SliceTable*>(&t);
+  double lo = std::max(f_min * (1.0 + 1e-9), 1e-3);
+  double h_lo = bishop_polyline_residual(lo, params);
+  double hi = lo;
+  bool bracketed = false;
+  for (int k = 0; k < 240 && !bracketed; ++k) {  // up to 1e3 times lo... and beyond, in steps of 5 %
+    hi = lo * 1.05;
+    const double h_hi = bishop_polyline_residual(hi, params);
+    if ((h_lo <= 0.0) != (h_hi <= 0.0)) bracketed = true;
+    else {
+      lo = hi;
+      h_lo = h_hi;
+    }
+  }
+  if (!bracketed) {
+    out.failure = f_min > 0.0 ? Failure::m_alpha : Failure::not_converged;
+    out.value = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
+  gsl_function function{&bishop_polyline_residual, params};
+  gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  gsl_root_fsolver_set(solver, &function, lo, hi);
+  int status = GSL_CONTINUE, it = 0;
+  while (status == GSL_CONTINUE && it < 200) {
+    ++it;
+    if (gsl_root_fsolver_iterate(solver) != GSL_SUCCESS) break;
+    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), 0.0, 1e-13);
+  }
+  out.factor_of_safety = gsl_root_fsolver_root(solver);
+  out.iterations = it;
+  gsl_root_fsolver_free(solver);
+  if (status != GSL_SUCCESS) {
+    out.failure = Failure::not_converged;
+    return out;
+  }
+  const double F = out.factor_of_safety;
+  strengths_non_negative(t, [&](int i) { return simplified_normal(t, i, F); }, out);
+  return out;
+}
+
+// Ordinary on a polyline: N' = V cos a - H sin a - U as for circles, moments about the moment point with the base
+// normal forces' arms g: F = sum d (c' l + N' tan phi') / (M + sum g (N' + U)).
+Outcome ordinary_polyline(const SliceTable& t) {
+  Outcome out;
+  auto normal = [&](int i) { return t.vertical[i] * t.cos_a[i] - t.horizontal[i] * t.sin_a[i] - t.pore_force[i]; };
+  double resisting = 0.0, drive = t.total_drive_moment;
+  for (int i = 0; i < t.count; ++i) {
+    const double effective_normal = normal(i);
+    resisting += t.shear_arm[i] * (t.cohesion_force[i] + effective_normal * t.tan_phi[i]);
+    drive += t.normal_arm[i] * (effective_normal + t.pore_force[i]);
+  }
+  out.factor_of_safety = resisting / drive;
+  out.iterations = 1;
+  if (!(out.factor_of_safety > 0.0) || !std::isfinite(out.factor_of_safety)) {
+    out.failure = Failure::not_positive;
+    return out;
+  }
+  strengths_non_negative(t, normal, out);
+  return out;
+}
+
 }  // namespace
 
 Outcome ordinary_method(const SliceTable& t) {
@@ -189,6 +278,7 @@ Outcome ordinary_method(const SliceTable& t) {
     out.failure = Failure::no_driving_moment;
     return out;
   }
+  if (!t.circular) return ordinary_polyline(t);
   double resisting = 0.0;
   for (int i = 0; i < t.count; ++i) {
     // Fellenius: interslice forces ignored; N' = V cos a - H sin a - u l
@@ -213,6 +303,7 @@ Outcome bishop_method(const SliceTable& t, MethodWorkspace& ws) {
     out.failure = Failure::no_driving_moment;
     return out;
   }
+  if (!t.circular) return bishop_polyline(t);
   const int n = t.count;
   ws.reserve_ratio_terms(n);
   double* w = ws.numerator.data();
@@ -263,7 +354,7 @@ double janbu_correction_factor(const SliceTable& t) {
   if (!(chord > 0.0)) return 1.0;
   const double centre_to_chord =
       std::fabs((t.circle.xc - t.entry.x) * ly - (t.circle.yc - t.entry.y) * lx) / chord;
-  const double depth = std::max(0.0, t.circle.radius - centre_to_chord);
+  const double depth = t.circular ? std::max(0.0, t.circle.radius - centre_to_chord) : t.chord_depth;
   bool has_cohesion = false, has_friction = false;
   for (int i = 0; i < t.count; ++i) {
     has_cohesion = has_cohesion || t.cohesion[i] > 0.0;

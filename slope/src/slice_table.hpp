@@ -34,6 +34,14 @@ struct SliceTable {
   Point exit;
   int direction = 1;
   double max_depth = 0.0;  // m, largest vertical thickness of the mass at a slice centre line
+  // A polyline surface: moments are about `circle`'s centre (the moment point; radius 0), the base normal forces
+  // have a moment about it (normal_arm), Janbu's f0 uses chord_depth. A circle: none of these.
+  bool circular = true;
+  double chord_depth = 0.0;   // m, largest depth of the surface below the entry-exit chord (polylines)
+  std::vector<Point> surface; // the polyline (empty for a circle)
+  double crack_depth = 0.0;   // m, tension crack at the upper end (0: none)
+  double crack_force = 0.0;   // N/m, water thrust in the crack, horizontal, toward sliding
+  double crack_force_y = 0.0; // m, its line of action
 
   // primitive, per slice
   std::vector<double> x_left, x_right, width, sin_a, cos_a, base_length, base_x, base_y, top_y;
@@ -47,12 +55,19 @@ struct SliceTable {
   std::vector<double> horizontal;      // H = kh W + water thrust, in the sliding direction
   std::vector<double> drive_moment;    // moment of V and H about the centre, positive when it drives sliding
   std::vector<double> shear_arm;       // distance from the centre to the base chord
+  // polylines: moment of a unit base normal force about the moment point, positive when it drives sliding (zero
+  // for a circle: the normal passes through the centre)
+  std::vector<double> normal_arm;
   double total_drive_moment = 0.0;
   double drive_moment_scale = 0.0;  // sum of |moments|: a total below 1e-9 of it counts as no driving moment
   bool driven() const { return total_drive_moment > 1e-9 * drive_moment_scale; }
 
   void resize(int n);  // sets count; grows the buffers only when needed
   void compute_loads();
+
+ private:
+  void compute_polyline_arms();  // shear and normal arms about a moment point (polylines)
+  void add_crack_force();        // the water thrust of a crack on the upslope slice
 };
 
 // Section data arranged for fast repeated slicing.
@@ -87,15 +102,26 @@ class Slicer {
   const PreparedSection& prepared() const { return prepared_; }
   // Fills `table` with the slices of the mass above `circle`. No allocation once the buffers have grown.
   Rejection slice(const Circle& circle, int target_slices, SliceTable& table);
+  // Fills `table` with the slices of the mass above a polyline (polyline_slices.cpp). Returns why the polyline is
+  // not an admissible slip surface, empty when it is.
+  std::string slice_polyline(const SlipPolyline& surface, int target_slices, SliceTable& table);
 
  private:
   void fill_slices(const Circle& circle, int dir, SliceTable& table);
+  // Slices between bounds_, from the base heights arc_y_ and ground heights ground_y_ at the bounds.
+  void fill_from_bounds(int dir, SliceTable& table);
+  void slice_water(int i, double sdir, SliceTable& table) const;
+  // Slice boundaries bounds_ from the mass's ends and the sorted breaks_ inside it (xr appended here).
+  int place_bounds(double xl, double xr, int target_slices);
   bool shallow_gap(const Circle& circle, double x0, double x1) const;
 
   PreparedSection prepared_;
   std::vector<double> roots_, gaps_, breaks_, bounds_, arc_y_, ground_y_, line_y_;
   std::vector<char> root_is_contact_;
 };
+
+// Largest depth of a polyline's vertices below the chord joining its ends, perpendicular to the chord (m).
+double chord_depth(const std::vector<Point>& surface);
 
 // Conversions between the table and the public SlipMass (one place each).
 void table_to_mass(const SliceTable& table, SlipMass& mass);

@@ -46,7 +46,7 @@ void SliceTable::resize(int n) {
   for (std::vector<double>* v :
        {&x_left, &x_right, &width, &sin_a, &cos_a, &base_length, &base_x, &base_y, &top_y, &weight, &surcharge,
         &ponded, &water_thrust, &seismic, &cohesion, &tan_phi, &pore_pressure, &cohesion_force, &pore_force,
-        &vertical, &horizontal, &drive_moment, &shear_arm}) {
+        &vertical, &horizontal, &drive_moment, &shear_arm, &normal_arm}) {
     v->resize(capacity);
   }
   material.resize(capacity);
@@ -56,6 +56,11 @@ void SliceTable::resize(int n) {
 // mirrored so that sliding is toward +x' (x' = direction * (x - xc), y' = y - yc); a moment is positive when it
 // drives sliding (anticlockwise in the mirrored frame).
 void SliceTable::compute_loads() {
+  if (!circular) {
+    compute_polyline_arms();
+    add_crack_force();
+    return;
+  }
   const double xc = circle.xc;
   const double yc = circle.yc;
   const double dir = direction >= 0 ? 1.0 : -1.0;
@@ -78,6 +83,49 @@ void SliceTable::compute_loads() {
   }
   total_drive_moment = total;
   drive_moment_scale = scale;
+}
+
+// As the circle's loop above, about the moment point (xc, yc) of a polyline: the base normal N and shear S of slice
+// i act at the base midpoint P. With r = P - O in the mirrored frame, t = (cos a, -sin a) the base direction of
+// sliding and n = (sin a, cos a) the base normal into the mass, N n has the moment N (r . t) (normal_arm) and the
+// resisting shear -S t the moment -S (-(r . n)) (shear_arm = -(r . n), the distance from O to the base line when
+// O lies above it). For a circle r = -R n: shear arm R, normal arm 0.
+void SliceTable::compute_polyline_arms() {
+  const double xc = circle.xc;
+  const double yc = circle.yc;
+  const double dir = direction >= 0 ? 1.0 : -1.0;
+  double total = 0.0, scale = 0.0;
+  for (int i = 0; i < count; ++i) {
+    cohesion_force[i] = cohesion[i] * base_length[i];
+    pore_force[i] = pore_pressure[i] * base_length[i];
+    vertical[i] = weight[i] + surcharge[i] + ponded[i];
+    horizontal[i] = seismic[i] + water_thrust[i];
+    const double x_arm = dir * (base_x[i] - xc);
+    const double y_mid = 0.5 * (base_y[i] + top_y[i]) - yc;
+    const double y_top = top_y[i] - yc;
+    const double m = -x_arm * vertical[i] - y_mid * seismic[i] - y_top * water_thrust[i];
+    drive_moment[i] = m;
+    total += m;
+    scale += std::fabs(x_arm * vertical[i]) + std::fabs(y_mid * seismic[i]) + std::fabs(y_top * water_thrust[i]);
+    const double rx = x_arm;
+    const double ry = base_y[i] - yc;
+    shear_arm[i] = -(rx * sin_a[i] + ry * cos_a[i]);
+    normal_arm[i] = rx * cos_a[i] - ry * sin_a[i];
+  }
+  total_drive_moment = total;
+  drive_moment_scale = scale;
+}
+
+// The thrust of a water-filled crack acts on the upslope face of the upslope slice: a horizontal load of that
+// slice (force equilibrium) with its own line of action (moment equilibrium).
+void SliceTable::add_crack_force() {
+  if (crack_force == 0.0 || count < 1) return;
+  const int i = direction > 0 ? 0 : count - 1;
+  horizontal[i] += crack_force;
+  const double m = -(crack_force_y - circle.yc) * crack_force;
+  drive_moment[i] += m;
+  total_drive_moment += m;
+  drive_moment_scale += std::fabs(m);
 }
 
 PreparedSection::PreparedSection(const Section& section) {
@@ -284,6 +332,16 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
   for (std::size_t k = 1; k < ps.lines.size(); ++k) ps.lines[k].lower_arc_crossings(circle, xl, xr, breaks_);
   if (ps.has_water) ps.piezometric_line.lower_arc_crossings(circle, xl, xr, breaks_);
   std::sort(breaks_.begin(), breaks_.end());
+  if (place_bounds(xl, xr, target_slices) < 1) return Rejection::too_small;
+
+  fill_slices(circle, dir, table);
+  return Rejection::none;
+}
+
+// Slice boundaries: the ends, the breaks_ (sorted, inside the mass) and near-equal slices between them.
+// Returns the number of slices.
+int Slicer::place_bounds(double xl, double xr, int target_slices) {
+  const double span = xr - xl;
   breaks_.push_back(xr);
   const double target_width = span / std::max(1, target_slices);
   const double min_gap = 1e-6 * span;
@@ -301,11 +359,7 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
     bounds_.push_back(b);
     prev = b;
   }
-  const int n = static_cast<int>(bounds_.size()) - 1;
-  if (n < 1) return Rejection::too_small;
-
-  fill_slices(circle, dir, table);
-  return Rejection::none;
+  return static_cast<int>(bounds_.size()) - 1;
 }
 
 // Steps 4 and 5 of slice(): the slices between bounds_, their geometry, weights and loads.
@@ -318,7 +372,6 @@ void Slicer::fill_slices(const Circle& circle, int dir, SliceTable& table) {
     return circle.yc - std::sqrt(std::max(0.0, R2 - d * d));
   };
   // 4. Arc and ground at the boundaries.
-  const int n = static_cast<int>(bounds_.size()) - 1;
   arc_y_.resize(bounds_.size());
   ground_y_.resize(bounds_.size());
   for (std::size_t j = 0; j < bounds_.size(); ++j) {
@@ -327,10 +380,21 @@ void Slicer::fill_slices(const Circle& circle, int dir, SliceTable& table) {
   }
   arc_y_.front() = ground_y_.front();  // the ends lie on the ground
   arc_y_.back() = ground_y_.back();
-
-  // 5. Slices.
-  table.resize(n);
+  table.circular = true;
   table.circle = circle;
+  table.surface.clear();
+  table.crack_depth = table.crack_force = table.crack_force_y = table.chord_depth = 0.0;
+  fill_from_bounds(dir, table);
+  table.compute_loads();
+}
+
+// 5. The slices between bounds_ with the base heights arc_y_ and the ground heights ground_y_ at the bounds: their
+// geometry, weights and loads (compute_loads() is left to the caller).
+void Slicer::fill_from_bounds(int dir, SliceTable& table) {
+  const PreparedSection& ps = prepared_;
+  const IndexedPolyline& ground = ps.ground_line();
+  const int n = static_cast<int>(bounds_.size()) - 1;
+  table.resize(n);
   table.direction = dir;
   const Point p_left{bounds_.front(), ground_y_.front()};
   const Point p_right{bounds_.back(), ground_y_.back()};
@@ -391,24 +455,7 @@ void Slicer::fill_slices(const Circle& circle, int dir, SliceTable& table) {
     table.cohesion[i] = ps.line_cohesion[base_line];
     table.tan_phi[i] = ps.line_tan_phi[base_line];
 
-    double u = 0.0, ponded = 0.0, thrust = 0.0;
-    if (ps.has_water) {
-      u = ps.water_unit_weight * std::max(0.0, ps.piezometric_line.y(xm) - ybm);
-      // The piezometric line does not cross the ground inside a slice (the crossings are boundaries).
-      const double depth = ps.piezometric_line.mean(x0, x1) - ytm;
-      if (depth > 0.0) {
-        ponded = ps.water_unit_weight * depth * b;
-        // Water pressure p = gw (hw - G) normal to the ground pushes on the slice top with p G' per unit x toward
-        // +x: gw (d0^2 - d1^2) / 2 from the water depths d at the slice ends, exact for a level water surface
-        // over any number of ground vertices.
-        const double d0 = std::max(0.0, ps.piezometric_line.y(x0) - ground_y_[i]);
-        const double d1 = std::max(0.0, ps.piezometric_line.y(x1) - ground_y_[i + 1]);
-        thrust = sdir * 0.5 * ps.water_unit_weight * (d0 * d0 - d1 * d1);
-      }
-    }
-    table.pore_pressure[i] = u;
-    table.ponded[i] = ponded;
-    table.water_thrust[i] = thrust;
+    slice_water(i, sdir, table);
     table.seismic[i] = kh * weight;
 
     double q = 0.0;
@@ -419,11 +466,45 @@ void Slicer::fill_slices(const Circle& circle, int dir, SliceTable& table) {
     table.surcharge[i] = q;
   }
   table.max_depth = max_depth;
-  table.compute_loads();
+}
+
+// The water of slice i (between bounds_[i] and bounds_[i + 1], base and top heights already in the table): pore
+// pressure at the base midpoint, ponded water on the top and its horizontal thrust.
+void Slicer::slice_water(int i, double sdir, SliceTable& table) const {
+  const PreparedSection& ps = prepared_;
+  const double x0 = bounds_[i];
+  const double x1 = bounds_[i + 1];
+  const double b = x1 - x0;
+  const double xm = table.base_x[i];
+  const double ybm = table.base_y[i];
+  const double ytm = table.top_y[i];
+  double u = 0.0, ponded = 0.0, thrust = 0.0;
+  if (ps.has_water) {
+    u = ps.water_unit_weight * std::max(0.0, ps.piezometric_line.y(xm) - ybm);
+    // The piezometric line does not cross the ground inside a slice (the crossings are boundaries).
+    const double depth = ps.piezometric_line.mean(x0, x1) - ytm;
+    if (depth > 0.0) {
+      ponded = ps.water_unit_weight * depth * b;
+      // Water pressure p = gw (hw - G) normal to the ground pushes on the slice top with p G' per unit x toward
+      // +x: gw (d0^2 - d1^2) / 2 from the water depths d at the slice ends, exact for a level water surface
+      // over any number of ground vertices.
+      const double d0 = std::max(0.0, ps.piezometric_line.y(x0) - ground_y_[i]);
+      const double d1 = std::max(0.0, ps.piezometric_line.y(x1) - ground_y_[i + 1]);
+      thrust = sdir * 0.5 * ps.water_unit_weight * (d0 * d0 - d1 * d1);
+    }
+  }
+  table.pore_pressure[i] = u;
+  table.ponded[i] = ponded;
+  table.water_thrust[i] = thrust;
 }
 
 void table_to_mass(const SliceTable& t, SlipMass& mass) {
   mass.circle = t.circle;
+  mass.surface = t.surface;
+  mass.moment_point = Point{t.circle.xc, t.circle.yc};
+  mass.crack_depth = t.crack_depth;
+  mass.crack_water_force = t.crack_force;
+  mass.crack_water_force_y = t.crack_force_y;
   mass.entry = t.entry;
   mass.exit = t.exit;
   mass.direction = t.direction;
@@ -454,6 +535,13 @@ void mass_to_table(const SlipMass& mass, SliceTable& t) {
   const int n = static_cast<int>(mass.slices.size());
   t.resize(n);
   t.circle = mass.circle;
+  t.circular = mass.surface.empty();
+  t.surface = mass.surface;
+  t.chord_depth = t.circular ? 0.0 : chord_depth(mass.surface);
+  t.crack_depth = mass.crack_depth;
+  t.crack_force = mass.crack_water_force;
+  t.crack_force_y = mass.crack_water_force_y;
+  if (!t.circular) t.circle = Circle{mass.moment_point.x, mass.moment_point.y, 0.0};
   t.entry = mass.entry;
   t.exit = mass.exit;
   t.direction = mass.direction >= 0 ? 1 : -1;

@@ -1,5 +1,6 @@
 #pragma once
-// Slicing the sliding mass above a circular slip surface.
+// Slicing the sliding mass above a slip surface: a circle (slice_circle) or a polyline (slice_polyline), with an
+// optional tension crack at the upper end of a polyline.
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,13 +42,49 @@ struct Slice {
 };
 
 struct SlipMass {
+  // The circle of a circular surface. For a polyline surface (`surface` not empty): centre = the moment point,
+  // radius 0.
   Circle circle;
   Point entry;        // m, upper intersection with the ground surface (behind the crest)
   Point exit;         // m, lower intersection with the ground surface (near the toe)
   int direction = 1;  // +1: the mass slides toward +x; -1: toward -x
   std::vector<Slice> slices;
+  // Polyline surfaces only (empty for a circle): the surface analysed, left to right; with a tension crack it
+  // starts (or ends) at the bottom of the crack.
+  std::vector<Point> surface;
+  Point moment_point;             // m, point the moment equations take moments about (a circle: its centre)
+  double crack_depth = 0.0;       // m, depth of the tension crack at the upper end (0: no crack)
+  double crack_water_force = 0.0; // N/m, hydrostatic thrust of a water-filled crack, horizontal, toward sliding
+  double crack_water_force_y = 0.0;  // m, height of its line of action (a third of the crack above its bottom)
 };
 
+// A vertical tension crack at the upper end of a slip surface (LE practice, e.g. Duncan & Wright 2005, Soil
+// Strength and Slope Stability): the crack replaces the slip surface from the ground down to where the surface lies `depth` below the ground;
+// the soil above the cut-off part of the surface carries no shear. A water-filled crack pushes the mass toward its
+// exit with the hydrostatic thrust gw z^2 / 2, acting horizontally at z / 3 above the crack bottom.
+struct TensionCrack {
+  // m; empty: the Rankine depth z_c = 2 c' / (gamma sqrt(Ka)), Ka = tan^2(45 deg - phi' / 2), of the soil at the
+  // ground surface at the upper end (zero for a cohesionless soil: then there is no crack)
+  std::optional<double> depth;
+  bool water_filled = false;
+};
+
+// A slip surface given by its vertices.
+struct SlipPolyline {
+  // m, x strictly increasing; the first and last point on the ground surface (to 1e-6 of the section's size),
+  // every other point below the ground and none below bottom_y.
+  std::vector<Point> points;
+  // Point the moment equations (Ordinary, Bishop; Spencer and Morgenstern-Price also take moments, but their
+  // factor of safety does not depend on the point) take moments about. Empty: the centre of the circle through
+  // the entry, the exit and the point of the surface farthest below the entry-exit chord (as SLOPE/W's automatic
+  // axis; for a surface inscribed in a circle, that circle's centre). For a planar surface (no such circle) the
+  // point on the chord's perpendicular bisector one chord length above the chord.
+  std::optional<Point> moment_point;
+  std::optional<TensionCrack> tension_crack;
+  // rad, kinematic admissibility: in the direction of sliding no segment may be steeper than the one before it by
+  // more than this (the surface is concave upward: a convex kink would have the rigid slices overlap or open up).
+  double convex_tolerance = 0.0;
+};
 struct SliceOptions {
   int slices = 50;  // target number of slices (boundaries are also put at every profile vertex and material change)
 };
@@ -56,5 +93,17 @@ struct SliceOptions {
 // when the circle is not an admissible slip surface (does not cut the ground twice, passes below bottom_y, ...).
 std::optional<SlipMass> slice_circle(const Section& section, const Circle& circle, const SliceOptions& options,
                                      std::string* reason = nullptr);
+
+// Builds the slices of the mass between the ground surface and a polyline: slice boundaries at every vertex of the
+// polyline and where a profile line or the piezometric line crosses it (otherwise as slice_circle). Returns nullopt
+// and sets *reason when the polyline is not an admissible slip surface.
+std::optional<SlipMass> slice_polyline(const Section& section, const SlipPolyline& surface,
+                                       const SliceOptions& options, std::string* reason = nullptr);
+
+// The default moment point of a polyline (see SlipPolyline::moment_point).
+Point default_moment_point(const std::vector<Point>& points);
+
+// Rankine depth of a tension crack, 2 c' / (gamma sqrt(Ka)) with Ka = tan^2(pi/4 - phi'/2), in m.
+double rankine_crack_depth(const Material& material);
 
 }  // namespace slope
