@@ -110,9 +110,14 @@ int residual(const gsl_vector* x, void* params, gsl_vector* r) {
   const Sweep s = sweep(*p.table, p.f, F, lambda, nullptr);
   if (!s.finite) return GSL_EBADFUNC;
   gsl_vector_set(r, 0, s.end_force / p.force_scale);
-  // a polyline's base normal forces add to the driving moment (zero for a circle: they pass through its centre)
-  const double drive = p.table->circular ? p.table->total_drive_moment : p.table->total_drive_moment + s.normal_moment;
-  gsl_vector_set(r, 1, s.resisting_moment / (F * drive) - 1.0);
+  if (p.table->circular) {
+    gsl_vector_set(r, 1, s.resisting_moment / (F * p.table->total_drive_moment) - 1.0);
+  } else {
+    // A polyline's base normal forces have a moment too, which depends on the solution: the moment imbalance
+    // (resisting - driving) relative to the loads' moments, with no division by a driving moment that may vanish.
+    const double drive = p.table->total_drive_moment + s.normal_moment;
+    gsl_vector_set(r, 1, (s.resisting_moment / F - drive) / p.table->drive_moment_scale);
+  }
   return GSL_SUCCESS;
 }
 
@@ -149,7 +154,9 @@ MethodWorkspace::~MethodWorkspace() {
 
 Outcome general_limit_equilibrium(const SliceTable& t, MethodWorkspace& ws, bool half_sine, double guess) {
   Outcome out;
-  if (!t.driven()) {
+  // (On a polyline the loads' moment alone says nothing: the normal forces' moments depend on the moment point,
+  // while the solution does not.)
+  if (t.circular && !t.driven()) {
     out.failure = Failure::no_driving_moment;
     return out;
   }

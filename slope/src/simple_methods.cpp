@@ -195,6 +195,14 @@ double bishop_polyline_residual(double F, void* params) {
   return F * drive - resist;
 }
 
+// sum d (c' l + N' tan phi') of bishop_polyline_residual
+double bishop_polyline_resistance(const SliceTable& t, double F) {
+  double resist = 0.0;
+  for (int i = 0; i < t.count; ++i)
+    resist += t.shear_arm[i] * (t.cohesion_force[i] + simplified_normal(t, i, F) * t.tan_phi[i]);
+  return resist;
+}
+
 Outcome bishop_polyline(const SliceTable& t) {
   Outcome out;
   double f_min = 0.0;
@@ -244,6 +252,11 @@ Outcome bishop_polyline(const SliceTable& t) {
     return out;
   }
   const double F = out.factor_of_safety;
+  // F D(F) = R(F) with D <= 0 is a root with a non-positive driving moment (R < 0): not a factor of safety
+  if (!(bishop_polyline_residual(F, params) + bishop_polyline_resistance(t, F) > 1e-9 * F * t.drive_moment_scale)) {
+    out.failure = Failure::no_driving_moment;
+    return out;
+  }
   strengths_non_negative(t, [&](int i) { return simplified_normal(t, i, F); }, out);
   return out;
 }
@@ -258,6 +271,10 @@ Outcome ordinary_polyline(const SliceTable& t) {
     const double effective_normal = normal(i);
     resisting += t.shear_arm[i] * (t.cohesion_force[i] + effective_normal * t.tan_phi[i]);
     drive += t.normal_arm[i] * (effective_normal + t.pore_force[i]);
+  }
+  if (!(drive > 1e-9 * t.drive_moment_scale)) {
+    out.failure = Failure::no_driving_moment;
+    return out;
   }
   out.factor_of_safety = resisting / drive;
   out.iterations = 1;
@@ -274,11 +291,11 @@ Outcome ordinary_polyline(const SliceTable& t) {
 Outcome ordinary_method(const SliceTable& t) {
   Outcome out;
   const double moment = t.total_drive_moment;
+  if (!t.circular) return ordinary_polyline(t);  // (its driving moment includes the base normal forces')
   if (!t.driven()) {
     out.failure = Failure::no_driving_moment;
     return out;
   }
-  if (!t.circular) return ordinary_polyline(t);
   double resisting = 0.0;
   for (int i = 0; i < t.count; ++i) {
     // Fellenius: interslice forces ignored; N' = V cos a - H sin a - u l
@@ -299,11 +316,11 @@ Outcome ordinary_method(const SliceTable& t) {
 Outcome bishop_method(const SliceTable& t, MethodWorkspace& ws) {
   Outcome out;
   const double moment = t.total_drive_moment;
+  if (!t.circular) return bishop_polyline(t);  // (its driving moment includes the base normal forces')
   if (!t.driven()) {
     out.failure = Failure::no_driving_moment;
     return out;
   }
-  if (!t.circular) return bishop_polyline(t);
   const int n = t.count;
   ws.reserve_ratio_terms(n);
   double* w = ws.numerator.data();

@@ -84,6 +84,8 @@ const BadScene bad_scenes[] = {
     // Found by scripts/fuzz: the particle and step counts of an absurd spacing overflowed their integer types.
     {"spacing_absurdly_small.json", "check", "more than analyses.sph.max_particles = 5000000"},
     {"lem_without_section.json", "check", "analyses.lem: limit equilibrium needs a \"section\""},
+    {"slip_surface_above_ground.json", "check",
+     "analyses.lem.surfaces[0]: not an admissible slip surface: point 1 (25, 19) is not below the ground surface"},
     // Valid on its own; only the search itself finds that the limits admit no slip circle.
     {"no_valid_circle.json", "lem", "analyses.lem.search: the search limits admit no valid slip circle"},
 };

@@ -8,6 +8,23 @@
 
 namespace coupling {
 
+std::vector<GivenSurfaceResult> analyse_given_surfaces(const slope::Section& section, const LemAnalysis& analysis) {
+  std::vector<GivenSurfaceResult> out;
+  for (const GivenSurface& given : analysis.surfaces) {
+    GivenSurfaceResult surface{given.name, {}};
+    std::string reason;
+    const auto mass = slope::slice_polyline(section, given.polyline, analysis.search.slicing, &reason);
+    for (slope::Method method : analysis.methods) {
+      slope::CriticalSurface result{method, mass, {}};
+      if (mass) result.result = slope::factor_of_safety(*mass, method, true);
+      else result.result.error = "not an admissible slip surface: " + reason;
+      surface.methods.push_back(std::move(result));
+    }
+    out.push_back(std::move(surface));
+  }
+  return out;
+}
+
 StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
   const LemAnalysis& analysis = *context.lem;
   WorkflowResult& out = context.out;
@@ -38,7 +55,8 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back("lem: the automatic search found no valid slip circle: " + result.error);
   }
-  out.report["lem"] = lem_report(section, analysis, result);
+  out.lem_surfaces = analyse_given_surfaces(section, analysis);
+  out.report["lem"] = lem_report(section, analysis, result, out.lem_surfaces);
   if (outcome.status == ExitStatus::ok) {
     bool any = false;
     for (const slope::CriticalSurface& critical : result.methods) {

@@ -48,6 +48,29 @@ nlohmann::json slice_report(const slope::Section& section, const slope::Slice& s
   return s;
 }
 
+// The slip surface of a mass: a circle, or a polyline with its moment point and tension crack.
+nlohmann::json surface_report(const slope::SlipMass& mass) {
+  nlohmann::json s;
+  if (mass.surface.empty()) {
+    s = {{"type", "circle"},
+         {"center_m", nlohmann::json::array({mass.circle.xc, mass.circle.yc})},
+         {"radius_m", mass.circle.radius}};
+  } else {
+    s = {{"type", "polyline"},
+         {"points_m", polyline_json(mass.surface)},
+         {"moment_point_m", point_json(mass.moment_point)}};
+    if (mass.crack_depth > 0.0)
+      s["tension_crack"] = {{"depth_m", mass.crack_depth},
+                            {"water_force_kN_m", mass.crack_water_force * to_kilo},
+                            {"water_force_y_m", mass.crack_water_force > 0.0 ? nlohmann::json(mass.crack_water_force_y)
+                                                                             : nlohmann::json(nullptr)}};
+  }
+  s["entry_m"] = point_json(mass.entry);
+  s["exit_m"] = point_json(mass.exit);
+  s["slides_toward"] = mass.direction >= 0 ? "+x" : "-x";
+  return s;
+}
+
 }  // namespace
 
 std::string_view program_version() { return SPHSLOPE_VERSION; }
@@ -76,12 +99,7 @@ nlohmann::json method_report(const slope::Section& section, const slope::Critica
   m["iterations"] = result.iterations;
 
   const slope::SlipMass& mass = *critical.mass;
-  m["surface"] = {{"type", "circle"},
-                  {"center_m", nlohmann::json::array({mass.circle.xc, mass.circle.yc})},
-                  {"radius_m", mass.circle.radius},
-                  {"entry_m", point_json(mass.entry)},
-                  {"exit_m", point_json(mass.exit)},
-                  {"slides_toward", mass.direction >= 0 ? "+x" : "-x"}};
+  m["surface"] = surface_report(mass);
   const bool with_forces = result.forces.size() == mass.slices.size();
   nlohmann::json slices = nlohmann::json::array();
   for (std::size_t i = 0; i < mass.slices.size(); ++i) {
@@ -92,7 +110,7 @@ nlohmann::json method_report(const slope::Section& section, const slope::Critica
 }
 
 nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& analysis,
-                          const slope::SearchResult& result) {
+                          const slope::SearchResult& result, const std::vector<GivenSurfaceResult>& surfaces) {
   nlohmann::json lem;
   nlohmann::json method_keys = nlohmann::json::array();
   for (slope::Method method : analysis.methods) method_keys.push_back(slope::method_key(method));
@@ -132,6 +150,16 @@ nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& anal
                    {"fs_map_method", analysis.methods.empty() ? "" : std::string(slope::method_key(analysis.methods[0]))},
                    {"fs_map", std::move(map)}};
   if (!result.error.empty()) lem["search"]["error"] = result.error;
+  if (!surfaces.empty()) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const GivenSurfaceResult& surface : surfaces) {
+      nlohmann::json per_method = nlohmann::json::object();
+      for (const slope::CriticalSurface& critical : surface.methods)
+        per_method[std::string(slope::method_key(critical.method))] = method_report(section, critical);
+      list.push_back({{"name", surface.name}, {"methods", std::move(per_method)}});
+    }
+    lem["surfaces"] = std::move(list);
+  }
   return lem;
 }
 

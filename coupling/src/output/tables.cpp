@@ -48,4 +48,23 @@ std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& re
   return trimmed;
 }
 
+std::string given_surfaces_table(const std::vector<GivenSurfaceResult>& surfaces) {
+  std::string text;
+  char line[512];
+  for (const GivenSurfaceResult& surface : surfaces) {
+    text += "given surface \"" + surface.name + "\":\n";
+    for (const slope::CriticalSurface& method : surface.methods) {
+      const std::string key(slope::method_key(method.method));
+      if (method.result.factor_of_safety) {
+        std::snprintf(line, sizeof line, "  %-27s %7.3f\n", key.c_str(), *method.result.factor_of_safety);
+        text += line;
+      } else {
+        std::snprintf(line, sizeof line, "  %-27s %7s  failed: ", key.c_str(), "-");
+        text += line + method.result.error + "\n";
+      }
+    }
+  }
+  return text;
+}
+
 }  // namespace coupling

@@ -138,6 +138,8 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
     }
     search->finish();
   }
+  read_given_surfaces(*lem, scene.section ? &scene.section->section : nullptr, result.search.slicing,
+                      result.surfaces);
   lem->finish();
 
   if (!scene.section) {

@@ -26,6 +26,11 @@ bool read_search_limits(JsonReader& search, const slope::Section* section, slope
 // analyses.lem.search.minimum_depth_m (m), when given.
 std::optional<double> read_minimum_depth(JsonReader& search);
 
+// Reads analyses.lem.surfaces (slip surfaces given as polylines, with optional moment point and tension crack) into
+// `surfaces`; each is checked admissible on `section` (when valid) and refused at its JSON path with the reason.
+void read_given_surfaces(JsonReader& lem, const slope::Section* section, const slope::SliceOptions& slicing,
+                         std::vector<GivenSurface>& surfaces);
+
 // The raw blocks of the scene that the SPH readers take (pointers into the parsed document; null when absent).
 struct SphBlocks {
   const nlohmann::json* sph = nullptr;      // analyses.sph, when it is an object

@@ -34,6 +34,15 @@ struct WorkflowOptions {
   bool resume = false;                              // SPH: continue from output_dir/checkpoint.bin
 };
 
+// A slip surface given in the scene (analyses.lem.surfaces), analysed with every method asked for.
+struct GivenSurfaceResult {
+  std::string name;
+  std::vector<slope::CriticalSurface> methods;  // in the order asked for, each with the mass and its forces
+};
+
+// Slices each surface of analysis.surfaces and solves it with every method of the analysis.
+std::vector<GivenSurfaceResult> analyse_given_surfaces(const slope::Section& section, const LemAnalysis& analysis);
+
 struct WorkflowResult {
   ExitStatus status = ExitStatus::ok;
   std::optional<Scene> scene;                     // set once the scene is valid
@@ -41,6 +50,7 @@ struct WorkflowResult {
   std::vector<std::string> rejections;            // not accepted: one line per failed acceptance criterion
   nlohmann::json report;                          // null when the input was invalid or in check mode
   std::optional<slope::SearchResult> lem;         // the limit-equilibrium result, for the table
+  std::vector<GivenSurfaceResult> lem_surfaces;   // the given slip surfaces (analyses.lem.surfaces), for the table
   std::optional<std::filesystem::path> report_file;  // where report.json was written
   std::optional<ParticleSnapshot> sph_final_state;   // soil particles at the end of the SPH analysis
 };

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/analyses/pipeline.hpp"
 #include "coupling/scene/scene.hpp"
 #include "slope/search.hpp"
 
@@ -20,13 +21,14 @@ std::string_view program_version();
 nlohmann::json report_header(const Scene& scene);
 
 // One critical surface: factor_of_safety (or null and "error"), lambda (Spencer, Morgenstern-Price), iterations,
-// surface {type, center_m, radius_m, entry_m, exit_m, slides_toward}, slices [...].
+// surface {type "circle", center_m, radius_m | type "polyline", points_m, moment_point_m, tension_crack; entry_m,
+// exit_m, slides_toward}, slices [...].
 nlohmann::json method_report(const slope::Section& section, const slope::CriticalSurface& critical);
 
-// The "lem" block: settings, methods (keyed by method key, in the order asked for) and search {trial_surfaces,
-// seconds, fs_map_method, fs_map}.
+// The "lem" block: settings, methods (keyed by method key, in the order asked for), search {trial_surfaces,
+// seconds, fs_map_method, fs_map} and, when the scene gave slip surfaces, surfaces [{name, methods}].
 nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& analysis,
-                          const slope::SearchResult& result);
+                          const slope::SearchResult& result, const std::vector<GivenSurfaceResult>& surfaces = {});
 
 // Pretty-printed JSON text of a report, ending in a newline.
 std::string report_text(const nlohmann::json& report);

@@ -2,6 +2,9 @@
 // Fixed-width text tables for the terminal.
 #include <string>
 
+#include <vector>
+
+#include "coupling/analyses/pipeline.hpp"
 #include "coupling/scene/scene.hpp"
 #include "slope/search.hpp"
 
@@ -9,5 +12,8 @@ namespace coupling {
 
 // Fixed-width table of the critical surface per method (FS, centre, radius, entry, exit) and the search totals.
 std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& result);
+
+// One line per given slip surface (analyses.lem.surfaces) and method: FS, or why there is none.
+std::string given_surfaces_table(const std::vector<GivenSurfaceResult>& surfaces);
 
 }  // namespace coupling

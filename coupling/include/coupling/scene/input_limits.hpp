@@ -51,6 +51,13 @@ inline constexpr SizeLimit materials{
 // section.surcharges: each strip load is integrated over every slice of every trial surface.
 inline constexpr SizeLimit surcharges{
     1000, "surcharges", "each strip load is integrated over every slice of every trial surface"};
+// analyses.lem.surfaces: each surface is sliced and solved with every method.
+inline constexpr SizeLimit slip_surfaces{
+    100, "surfaces", "each given slip surface is sliced and solved with every method, and reported slice by slice"};
+// analyses.lem.surfaces[i].points_m: every vertex is a slice boundary.
+inline constexpr SizeLimit slip_surface_points{
+    10'000, "points", "every vertex of a slip surface is a slice boundary: a surface of 10 000 slices is far finer "
+                      "than the method of slices needs"};
 // bodies: each body is filled with particles separately.
 inline constexpr SizeLimit bodies{1000, "bodies", "each body is filled with particles and checked separately"};
 // bodies[i].polygon_m: filling tests lattice points against the polygon's edges.

@@ -34,8 +34,15 @@ struct SceneSection {
   std::vector<SoilMaterial> materials;   // same order as section.materials
 };
 
+// analyses.lem.surfaces[i]: a slip surface given by the user, analysed with every method besides the search.
+struct GivenSurface {
+  std::string name;              // "name", default "surface <i>"
+  slope::SlipPolyline polyline;  // points, moment point, tension crack, convex tolerance (SI)
+};
+
 // analyses.lem, with every default applied.
 struct LemAnalysis {
+  std::vector<GivenSurface> surfaces;   // analyses.lem.surfaces, checked admissible on the section
   std::vector<slope::Method> methods;   // default: slope::all_methods()
   slope::SearchOptions search;          // slicing.slices default 50, refine default true, limits optional
   bool has_search_limits = false;       // the scene gave analyses.lem.search limits (or a minimum depth)

@@ -1,0 +1,95 @@
+// analyses.lem.surfaces: slip surfaces given as polylines, with an optional moment point and tension crack.
+// Keys, units and defaults: docs/scene-format.md.
+#include <cmath>
+#include <string>
+
+#include "scene_internal.hpp"
+#include "sphslope/units.hpp"
+
+namespace coupling {
+
+namespace {
+
+// analyses.lem.surfaces[i].tension_crack: {"depth_m": z} or {"rankine": true}, and "water_filled".
+std::optional<slope::TensionCrack> read_tension_crack(JsonReader& crack) {
+  slope::TensionCrack out;
+  const auto depth = crack.number("depth_m", Need::optional, Bounds::positive());
+  const auto rankine = crack.boolean("rankine", Need::optional);
+  out.water_filled = crack.boolean("water_filled", Need::optional).value_or(false);
+  crack.finish();
+  const bool asks_rankine = rankine.value_or(false);
+  if (depth && asks_rankine) {
+    crack.diagnostics().error(crack.path(), "give either depth_m or \"rankine\": true, not both");
+    return std::nullopt;
+  }
+  if (!depth && !asks_rankine) {
+    if (!crack.has("depth_m"))
+      crack.diagnostics().error(crack.path(), "needs a depth: \"depth_m\": <m> or \"rankine\": true (the Rankine "
+                                              "depth 2c'/(gamma sqrt(Ka)) of the soil at the upper end)");
+    return std::nullopt;
+  }
+  out.depth = depth;
+  return out;
+}
+
+// One element of analyses.lem.surfaces; nullopt when anything in it is invalid.
+std::optional<GivenSurface> read_one_surface(const nlohmann::json& value, const std::string& path, std::size_t index,
+                                             Diagnostics& diagnostics) {
+  const std::size_t faults_before = diagnostics.size();
+  JsonReader surface(value, path, diagnostics);
+  if (!surface.is_object()) return std::nullopt;
+  GivenSurface out;
+  out.name = surface.string("name", Need::optional).value_or("surface " + std::to_string(index));
+  bool ok = true;
+  if (const nlohmann::json* points = surface.array("points_m", Need::required, 2, limits::slip_surface_points,
+                                                   "an array of at least two points [x_m, y_m]")) {
+    for (std::size_t k = 0; k < points->size(); ++k) {
+      const auto point = read_pair((*points)[k], index_path(surface.path_of("points_m"), k), diagnostics,
+                                   "a point [x_m, y_m]");
+      if (point) out.polyline.points.push_back(slope::Point{point->first, point->second});
+      else ok = false;
+    }
+  } else {
+    ok = false;
+  }
+  if (const nlohmann::json* point = surface.raw("moment_point_m", Need::optional)) {
+    const auto pair = read_pair(*point, surface.path_of("moment_point_m"), diagnostics, "a point [x_m, y_m]");
+    if (pair) out.polyline.moment_point = slope::Point{pair->first, pair->second};
+    else ok = false;
+  }
+  if (const auto tolerance = surface.number("convex_tolerance_deg", Need::optional, Bounds::half_open(0.0, 90.0)))
+    out.polyline.convex_tolerance = *tolerance * sphslope::degree;
+  if (auto crack = surface.object("tension_crack", Need::optional)) {
+    out.polyline.tension_crack = read_tension_crack(*crack);
+    ok = ok && out.polyline.tension_crack.has_value();
+  }
+  surface.finish();
+  if (!ok || diagnostics.size() != faults_before) return std::nullopt;
+  return out;
+}
+
+}  // namespace
+
+void read_given_surfaces(JsonReader& lem, const slope::Section* section, const slope::SliceOptions& slicing,
+                         std::vector<GivenSurface>& surfaces) {
+  Diagnostics& diagnostics = lem.diagnostics();
+  const nlohmann::json* list = lem.array("surfaces", Need::optional, 1, limits::slip_surfaces,
+                                         "an array of slip surfaces {\"points_m\": [[x, y], ...], ...}");
+  if (list == nullptr) return;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string path = index_path(lem.path_of("surfaces"), i);
+    auto surface = read_one_surface((*list)[i], path, i, diagnostics);
+    if (!surface) continue;
+    // Admissibility on the section: a surface that cannot be analysed is a fault of the input.
+    if (section != nullptr && slope::section_error(*section).empty()) {
+      std::string reason;
+      if (!slope::slice_polyline(*section, surface->polyline, slicing, &reason)) {
+        diagnostics.error(path, "not an admissible slip surface: " + reason);
+        continue;
+      }
+    }
+    surfaces.push_back(std::move(*surface));
+  }
+}
+
+}  // namespace coupling
