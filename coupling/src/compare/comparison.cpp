@@ -1,4 +1,5 @@
 #include "coupling/compare/comparison.hpp"
+#include "coupling/compare/sph_surface_lem.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -133,9 +134,16 @@ SphCircleMass sph_circle_mass(const slope::Section& section, const SphFailure& s
   return out;
 }
 
-// The method's minimum FS next to its FS on the SPH circle.
+// The method's minimum FS next to its FS on the SPH circle and on the SPH surface itself.
 void compare_factors(const slope::CriticalSurface& critical, const SphFailure& sph, const SphCircleMass& sph_mass,
-                     MethodComparison& m) {
+                     const SphSurfaceForLem& surface, MethodComparison& m) {
+  if (surface.mass) {
+    const auto on_surface = slope::factor_of_safety(*surface.mass, critical.method);
+    m.factor_of_safety_on_sph_surface = on_surface.factor_of_safety;
+    if (!on_surface.factor_of_safety) m.on_sph_surface_error = on_surface.error;
+  } else {
+    m.on_sph_surface_error = "the SPH surface is not an admissible slip surface: " + surface.reason;
+  }
   m.lem_factor_of_safety = critical.result.factor_of_safety;
   if (sph_mass.mass) {
     const auto on_sph = slope::factor_of_safety(*sph_mass.mass, critical.method);
@@ -169,12 +177,13 @@ std::string verdict_text(const std::string& key, const slope::CriticalSurface& c
 
 // The comparison with one method's critical surface; `verdict` is set when this method tells it.
 MethodComparison compare_method(const slope::CriticalSurface& critical, const SphFailure& sph,
-                                const SphCircleMass& sph_mass, const Polyline& ground, const Polyline& sph_polygon,
-                                bool tells_verdict, std::optional<std::string>& verdict) {
+                                const SphCircleMass& sph_mass, const SphSurfaceForLem& sph_surface,
+                                const Polyline& ground, const Polyline& sph_polygon, bool tells_verdict,
+                                std::optional<std::string>& verdict) {
   const std::string key(slope::method_key(critical.method));
   MethodComparison m;
   m.method = key;
-  compare_factors(critical, sph, sph_mass, m);
+  compare_factors(critical, sph, sph_mass, sph_surface, m);
   if (!critical.mass || sph.band.points.size() < 2) return m;
   const auto& mass = *critical.mass;
   const Polyline lem_line = lem_surface_polyline(mass);
@@ -199,6 +208,20 @@ MethodComparison compare_method(const slope::CriticalSurface& critical, const Sp
   return m;
 }
 
+// The verdict's sentence on the LE factor of safety of the SPH surface itself (Bishop's, else the first method's).
+std::string like_for_like_text(const ComparisonResult& result) {
+  const MethodComparison* m = result.find("bishop");
+  if (m == nullptr && !result.methods.empty()) m = &result.methods.front();
+  if (m == nullptr || !m->factor_of_safety_on_sph_surface || !result.sph_surface_mass) return {};
+  std::ostringstream text;
+  text << " Limit equilibrium on the SPH surface itself";
+  if (result.sph_surface_mass->crack_depth > 0.0)
+    text << " (its scarp as a " << format("%.2f m", result.sph_surface_mass->crack_depth) << " tension crack)";
+  text << ": FS = " << format("%.3f", *m->factor_of_safety_on_sph_surface) << " (" << m->method << ", against "
+       << format("%.3f", m->lem_factor_of_safety.value_or(std::nan(""))) << " on its critical circle).";
+  return text.str();
+}
+
 }  // namespace
 
 const MethodComparison* ComparisonResult::find(const std::string& method) const {
@@ -218,6 +241,13 @@ ComparisonResult compare_with_lem(const slope::Section& section, const SphFailur
   const SphCircleMass sph_mass = sph_circle_mass(section, sph);
   result.circle_raised_for_lem_m = sph_mass.raised;
   const Polyline sph_polygon = sliding_mass_polygon(ground, sph.band.points);
+  // ... and on the SPH surface itself.
+  const SphSurfaceForLem sph_surface = sph_surface_for_lem(section, sph);
+  result.sph_surface_for_lem = sph_surface.polyline;
+  result.sph_surface_mass = sph_surface.mass;
+  result.sph_surface_for_lem_error = sph_surface.mass ? std::string() : sph_surface.reason;
+  result.sph_scarp_angle = sph_surface.scarp_angle;
+  result.sph_largest_convex_kink = sph_surface.largest_convex_kink;
 
   bool has_bishop = false;
   for (const auto& critical : lem.methods)
@@ -226,11 +256,13 @@ ComparisonResult compare_with_lem(const slope::Section& section, const SphFailur
   for (const auto& critical : lem.methods) {
     // The verdict is told against Bishop's circle when Bishop was asked for, else the first method with a surface.
     const bool tells_verdict = critical.method == slope::Method::bishop || !has_bishop;
-    result.methods.push_back(compare_method(critical, sph, sph_mass, ground, sph_polygon, tells_verdict, verdict));
+    result.methods.push_back(
+        compare_method(critical, sph, sph_mass, sph_surface, ground, sph_polygon, tells_verdict, verdict));
   }
   result.verdict = verdict ? *verdict
                            : std::string("No comparison: the SPH run shows no plastic band above the threshold "
                                          "or no LEM method found a critical surface.");
+  if (verdict) result.verdict += like_for_like_text(result);
   return result;
 }
 

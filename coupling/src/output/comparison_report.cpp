@@ -3,6 +3,7 @@
 #include <string>
 
 #include "coupling/output/json_values.hpp"
+#include "sphslope/units.hpp"
 
 namespace coupling {
 
@@ -27,6 +28,21 @@ nlohmann::json sph_surface_json(const ComparisonResult& c) {
     surface["fitted_circle"] = nullptr;
   }
   surface["circle_raised_for_lem_m"] = c.circle_raised_for_lem_m;
+  nlohmann::json for_lem;
+  if (c.sph_surface_mass) {
+    const slope::SlipMass& mass = *c.sph_surface_mass;
+    for_lem = {{"points_m", polyline_json(mass.surface)},
+               {"entry_m", point_json(mass.entry)},
+               {"exit_m", point_json(mass.exit)},
+               {"tension_crack_depth_m", mass.crack_depth},
+               {"scarp_angle_deg", sphslope::degrees(c.sph_scarp_angle)},
+               {"largest_convex_kink_deg", sphslope::degrees(c.sph_largest_convex_kink)},
+               {"moment_point_m", point_json(mass.moment_point)},
+               {"slices", mass.slices.size()}};
+  } else {
+    for_lem = {{"error", c.sph_surface_for_lem_error}};
+  }
+  surface["as_lem_surface"] = std::move(for_lem);
   return surface;
 }
 
@@ -35,6 +51,8 @@ nlohmann::json method_json(const MethodComparison& m) {
   out["lem_factor_of_safety"] = optional_number(m.lem_factor_of_safety);
   out["factor_of_safety_on_sph_circle"] = optional_number(m.factor_of_safety_on_sph_circle);
   if (m.on_sph_circle_error) out["factor_of_safety_on_sph_circle_error"] = *m.on_sph_circle_error;
+  out["factor_of_safety_on_sph_surface"] = optional_number(m.factor_of_safety_on_sph_surface);
+  if (m.on_sph_surface_error) out["factor_of_safety_on_sph_surface_error"] = *m.on_sph_surface_error;
   if (!m.has_geometry) return out;
   if (m.entry_offset_m) out["entry_offset_m"] = point_json(*m.entry_offset_m);
   if (m.exit_offset_m) out["exit_offset_m"] = point_json(*m.exit_offset_m);

@@ -37,6 +37,8 @@ struct MethodComparison {
   std::optional<double> lem_factor_of_safety;             // its minimum FS (none: the method failed)
   std::optional<double> factor_of_safety_on_sph_circle;   // its FS on the SPH fitted circle
   std::optional<std::string> on_sph_circle_error;         // why that FS is missing
+  std::optional<double> factor_of_safety_on_sph_surface;  // its FS on the SPH band line itself (sph_surface_lem.hpp)
+  std::optional<std::string> on_sph_surface_error;        // why that FS is missing
   bool has_geometry = false;                              // the figures below are set (both surfaces exist)
   std::optional<slope::Point> entry_offset_m, exit_offset_m;  // SPH - LEM (when the SPH band has ends)
   double common_from_x_m = 0, common_to_x_m = 0;
@@ -51,6 +53,12 @@ struct ComparisonResult {
   SphFailure sph;
   bool initial_configuration = true;  // the band is drawn on the initial particle positions
   double circle_raised_for_lem_m = 0;  // the SPH circle was raised this much to clear the base
+  // the SPH band line as an LE slip surface: what was analysed (polyline, crack), or why it could not be
+  std::optional<slope::SlipPolyline> sph_surface_for_lem;
+  std::optional<slope::SlipMass> sph_surface_mass;
+  std::string sph_surface_for_lem_error;
+  double sph_scarp_angle = 0;  // rad
+  double sph_largest_convex_kink = 0;  // rad
   std::vector<MethodComparison> methods;  // in the order of the LE result
   std::string verdict;                    // plain language
   std::optional<AcceptanceResult> acceptance;
