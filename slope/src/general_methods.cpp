@@ -152,6 +152,47 @@ MethodWorkspace::~MethodWorkspace() {
   if (start != nullptr) gsl_vector_free(start);
 }
 
+namespace {
+
+// The checks of a (F, lambda) root; false (and `out` filled) when it is not acceptable.
+bool acceptable_solution(const SliceTable& t, MethodWorkspace& ws, double F, double lambda, Outcome& out) {
+  // Whitman & Bailey (1967) check at the solution, and a sane recursion (1 + lambda f k / m_a must stay positive:
+  // otherwise the interslice forces change sign through a pole).
+  const int n = t.count;
+  for (int k = 0; k < n; ++k) {
+    const int i = t.direction > 0 ? k : n - 1 - k;
+    const double c = t.cos_a[i];
+    const double s = t.sin_a[i];
+    const double m = c + s * t.tan_phi[i] / F;
+    if (s < 0.0 && m < minimum_m_alpha) {
+      out.failure = Failure::m_alpha;
+      out.slice = i;
+      out.value = m;
+      return false;
+    }
+    const double kk = (s - t.tan_phi[i] * c / F) / m;
+    if (1.0 + lambda * ws.interface_function[k] * kk <= 0.0) {
+      out.failure = Failure::singular_recursion;
+      out.slice = i;
+      return false;
+    }
+  }
+  // Acceptability: no slice base may need a negative shear strength (an effective normal tension beyond the
+  // Mohr-Coulomb apex, N' < -c' l / tan phi'). Roots on steep slopes with cohesion can balance the equations
+  // that way, with interslice tensions many times the slice weights; they are not physical.
+  ws.forces.resize(static_cast<std::size_t>(n));
+  const Sweep check = sweep(t, ws.interface_function.data(), F, lambda, ws.forces.data());
+  if (check.weakest_slice >= 0 && check.weakest_strength < -1e-9) {
+    out.failure = Failure::negative_strength;
+    out.slice = check.weakest_slice;
+    out.value = lambda;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 Outcome general_limit_equilibrium(const SliceTable& t, MethodWorkspace& ws, bool half_sine, double guess) {
   Outcome out;
   // (On a polyline the loads' moment alone says nothing: the normal forces' moments depend on the moment point,
@@ -208,38 +249,7 @@ Outcome general_limit_equilibrium(const SliceTable& t, MethodWorkspace& ws, bool
     out.value = lambda;
     return out;
   }
-  // Whitman & Bailey (1967) check at the solution, and a sane recursion (1 + lambda f k / m_a must stay positive:
-  // otherwise the interslice forces change sign through a pole).
-  const int n = t.count;
-  for (int k = 0; k < n; ++k) {
-    const int i = t.direction > 0 ? k : n - 1 - k;
-    const double c = t.cos_a[i];
-    const double s = t.sin_a[i];
-    const double m = c + s * t.tan_phi[i] / F;
-    if (s < 0.0 && m < minimum_m_alpha) {
-      out.failure = Failure::m_alpha;
-      out.slice = i;
-      out.value = m;
-      return out;
-    }
-    const double kk = (s - t.tan_phi[i] * c / F) / m;
-    if (1.0 + lambda * ws.interface_function[k] * kk <= 0.0) {
-      out.failure = Failure::singular_recursion;
-      out.slice = i;
-      return out;
-    }
-  }
-  // Acceptability: no slice base may need a negative shear strength (an effective normal tension beyond the
-  // Mohr-Coulomb apex, N' < -c' l / tan phi'). Roots on steep slopes with cohesion can balance the equations
-  // that way, with interslice tensions many times the slice weights; they are not physical.
-  ws.forces.resize(static_cast<std::size_t>(n));
-  const Sweep check = sweep(t, ws.interface_function.data(), F, lambda, ws.forces.data());
-  if (check.weakest_slice >= 0 && check.weakest_strength < -1e-9) {
-    out.failure = Failure::negative_strength;
-    out.slice = check.weakest_slice;
-    out.value = lambda;
-    return out;
-  }
+  if (!acceptable_solution(t, ws, F, lambda, out)) return out;
   out.factor_of_safety = F;
   out.lambda = lambda;
   return out;
