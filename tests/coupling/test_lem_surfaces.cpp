@@ -62,6 +62,7 @@ TEST_CASE("scene: given slip surfaces are read, analysed with every method and r
   const coupling::LemAnalysis& lem = *scene.analyses.lem;
   REQUIRE(lem.surfaces.size() == 2);
   CHECK(lem.surfaces[0].name == "wedge");
+  CHECK(coupling::summarize(scene).find("lem (4 methods, 2 given slip surfaces)") != std::string::npos);
   CHECK(lem.surfaces[1].name == "surface 1");
   CHECK(lem.surfaces[0].polyline.tension_crack->depth == 2.0);
   CHECK_FALSE(lem.surfaces[1].polyline.tension_crack->depth.has_value());

@@ -365,7 +365,11 @@ std::string summarize(const Scene& scene) {
   std::vector<std::string> analyses;
   if (scene.analyses.lem) {
     const std::size_t n = scene.analyses.lem->methods.size();
-    analyses.push_back("lem (" + std::to_string(n) + " method" + (n == 1 ? "" : "s") + ")");
+    const std::size_t given = scene.analyses.lem->surfaces.size();
+    analyses.push_back("lem (" + std::to_string(n) + " method" + (n == 1 ? "" : "s") +
+                       (given > 0 ? ", " + std::to_string(given) + " given slip surface" + (given == 1 ? "" : "s")
+                                  : std::string()) +
+                       ")");
   }
   if (scene.analyses.sph) analyses.emplace_back("sph");
   if (scene.analyses.compare) analyses.emplace_back("compare");
