@@ -252,6 +252,27 @@ double rankine_crack_depth(const Material& material) {
   return 2.0 * material.cohesion / (material.unit_weight * std::sqrt(ka));
 }
 
+std::optional<SlipPolyline> circle_as_polyline(const Section& section, const Circle& circle, int segments,
+                                               std::string* reason) {
+  const auto mass = slice_circle(section, circle, SliceOptions{}, reason);
+  if (!mass) return std::nullopt;
+  const Point left = mass->direction > 0 ? mass->entry : mass->exit;
+  const Point right = mass->direction > 0 ? mass->exit : mass->entry;
+  // angle from the downward vertical through the centre: x = xc + R sin t, y = yc - R cos t
+  const double t0 = std::atan2(left.x - circle.xc, circle.yc - left.y);
+  const double t1 = std::atan2(right.x - circle.xc, circle.yc - right.y);
+  const int n = std::max(1, segments);
+  SlipPolyline out;
+  out.points.push_back(left);
+  for (int k = 1; k < n; ++k) {
+    const double t = t0 + (t1 - t0) * k / n;
+    out.points.push_back({circle.xc + circle.radius * std::sin(t), circle.yc - circle.radius * std::cos(t)});
+  }
+  out.points.push_back(right);
+  out.moment_point = Point{circle.xc, circle.yc};
+  return out;
+}
+
 Point default_moment_point(const std::vector<Point>& s) {
   const Point a = s.front();
   const Point b = s.back();

@@ -1,6 +1,7 @@
 // Slip surfaces given in the scene (analyses.lem.surfaces): reading, faults at their JSON paths, the report.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <string>
 
 #include "coupling/analyses/pipeline.hpp"
@@ -32,7 +33,9 @@ json wedge_scene() {
           { "name": "wedge", "points_m": [[10, 15], [30, 5]],
             "tension_crack": { "depth_m": 2, "water_filled": true } },
           { "points_m": [[8, 15], [18, 8], [26, 4], [34, 5]], "moment_point_m": [20, 30],
-            "tension_crack": { "rankine": true } }
+            "tension_crack": { "rankine": true } },
+          { "name": "circle", "circle": { "center_m": [32, 22], "radius_m": 18.5 },
+            "tension_crack": { "depth_m": 1.5 } }
         ]
       }
     }
@@ -60,9 +63,9 @@ TEST_CASE("scene: given slip surfaces are read, analysed with every method and r
   const coupling::Scene scene = parse_scene(wedge_scene().dump(), "scenes/wedge.json");
   REQUIRE(scene.analyses.lem);
   const coupling::LemAnalysis& lem = *scene.analyses.lem;
-  REQUIRE(lem.surfaces.size() == 2);
+  REQUIRE(lem.surfaces.size() == 3);
   CHECK(lem.surfaces[0].name == "wedge");
-  CHECK(coupling::summarize(scene).find("lem (4 methods, 2 given slip surfaces)") != std::string::npos);
+  CHECK(coupling::summarize(scene).find("lem (4 methods, 3 given slip surfaces)") != std::string::npos);
   CHECK(lem.surfaces[1].name == "surface 1");
   CHECK(lem.surfaces[0].polyline.tension_crack->depth == 2.0);
   CHECK_FALSE(lem.surfaces[1].polyline.tension_crack->depth.has_value());
@@ -85,6 +88,15 @@ TEST_CASE("scene: given slip surfaces are read, analysed with every method and r
   CHECK(second["surface"]["moment_point_m"] == json::parse("[20, 30]"));
   // Rankine depth of c' = 10 kPa, phi' = 25 deg, gamma = 18 kN/m^3: 1.7441 m (hand calculation in the slope test)
   CHECK(second["surface"]["tension_crack"]["depth_m"].get<double>() == Approx(1.7441).margin(1e-4));
+  // A circle given by centre and radius: 256 chords, moments about its centre, the crack where the arc lies 1.5 m
+  // below the crest: 22 - sqrt(18.5^2 - (x - 32)^2) = 13.5, x = 32 - sqrt(342.25 - 72.25) = 15.568 m (closed form).
+  REQUIRE(lem.surfaces[2].circle.has_value());
+  CHECK(lem.surfaces[2].polyline.points.size() == 257);
+  const json& circle = report["surfaces"][2]["methods"]["spencer"];
+  INFO(circle.dump().substr(0, 400));
+  CHECK(circle["factor_of_safety"].is_number());
+  CHECK(circle["surface"]["moment_point_m"] == json::parse("[32, 22]"));
+  CHECK(circle["surface"]["entry_m"][0].get<double>() == Approx(32.0 - std::sqrt(342.25 - 72.25)).margin(1e-3));
 }
 
 TEST_CASE("scene: faults in given slip surfaces are reported at their JSON paths", "[scene]") {
@@ -95,6 +107,8 @@ TEST_CASE("scene: faults in given slip surfaces are reported at their JSON paths
   surfaces.push_back(json::parse(R"({"points_m": [[10, 15], [30, 5]], "tension_crack": {"depth": 2}})"));
   surfaces.push_back(json::parse(R"({"points_m": [[8, 15], [14, 13], [22, 4.5], [34, 5]]})"));
   surfaces.push_back(json::parse(R"({"points_m": [[10, 15], [30]]})"));
+  surfaces.push_back(json::parse(R"({"points_m": [[10, 15], [30, 5]], "circle": {"center_m": [32, 22], "radius_m": 18.5}})"));
+  surfaces.push_back(json::parse(R"({"circle": {"center_m": [32, 22], "radius_m": 2}})"));
   const auto errors = errors_of(document);
   std::string all;
   for (const std::string& e : errors) all += e + "\n";
@@ -102,9 +116,11 @@ TEST_CASE("scene: faults in given slip surfaces are reported at their JSON paths
   CHECK(mentions(errors, "analyses.lem.surfaces[0]: not an admissible slip surface: the end point (10, 14) is not on "
                          "the ground surface"));
   CHECK(mentions(errors, "analyses.lem.surfaces[1].tension_crack: give either depth_m or \"rankine\": true"));
-  CHECK(mentions(errors, "analyses.lem.surfaces[2].tension_crack.depth: unknown key (did you mean \"depth_m\"?"));
-  CHECK(mentions(errors, "analyses.lem.surfaces[2].tension_crack: needs a depth"));
-  CHECK(mentions(errors, "analyses.lem.surfaces[3]: not an admissible slip surface: the surface turns convex"));
-  CHECK(mentions(errors, "analyses.lem.surfaces[4].points_m[1]: expected a point [x_m, y_m]"));
-  CHECK(errors.size() == 6);
+  CHECK(mentions(errors, "analyses.lem.surfaces[3].tension_crack.depth: unknown key (did you mean \"depth_m\"?"));
+  CHECK(mentions(errors, "analyses.lem.surfaces[3].tension_crack: needs a depth"));
+  CHECK(mentions(errors, "analyses.lem.surfaces[4]: not an admissible slip surface: the surface turns convex"));
+  CHECK(mentions(errors, "analyses.lem.surfaces[5].points_m[1]: expected a point [x_m, y_m]"));
+  CHECK(mentions(errors, "analyses.lem.surfaces[6]: give either points_m or circle, not both"));
+  CHECK(mentions(errors, "analyses.lem.surfaces[7].circle: not an admissible slip circle: the circle does not cut"));
+  CHECK(errors.size() == 8);
 }

@@ -38,6 +38,9 @@ struct SceneSection {
 struct GivenSurface {
   std::string name;              // "name", default "surface <i>"
   slope::SlipPolyline polyline;  // points, moment point, tension crack, convex tolerance (SI)
+  // "circle" instead of "points_m": the circle, analysed as 256 inscribed chords (slope::circle_as_polyline) so
+  // that it can carry a tension crack; polyline.points are then set from it.
+  std::optional<slope::Circle> circle;
 };
 
 // analyses.lem, with every default applied.
