@@ -10,8 +10,8 @@ namespace coupling {
 
 namespace {
 
-// Chords of a circle given in the scene (slope::circle_as_polyline): its factor of safety within about 1e-5 of the
-// circle's.
+// Chords of a circle given in the scene (slope::circle_as_polyline): its factor of safety within 5e-6 of the
+// circle's (both finely sliced).
 constexpr int circle_segments = 256;
 
 // analyses.lem.surfaces[i].tension_crack: {"depth_m": z} or {"rankine": true}, and "water_filled".
