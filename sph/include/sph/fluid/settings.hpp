@@ -1,0 +1,63 @@
+#pragma once
+// Settings of the explicit three-step incompressible SPH (ISPH) fluid (Hosseini, Manzari & Hannani 2007, as used
+// by the seed paper, shared/seeds/seed-000-isph-landslide.md). SI units, 2-D. docs/isph.md lists the equations,
+// the decisions where the paper is wrong or silent, and every default below with its source.
+#include <string>
+
+namespace sph::fluid {
+
+// How the pressure Poisson equation (seed eq. 35) is solved each step.
+enum class PressureMode {
+  explicit_jacobi,  // "explicit": one point-Jacobi sweep from the previous step's pressures (seed eq. 37)
+  iterative,        // "iterative": the same discrete equation solved to `solver_tolerance` (Eigen CG or BiCGSTAB)
+};
+
+enum class LinearSolver { conjugate_gradient, bicgstab };
+
+struct Settings {
+  double particle_spacing = 0.01;  // dx [m]
+  double h_over_dx = 1.5;          // h = 1.5 dx (seed, dam break)
+  double rest_density = 1000.0;    // rho0 [kg/m^3]
+  double viscosity = 1.0e-3;       // dynamic viscosity mu [Pa s] (water at 20 C; the seed's 1e-4 is doubted, A10)
+  double eta_over_h = 0.1;         // eta = 0.1 h in the Laplacians (seed eqs. 9, 22, 36)
+  bool compression_correction = true;  // add the kernel-sum compression to rho* (decision D3; false: eq. 32 only)
+  double surface_beta = 0.85;
+  bool surface_mirror = true;  // seed eq. 46: double the pressure gradient at free-surface particles      // free surface where the kernel-sum density < beta rho0 (seed eq. 43; 0.8-0.9)
+  double gravity_x = 0.0, gravity_y = -9.81;  // [m/s^2]
+
+  // time step: dt = min(cfl dx / v_max, cfl sqrt(dx/|g|), viscous_alpha dx^2 rho0 / mu, max_time_step)
+  double cfl = 0.1;            // seed eq. 48 (Shao & Lo 2003)
+  double viscous_alpha = 0.1;  // seed eq. 49
+  double max_time_step = 0.0;  // [s] an upper bound of the user's (0: none)
+
+  PressureMode pressure_mode = PressureMode::iterative;
+  LinearSolver solver = LinearSolver::conjugate_gradient;
+  double solver_tolerance = 1.0e-6;  // relative residual |b - A p| / |b| of the iterative mode
+  int solver_max_iterations = 2000;
+  // iterative mode: solves of the fluid's equation per step, each after a new wall-pressure extrapolation (the
+  // explicit mode does one extrapolation and one sweep)
+  int wall_passes = 2;
+
+  int wall_layers = 3;  // fixed wall particle rows (seed: 3); at least ceil(2h/dx)
+
+  // run control
+  double end_time = 1.0;                   // [s]
+  double output_interval = 0.0;            // [s] between frames (<= 0: none)
+  double checkpoint_interval_wall_s = 0.0;  // wall seconds between checkpoints (<= 0: none)
+  double blow_up_energy_factor = 10.0;
+
+  double smoothing_length() const { return h_over_dx * particle_spacing; }
+  double eta() const { return eta_over_h * smoothing_length(); }
+  double particle_mass() const { return rest_density * particle_spacing * particle_spacing; }  // [kg/m]
+};
+
+// "explicit" / "iterative"; "cg" / "bicgstab". Throws std::invalid_argument on other names.
+PressureMode pressure_mode_from(const std::string& key);
+const char* pressure_mode_key(PressureMode mode);
+LinearSolver linear_solver_from(const std::string& key);
+const char* linear_solver_key(LinearSolver solver);
+
+// Throws std::invalid_argument naming the first setting out of its range.
+void validate(const Settings& settings);
+
+}  // namespace sph::fluid

@@ -1,0 +1,50 @@
+#include "sph/fluid/settings.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace sph::fluid {
+
+PressureMode pressure_mode_from(const std::string& key) {
+  if (key == "explicit") return PressureMode::explicit_jacobi;
+  if (key == "iterative") return PressureMode::iterative;
+  throw std::invalid_argument("pressure mode '" + key + "': expected \"explicit\" or \"iterative\"");
+}
+
+const char* pressure_mode_key(PressureMode mode) {
+  return mode == PressureMode::explicit_jacobi ? "explicit" : "iterative";
+}
+
+LinearSolver linear_solver_from(const std::string& key) {
+  if (key == "cg") return LinearSolver::conjugate_gradient;
+  if (key == "bicgstab") return LinearSolver::bicgstab;
+  throw std::invalid_argument("linear solver '" + key + "': expected \"cg\" or \"bicgstab\"");
+}
+
+const char* linear_solver_key(LinearSolver solver) {
+  return solver == LinearSolver::conjugate_gradient ? "cg" : "bicgstab";
+}
+
+void validate(const Settings& s) {
+  auto need = [](bool ok, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("fluid settings: ") + what);
+  };
+  need(s.particle_spacing > 0, "particle_spacing must be > 0");
+  need(s.h_over_dx >= 1.0 && s.h_over_dx <= 3.0, "h_over_dx must be in [1, 3]");
+  need(s.rest_density > 0, "rest_density must be > 0");
+  need(s.viscosity >= 0, "viscosity must be >= 0");
+  need(s.eta_over_h > 0 && s.eta_over_h < 1, "eta_over_h must be in (0, 1)");
+  need(s.surface_beta > 0 && s.surface_beta < 1, "surface_beta must be in (0, 1)");
+  need(std::isfinite(s.gravity_x) && std::isfinite(s.gravity_y), "gravity must be finite");
+  need(s.cfl > 0 && s.cfl <= 1, "cfl must be in (0, 1]");
+  need(s.viscous_alpha > 0 && s.viscous_alpha <= 1, "viscous_alpha must be in (0, 1]");
+  need(s.max_time_step >= 0, "max_time_step must be >= 0");
+  need(s.solver_tolerance > 0 && s.solver_tolerance < 1, "solver_tolerance must be in (0, 1)");
+  need(s.solver_max_iterations > 0, "solver_max_iterations must be > 0");
+  need(s.wall_passes >= 1 && s.wall_passes <= 20, "wall_passes must be in [1, 20]");
+  need(s.wall_layers >= static_cast<int>(std::ceil(2.0 * s.h_over_dx - 1e-9)),
+       "wall_layers must cover the kernel support (at least ceil(2 h/dx))");
+  need(s.end_time > 0, "end_time must be > 0");
+}
+
+}  // namespace sph::fluid

@@ -1,0 +1,333 @@
+#include "sph/fluid/stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "pair_list.hpp"
+#include "sph/engine/cell_sort.hpp"
+#include "terms.hpp"
+
+namespace sph::fluid {
+
+namespace {
+using Index = std::int64_t;
+constexpr std::uint8_t kFluid = static_cast<std::uint8_t>(ParticleKind::soil);
+}  // namespace
+
+struct Step::Impl {
+  explicit Impl(double h) : kernel(h) {}
+  CubicSplineKernel kernel;
+  CellSortedSet sorted;
+  PairList pairs;
+  PoissonSystem system;
+  std::vector<double> ax, ay;  // viscous accelerations
+  double lattice_kernel_sum = 1;  // sum_j W_ij dx^2 over a full square lattice (the kernel sum of a particle at rest)
+};
+
+Step::Step(Model& model) : model_(model), impl_(std::make_unique<Impl>(model.settings.smoothing_length())) {
+  validate(model.settings);
+  const double dx = model.settings.particle_spacing;
+  const int reach = static_cast<int>(std::ceil(impl_->kernel.support() / dx)) + 1;
+  double sum = 0;
+  for (int a = -reach; a <= reach; ++a)
+    for (int b = -reach; b <= reach; ++b) sum += impl_->kernel.value(dx * std::hypot(a, b)) * dx * dx;
+  impl_->lattice_kernel_sum = sum;
+}
+
+Step::~Step() = default;
+
+void Step::initialise() {
+  impl_->sorted.reserve(model_.particles);
+  ParticleSet& p = model_.particles;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] != kFluid) p.vx[i] = p.vy[i] = 0.0;  // walls are fixed
+  model_.state.rates_valid = true;  // the state carries no rates: the pressure of the last step is all it needs
+}
+
+double Step::stable_time_step() const {
+  const Settings& st = model_.settings;
+  const ParticleSet& p = model_.particles;
+  double vmax2 = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == kFluid) vmax2 = std::max(vmax2, p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+  const double dx = st.particle_spacing;
+  double dt = std::numeric_limits<double>::infinity();
+  if (vmax2 > 0) dt = std::min(dt, st.cfl * dx / std::sqrt(vmax2));  // eq. 48
+  const double g = std::hypot(st.gravity_x, st.gravity_y);
+  if (g > 0) dt = std::min(dt, st.cfl * std::sqrt(dx / g));  // body force from rest (decision D9)
+  if (st.viscosity > 0) dt = std::min(dt, st.viscous_alpha * dx * dx * st.rest_density / st.viscosity);  // eq. 49
+  if (st.max_time_step > 0) dt = std::min(dt, st.max_time_step);
+  return std::isfinite(dt) ? dt : dx;
+}
+
+// Steps 1 and 2 at r^n: V** = V^n + g dt + dt (mu/rho lap V*), walls at rest (no-slip).
+void Step::viscous_step(double dt) {
+  ParticleSet& p = model_.particles;
+  const Settings& st = model_.settings;
+  const PairList& pl = impl_->pairs;
+  const Index n = static_cast<Index>(p.size());
+  const double mu = st.viscosity, rho0 = st.rest_density, eta2 = st.eta() * st.eta();
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (p.kind[i] == kFluid) terms::body_force_step(p.vx[i], p.vy[i], st.gravity_x, st.gravity_y, dt);
+  }
+  impl_->ax.assign(p.size(), 0.0);
+  impl_->ay.assign(p.size(), 0.0);
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (p.kind[i] != kFluid || mu == 0) continue;
+    double ax = 0, ay = 0;
+    for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q) {
+      const std::uint32_t j = pl.j[q];
+      const double f = terms::viscous_factor(p.mass[j], mu, mu, rho0, rho0, pl.F[q], pl.r2[q], eta2);
+      ax += f * (p.vx[i] - p.vx[j]);
+      ay += f * (p.vy[i] - p.vy[j]);
+    }
+    impl_->ax[i] = ax;
+    impl_->ay[i] = ay;
+  }
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (p.kind[i] != kFluid) continue;
+    p.vx[i] += dt * impl_->ax[i];
+    p.vy[i] += dt * impl_->ay[i];
+  }
+}
+
+// rho* from continuity based on rho0 (eq. 32) and the kernel-sum density (eq. 43, decision D4), at r*.
+void Step::provisional_density(double dt) {
+  ParticleSet& p = model_.particles;
+  const Arrays a = model_.arrays();
+  const PairList& pl = impl_->pairs;
+  const Index n = static_cast<Index>(p.size());
+  const double rho0 = model_.settings.rest_density, w0 = impl_->kernel.value(0.0);
+  const double scale = 1.0 / impl_->lattice_kernel_sum;
+  const bool correct = model_.settings.compression_correction;
+  // the walls' velocity in the fluid's continuity sum: the body-force increment (decision D7)
+  const double wvx = model_.settings.gravity_x * dt, wvy = model_.settings.gravity_y * dt;
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const bool fluid = p.kind[i] == kFluid;
+    double div = 0, sum = terms::kernel_density_share(p.mass[i], w0);
+    for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q) {
+      const std::uint32_t j = pl.j[q];
+      sum += terms::kernel_density_share(p.mass[j], pl.W[q]);
+      if (!fluid) continue;
+      const bool wall = p.kind[j] != kFluid;
+      const double vjx = wall ? wvx : p.vx[j], vjy = wall ? wvy : p.vy[j];
+      div += terms::continuity_share(p.mass[j], p.vx[i] - vjx, p.vy[i] - vjy, pl.F[q], pl.dx[q], pl.dy[q]);
+    }
+    a.kernel_density[i] = sum * scale;
+    const double squeeze = correct && fluid ? terms::compression(a.kernel_density[i], rho0) : 0.0;
+    a.provisional_density[i] = fluid ? rho0 + dt * div + squeeze : rho0;
+  }
+}
+
+// The roles in the pressure equation: fluid particles are unknowns, except free-surface ones (P = 0, given);
+// wall particles hold the extrapolated pressure (given).
+void Step::mark_roles() {
+  ParticleSet& p = model_.particles;
+  const Arrays a = model_.arrays();
+  const Settings& st = model_.settings;
+  PoissonSystem& sys = impl_->system;
+  sys.role.assign(p.size(), PressureRole::given);
+  diag_.surface_particles = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    a.free_surface[i] = 0.0;
+    if (p.kind[i] != kFluid) continue;
+    const bool surface = terms::is_free_surface(a.kernel_density[i], st.surface_beta, st.rest_density);
+    if (surface) {
+      a.free_surface[i] = 1.0;
+      a.pressure[i] = 0.0;
+      ++diag_.surface_particles;
+    } else {
+      sys.role[i] = PressureRole::unknown;
+    }
+  }
+}
+
+// Wall pressure from the fluid around each wall particle (decisions D7, D8); 0 where no fluid is near.
+void Step::extrapolate_wall_pressure() {
+  ParticleSet& p = model_.particles;
+  const Arrays a = model_.arrays();
+  const PairList& pl = impl_->pairs;
+  const Settings& st = model_.settings;
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (p.kind[i] == kFluid) continue;
+    double num = 0, den = 0;
+    for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q) {
+      const std::uint32_t j = pl.j[q];
+      if (p.kind[j] != kFluid) continue;  // walls read only fluid values (no data race)
+      num += terms::wall_pressure_share(a.pressure[j], st.rest_density, st.gravity_x, st.gravity_y, pl.dx[q],
+                                        pl.dy[q], pl.W[q]);
+      den += pl.W[q];
+    }
+    a.pressure[i] = den > 0 ? std::max(num / den, 0.0) : 0.0;
+  }
+}
+
+// Step 3: the pressure Poisson equation (eqs. 35-37), explicit (one Jacobi sweep) or solved, with the wall
+// pressures extrapolated before each solve and after the last.
+void Step::solve_pressure_equation(double dt) {
+  ParticleSet& p = model_.particles;
+  const PairList& pl = impl_->pairs;
+  const Settings& st = model_.settings;
+  PoissonSystem& sys = impl_->system;
+  const double eta2 = st.eta() * st.eta();
+  sys.start = pl.start;
+  sys.col = pl.j;
+  sys.coef.resize(pl.pair_count());
+  sys.source.resize(p.size());
+  const Index n = static_cast<Index>(p.size());
+  {
+    const Arrays a = model_.arrays();
+#pragma omp parallel for schedule(static)
+    for (Index k = 0; k < n; ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      const double ri = a.provisional_density[i];
+      for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q)
+        sys.coef[q] = terms::laplacian_coefficient(p.mass[pl.j[q]], ri, a.provisional_density[pl.j[q]], pl.F[q],
+                                                   pl.r2[q], eta2);
+      sys.source[i] = terms::poisson_source(st.rest_density, ri, dt);
+    }
+  }
+  const bool explicit_mode = st.pressure_mode == PressureMode::explicit_jacobi;
+  const int passes = explicit_mode ? 1 : st.wall_passes;
+  for (int pass = 0; pass < passes; ++pass) {
+    extrapolate_wall_pressure();
+    std::vector<double>& pressure = p.field(model_.fields.pressure);
+    if (explicit_mode)
+      diag_.solve = jacobi_sweep(sys, pressure);
+    else
+      diag_.solve = solve_pressure(sys, st.solver, st.solver_tolerance, st.solver_max_iterations, pressure);
+  }
+  extrapolate_wall_pressure();
+  diag_.wall_passes = static_cast<std::size_t>(passes);
+}
+
+// V^{n+1} = V** + V_hat (eqs. 38-40, the surface doubling of eq. 46), densities rho*.
+void Step::correct(double dt) {
+  ParticleSet& p = model_.particles;
+  const Arrays a = model_.arrays();
+  const PairList& pl = impl_->pairs;
+  const Index n = static_cast<Index>(p.size());
+  const bool mirror = model_.settings.surface_mirror;
+  impl_->ax.assign(p.size(), 0.0);
+  impl_->ay.assign(p.size(), 0.0);
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (p.kind[i] != kFluid) continue;
+    const double pi = a.pressure[i], ri = a.provisional_density[i];
+    double gx = 0, gy = 0;
+    for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q) {
+      const std::uint32_t j = pl.j[q];
+      const double f =
+          terms::pressure_gradient_factor(p.mass[j], pi, ri, a.pressure[j], a.provisional_density[j], pl.F[q]);
+      gx += f * pl.dx[q];
+      gy += f * pl.dy[q];
+    }
+    const double w = terms::surface_gradient_weight(mirror && a.free_surface[i] != 0.0);
+    impl_->ax[i] = -w * gx;
+    impl_->ay[i] = -w * gy;
+  }
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (p.kind[i] != kFluid) continue;
+    p.vx[i] += dt * impl_->ax[i];
+    p.vy[i] += dt * impl_->ay[i];
+  }
+}
+
+void Step::advance(double dt) {
+  ParticleSet& p = model_.particles;
+  const Settings& st = model_.settings;
+  const double cell = impl_->kernel.support();
+  impl_->sorted.sort(p, cell);
+  impl_->pairs.build(p, impl_->sorted.cells(), impl_->kernel);
+  {
+    const Arrays a = model_.arrays();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      a.x_start[i] = p.x[i];
+      a.y_start[i] = p.y[i];
+      a.vx_start[i] = p.vx[i];
+      a.vy_start[i] = p.vy[i];
+    }
+  }
+  viscous_step(dt);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == kFluid) {
+      p.x[i] = terms::temporary_position(p.x[i], p.vx[i], dt);
+      p.y[i] = terms::temporary_position(p.y[i], p.vy[i], dt);
+    }
+  impl_->sorted.sort(p, cell);
+  impl_->pairs.build(p, impl_->sorted.cells(), impl_->kernel);
+  provisional_density(dt);
+  mark_roles();
+  solve_pressure_equation(dt);
+  correct(dt);
+  const Arrays a = model_.arrays();
+  double err_max = 0, err_sum = 0;
+  std::size_t nf = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != kFluid) continue;
+    p.x[i] = terms::trapezoidal_position(a.x_start[i], a.vx_start[i], p.vx[i], dt);
+    p.y[i] = terms::trapezoidal_position(a.y_start[i], a.vy_start[i], p.vy[i], dt);
+    const double e = std::abs(a.provisional_density[i] - st.rest_density) / st.rest_density;
+    err_max = std::max(err_max, e);
+    err_sum += e;
+    ++nf;
+  }
+  diag_.max_density_error = err_max;
+  diag_.mean_density_error = nf > 0 ? err_sum / static_cast<double>(nf) : 0.0;
+  diag_.time_step = dt;
+  model_.state.time += dt;
+  model_.state.step += 1;
+}
+
+Energies Step::energies() const {
+  const ParticleSet& p = model_.particles;
+  const Settings& st = model_.settings;
+  Energies e;
+  double vmax2 = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != kFluid) continue;
+    const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
+    e.kinetic += 0.5 * p.mass[i] * v2;
+    e.potential -= p.mass[i] * (st.gravity_x * p.x[i] + st.gravity_y * p.y[i]);
+    vmax2 = std::max(vmax2, v2);
+  }
+  e.max_speed = std::sqrt(vmax2);
+  return e;
+}
+
+Health Step::check_health() const {
+  const ParticleSet& p = model_.particles;
+  const ConstArrays a(model_.particles, model_.fields);
+  Health h;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const char* bad = nullptr;
+    if (!std::isfinite(p.x[i]) || !std::isfinite(p.y[i])) bad = "position";
+    else if (!std::isfinite(p.vx[i]) || !std::isfinite(p.vy[i])) bad = "velocity";
+    else if (!std::isfinite(a.pressure[i])) bad = "pressure";
+    if (!bad) continue;
+    std::ostringstream os;
+    os << "particle " << p.id[i] << ": field " << bad << " is not finite at step " << model_.state.step;
+    h.ok = false;
+    h.diagnostic = os.str();
+    return h;
+  }
+  return h;
+}
+
+}  // namespace sph::fluid
