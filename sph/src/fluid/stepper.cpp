@@ -251,7 +251,6 @@ void Step::correct(double dt) {
 
 void Step::advance(double dt) {
   ParticleSet& p = model_.particles;
-  const Settings& st = model_.settings;
   const double cell = impl_->kernel.support();
   impl_->sorted.sort(p, cell);
   impl_->pairs.build(p, impl_->sorted.cells(), impl_->kernel);
@@ -276,23 +275,30 @@ void Step::advance(double dt) {
   mark_roles();
   solve_pressure_equation(dt);
   correct(dt);
+  finish_positions(dt);
+  diag_.time_step = dt;
+  model_.state.time += dt;
+  model_.state.step += 1;
+}
+
+// r^{n+1} by the trapezoidal rule (eqs. 31, 41-42) and the density error of the step.
+void Step::finish_positions(double dt) {
+  ParticleSet& p = model_.particles;
   const Arrays a = model_.arrays();
+  const double rho0 = model_.settings.rest_density;
   double err_max = 0, err_sum = 0;
   std::size_t nf = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.kind[i] != kFluid) continue;
     p.x[i] = terms::trapezoidal_position(a.x_start[i], a.vx_start[i], p.vx[i], dt);
     p.y[i] = terms::trapezoidal_position(a.y_start[i], a.vy_start[i], p.vy[i], dt);
-    const double e = std::abs(a.provisional_density[i] - st.rest_density) / st.rest_density;
+    const double e = std::abs(a.provisional_density[i] - rho0) / rho0;
     err_max = std::max(err_max, e);
     err_sum += e;
     ++nf;
   }
   diag_.max_density_error = err_max;
   diag_.mean_density_error = nf > 0 ? err_sum / static_cast<double>(nf) : 0.0;
-  diag_.time_step = dt;
-  model_.state.time += dt;
-  model_.state.step += 1;
 }
 
 Energies Step::energies() const {

@@ -20,9 +20,10 @@ struct Settings {
   double rest_density = 1000.0;    // rho0 [kg/m^3]
   double viscosity = 1.0e-3;       // dynamic viscosity mu [Pa s] (water at 20 C; the seed's 1e-4 is doubted, A10)
   double eta_over_h = 0.1;         // eta = 0.1 h in the Laplacians (seed eqs. 9, 22, 36)
-  bool compression_correction = true;  // add the kernel-sum compression to rho* (decision D3; false: eq. 32 only)
-  double surface_beta = 0.85;
-  bool surface_mirror = true;  // seed eq. 46: double the pressure gradient at free-surface particles      // free surface where the kernel-sum density < beta rho0 (seed eq. 43; 0.8-0.9)
+  // free surface where the normalised kernel-sum density < beta rho0 (seed eq. 43, beta in 0.8-0.9; decision D4)
+  double surface_beta = 0.9;
+  bool surface_mirror = false;           // seed eq. 46: double the pressure gradient at free-surface particles (D6)
+  bool compression_correction = false;  // add the kernel-sum compression to rho* (D3; false: eq. 32 as printed)
   double gravity_x = 0.0, gravity_y = -9.81;  // [m/s^2]
 
   // time step: dt = min(cfl dx / v_max, cfl sqrt(dx/|g|), viscous_alpha dx^2 rho0 / mu, max_time_step)

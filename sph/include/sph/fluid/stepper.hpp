@@ -54,6 +54,7 @@ class Step : public Stepper {
   void extrapolate_wall_pressure();
   void solve_pressure_equation(double dt);
   void correct(double dt);
+  void finish_positions(double dt);
 
   Model& model_;
   StepDiagnostics diag_;
