@@ -27,16 +27,17 @@ int main(int argc, char** argv) {
     worst_density_error = std::max(worst_density_error, s.diagnostics().max_density_error);
   });
   const double T = std::sqrt(2.0) * model.state.time * std::sqrt(9.81 / a);
-  std::printf("bench-isph: dam break 1 m x 2 m in a 4 m tank, %zu fluid + %zu wall particles, dx = %.3g m, "
-              "h/dx = %.2f, pressure %s (%s, tolerance %.0e)\n",
-              sum.soil_particles, sum.particles - sum.soil_particles, st.particle_spacing, st.h_over_dx,
-              sph::fluid::pressure_mode_key(st.pressure_mode), sph::fluid::linear_solver_key(st.solver),
-              st.solver_tolerance);
-  std::printf("threads %d  t = %.4g s (%s)  steps %llu  wall %.2f s  %.3f ms/step  particle-steps/s %.4g  "
-              "solver iterations/step %.1f  max density error %.3g\n",
-              omp_get_max_threads(), model.state.time, sum.stopped_because.c_str(),
-              static_cast<unsigned long long>(sum.steps), sum.wall_seconds, 1e3 * sum.wall_seconds / sum.steps,
-              sum.particle_steps_per_second, static_cast<double>(iterations) / sum.steps, worst_density_error);
+  std::printf(
+      "bench-isph: dam break 1 m x 2 m in a 4 m tank, %zu fluid + %zu wall particles, dx = %.3g m, "
+      "h/dx = %.2f, pressure %s (%s, tolerance %.0e)\n",
+      sum.soil_particles, sum.particles - sum.soil_particles, st.particle_spacing, st.h_over_dx,
+      sph::fluid::pressure_mode_key(st.pressure_mode), sph::fluid::linear_solver_key(st.solver), st.solver_tolerance);
+  std::printf(
+      "threads %d  t = %.4g s (%s)  steps %llu  wall %.2f s  %.3f ms/step  particle-steps/s %.4g  "
+      "solver iterations/step %.1f  max density error %.3g\n",
+      omp_get_max_threads(), model.state.time, sum.stopped_because.c_str(), static_cast<unsigned long long>(sum.steps),
+      sum.wall_seconds, 1e3 * sum.wall_seconds / sum.steps, sum.particle_steps_per_second,
+      static_cast<double>(iterations) / sum.steps, worst_density_error);
   std::printf("front: Z = x/a = %.3f at T = %.3f (Martin & Moyce n^2 = 2: Z = 2.56 at T = 2.20, 2.78 at 2.32)\n",
               sph::fluid::front_position(model) / a, T);
   return 0;

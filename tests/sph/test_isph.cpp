@@ -48,8 +48,7 @@ double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b) 
 
 }  // namespace
 
-TEST_CASE("ISPH pressure equation: CG, BiCGSTAB and repeated Jacobi sweeps reach the same solution",
-          "[sph][isph]") {
+TEST_CASE("ISPH pressure equation: CG, BiCGSTAB and repeated Jacobi sweeps reach the same solution", "[sph][isph]") {
   std::vector<double> exact;
   const PoissonSystem s = chain_system(12, exact);
   for (LinearSolver solver : {LinearSolver::conjugate_gradient, LinearSolver::bicgstab}) {

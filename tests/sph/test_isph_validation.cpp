@@ -22,14 +22,14 @@ constexpr double kG = 9.81;
 constexpr std::uint8_t kFluid = 0;
 
 struct TankResult {
-  double slope_ratio = 0;     // fitted -dp/dy over rho0 g
-  double worst_band = 0;      // max over 4 depth bands of |mean p - rho0 g (H - mean y)| / (rho0 g H)
-  double late_speed = 0;      // max fluid speed over the second half of the run [m/s]
-  double top = 0;             // highest fluid particle centre at the end [m]
-  double mean_density = 0;    // mean normalised kernel-sum density of the non-surface fluid [kg/m^3]
-  std::size_t outside = 0;    // fluid particle centres outside the tank's inner box
+  double slope_ratio = 0;  // fitted -dp/dy over rho0 g
+  double worst_band = 0;  // max over 4 depth bands of |mean p - rho0 g (H - mean y)| / (rho0 g H)
+  double late_speed = 0;  // max fluid speed over the second half of the run [m/s]
+  double top = 0;  // highest fluid particle centre at the end [m]
+  double mean_density = 0;  // mean normalised kernel-sum density of the non-surface fluid [kg/m^3]
+  std::size_t outside = 0;  // fluid particle centres outside the tank's inner box
   std::size_t fluid = 0;
-  double density_error = 0;   // max |rho* - rho0|/rho0 of the last step
+  double density_error = 0;  // max |rho* - rho0|/rho0 of the last step
 };
 
 TankResult measure_tank(const Model& m, double width, double depth) {
@@ -45,9 +45,16 @@ TankResult measure_tank(const Model& m, double width, double depth) {
     if (p.x[i] <= 0 || p.x[i] >= width || p.y[i] <= 0) ++r.outside;
     if (a.free_surface[i] != 0.0) continue;
     const double y = p.y[i], pr = a.pressure[i];
-    sy += y; sp += pr; syy += y * y; syp += y * pr; n += 1; kd += a.kernel_density[i];
+    sy += y;
+    sp += pr;
+    syy += y * y;
+    syp += y * pr;
+    n += 1;
+    kd += a.kernel_density[i];
     const int b = std::clamp(static_cast<int>(4.0 * y / depth), 0, 3);
-    band_p[b] += pr; band_y[b] += y; band_n[b] += 1;
+    band_p[b] += pr;
+    band_y[b] += y;
+    band_n[b] += 1;
   }
   const double rg = m.settings.rest_density * kG;
   r.slope_ratio = -((n * syp - sy * sp) / (n * syy - sy * sy)) / rg;
@@ -80,17 +87,17 @@ TankResult run_tank(PressureMode mode) {
   r.late_speed = late;
   r.density_error = derr;
   REQUIRE(r.fluid == fluid0);
-  std::printf("still tank (%s, dx = %.3f m, %zu fluid, %llu steps, %.2f s wall): -dp/dy / rho g = %.4f, worst band "
-              "error %.4f, late max speed %.4f m/s, top %.4f m, mean kernel density %.1f, density error %.4f\n",
-              pressure_mode_key(mode), st.particle_spacing, r.fluid, static_cast<unsigned long long>(sum.steps),
-              sum.wall_seconds, r.slope_ratio, r.worst_band, r.late_speed, r.top, r.mean_density, r.density_error);
+  std::printf(
+      "still tank (%s, dx = %.3f m, %zu fluid, %llu steps, %.2f s wall): -dp/dy / rho g = %.4f, worst band "
+      "error %.4f, late max speed %.4f m/s, top %.4f m, mean kernel density %.1f, density error %.4f\n",
+      pressure_mode_key(mode), st.particle_spacing, r.fluid, static_cast<unsigned long long>(sum.steps),
+      sum.wall_seconds, r.slope_ratio, r.worst_band, r.late_speed, r.top, r.mean_density, r.density_error);
   return r;
 }
 
 }  // namespace
 
-TEST_CASE("ISPH still water tank: hydrostatic pressure, volume kept, no spurious motion",
-          "[sph][isph][validation]") {
+TEST_CASE("ISPH still water tank: hydrostatic pressure, volume kept, no spurious motion", "[sph][isph][validation]") {
   const double depth = 0.4, dx = 0.02;
   const double celerity = std::sqrt(kG * depth);
   SECTION("iterative pressure (CG to 1e-6)") {
@@ -161,7 +168,11 @@ double front_slope(const Series& run, double t0, double t1) {
   double st = 0, sz = 0, stt = 0, stz = 0, n = 0;
   for (std::size_t k = 0; k < run.t.size(); ++k) {
     if (run.t[k] < t0 || run.t[k] > t1) continue;
-    st += run.t[k]; sz += run.z[k]; stt += run.t[k] * run.t[k]; stz += run.t[k] * run.z[k]; n += 1;
+    st += run.t[k];
+    sz += run.z[k];
+    stt += run.t[k] * run.t[k];
+    stz += run.t[k] * run.z[k];
+    n += 1;
   }
   return (n * stz - st * sz) / (n * stt - st * st);
 }
@@ -178,7 +189,8 @@ double front_slope(const Series& run, double t0, double t1) {
 //    over-damped and an inviscid-shallow-water behaviour.
 TEST_CASE("ISPH dam break (Martin & Moyce 1952, n^2 = 2): surge front against the tabulated data",
           "[sph][isph][validation]") {
-  const Series ref = read_reference(std::string(SPHSLOPE_SOURCE_DIR) + "/tests/sph/data/martin_moyce_1952_n2_2_front.csv");
+  const Series ref =
+      read_reference(std::string(SPHSLOPE_SOURCE_DIR) + "/tests/sph/data/martin_moyce_1952_n2_2_front.csv");
   REQUIRE(ref.t.size() == 15);
   const double a = 0.05715, n = std::sqrt(2.0), tank = 6.0 * a;
   const double t_scale = n * std::sqrt(kG / a);  // T = n t sqrt(g/a)
@@ -212,10 +224,11 @@ TEST_CASE("ISPH dam break (Martin & Moyce 1952, n^2 = 2): surge front against th
     if (x <= -half || x >= tank + half || y <= -half) ++outside;
   }
   std::printf("lowest fluid particle centre y = %.5f m, leftmost x = %.5f m (dx/2 = %.5f m)\n", lowest, leftmost, half);
-  std::printf("dam break M&M n2 = 2 (dx = a/20, %zu fluid, %llu steps, %.2f s wall): Z(T = 3.33) = %.3f (ref 4.11), "
-              "RMS error %.4f unshifted, %.4f with dT = %.2f, late slope dZ/dT = %.3f\n",
-              sum.soil_particles, static_cast<unsigned long long>(sum.steps), sum.wall_seconds, run_front.at(3.33),
-              plain, best, best_shift, slope);
+  std::printf(
+      "dam break M&M n2 = 2 (dx = a/20, %zu fluid, %llu steps, %.2f s wall): Z(T = 3.33) = %.3f (ref 4.11), "
+      "RMS error %.4f unshifted, %.4f with dT = %.2f, late slope dZ/dT = %.3f\n",
+      sum.soil_particles, static_cast<unsigned long long>(sum.steps), sum.wall_seconds, run_front.at(3.33), plain, best,
+      best_shift, slope);
   CHECK(outside == 0);
   CHECK(best <= 0.05);
   CHECK(plain <= 0.15);

@@ -167,8 +167,8 @@ void Step::extrapolate_wall_pressure() {
     for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q) {
       const std::uint32_t j = pl.j[q];
       if (p.kind[j] != kFluid) continue;  // walls read only fluid values (no data race)
-      num += terms::wall_pressure_share(a.pressure[j], st.rest_density, st.gravity_x, st.gravity_y, pl.dx[q],
-                                        pl.dy[q], pl.W[q]);
+      num += terms::wall_pressure_share(a.pressure[j], st.rest_density, st.gravity_x, st.gravity_y, pl.dx[q], pl.dy[q],
+                                        pl.W[q]);
       den += pl.W[q];
     }
     a.pressure[i] = den > 0 ? std::max(num / den, 0.0) : 0.0;
@@ -195,8 +195,8 @@ void Step::solve_pressure_equation(double dt) {
       const auto i = static_cast<std::size_t>(k);
       const double ri = a.provisional_density[i];
       for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q)
-        sys.coef[q] = terms::laplacian_coefficient(p.mass[pl.j[q]], ri, a.provisional_density[pl.j[q]], pl.F[q],
-                                                   pl.r2[q], eta2);
+        sys.coef[q] =
+            terms::laplacian_coefficient(p.mass[pl.j[q]], ri, a.provisional_density[pl.j[q]], pl.F[q], pl.r2[q], eta2);
       sys.source[i] = terms::poisson_source(st.rest_density, ri, dt);
     }
   }
@@ -323,9 +323,12 @@ Health Step::check_health() const {
   Health h;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const char* bad = nullptr;
-    if (!std::isfinite(p.x[i]) || !std::isfinite(p.y[i])) bad = "position";
-    else if (!std::isfinite(p.vx[i]) || !std::isfinite(p.vy[i])) bad = "velocity";
-    else if (!std::isfinite(a.pressure[i])) bad = "pressure";
+    if (!std::isfinite(p.x[i]) || !std::isfinite(p.y[i]))
+      bad = "position";
+    else if (!std::isfinite(p.vx[i]) || !std::isfinite(p.vy[i]))
+      bad = "velocity";
+    else if (!std::isfinite(a.pressure[i]))
+      bad = "pressure";
     if (!bad) continue;
     std::ostringstream os;
     os << "particle " << p.id[i] << ": field " << bad << " is not finite at step " << model_.state.step;

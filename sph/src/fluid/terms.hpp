@@ -34,7 +34,9 @@ inline double continuity_share(double mj, double dvx, double dvy, double F, doub
 // particle at rest on the lattice), max(rho_sum_i - rho0, 0), added to rho* so that a compression left by earlier
 // steps is pushed back (eq. 32 alone, based on rho0, forgets it). Expansion is left to gravity (a deficient kernel
 // sum near the surface is not an expansion).
-inline double compression(double kernel_density, double rho0) { return kernel_density > rho0 ? kernel_density - rho0 : 0.0; }
+inline double compression(double kernel_density, double rho0) {
+  return kernel_density > rho0 ? kernel_density - rho0 : 0.0;
+}
 
 // [I5] eq. 43 with decision D4: the free-surface indicator is the kernel sum rho_i = sum_j m_j W_ij (self
 // included), not the continuity density of eq. 32 (which stays near rho0 at a still surface).

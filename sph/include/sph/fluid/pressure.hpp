@@ -17,17 +17,17 @@ enum class PressureRole : std::uint8_t { unknown = 0, given = 1 };
 
 struct PoissonSystem {
   std::vector<std::uint32_t> start;  // per particle (n + 1), as in the pair list
-  std::vector<std::uint32_t> col;    // neighbour particle
-  std::vector<double> coef;          // B_ij
-  std::vector<double> source;        // s_i
+  std::vector<std::uint32_t> col;  // neighbour particle
+  std::vector<double> coef;  // B_ij
+  std::vector<double> source;  // s_i
   std::vector<PressureRole> role;
   std::size_t size() const { return role.size(); }
 };
 
 struct SolveReport {
-  int iterations = 0;             // Krylov iterations (explicit mode: 1 sweep)
-  double relative_residual = 0;   // |b - M p| / |b| over the unknowns after the solve
-  bool converged = true;          // iterative: the tolerance was reached within the iteration limit
+  int iterations = 0;  // Krylov iterations (explicit mode: 1 sweep)
+  double relative_residual = 0;  // |b - M p| / |b| over the unknowns after the solve
+  bool converged = true;  // iterative: the tolerance was reached within the iteration limit
   std::size_t unknowns = 0;
 };
 

@@ -9,25 +9,25 @@ namespace sph::fluid {
 // How the pressure Poisson equation (seed eq. 35) is solved each step.
 enum class PressureMode {
   explicit_jacobi,  // "explicit": one point-Jacobi sweep from the previous step's pressures (seed eq. 37)
-  iterative,        // "iterative": the same discrete equation solved to `solver_tolerance` (Eigen CG or BiCGSTAB)
+  iterative,  // "iterative": the same discrete equation solved to `solver_tolerance` (Eigen CG or BiCGSTAB)
 };
 
 enum class LinearSolver { conjugate_gradient, bicgstab };
 
 struct Settings {
   double particle_spacing = 0.01;  // dx [m]
-  double h_over_dx = 1.5;          // h = 1.5 dx (seed, dam break)
-  double rest_density = 1000.0;    // rho0 [kg/m^3]
-  double viscosity = 1.0e-3;       // dynamic viscosity mu [Pa s] (water at 20 C; the seed's 1e-4 is doubted, A10)
-  double eta_over_h = 0.1;         // eta = 0.1 h in the Laplacians (seed eqs. 9, 22, 36)
+  double h_over_dx = 1.5;  // h = 1.5 dx (seed, dam break)
+  double rest_density = 1000.0;  // rho0 [kg/m^3]
+  double viscosity = 1.0e-3;  // dynamic viscosity mu [Pa s] (water at 20 C; the seed's 1e-4 is doubted, A10)
+  double eta_over_h = 0.1;  // eta = 0.1 h in the Laplacians (seed eqs. 9, 22, 36)
   // free surface where the normalised kernel-sum density < beta rho0 (seed eq. 43, beta in 0.8-0.9; decision D4)
   double surface_beta = 0.9;
-  bool surface_mirror = false;           // seed eq. 46: double the pressure gradient at free-surface particles (D6)
+  bool surface_mirror = false;  // seed eq. 46: double the pressure gradient at free-surface particles (D6)
   bool compression_correction = false;  // add the kernel-sum compression to rho* (D3; false: eq. 32 as printed)
   double gravity_x = 0.0, gravity_y = -9.81;  // [m/s^2]
 
   // time step: dt = min(cfl dx / v_max, cfl sqrt(dx/|g|), viscous_alpha dx^2 rho0 / mu, max_time_step)
-  double cfl = 0.1;            // seed eq. 48 (Shao & Lo 2003)
+  double cfl = 0.1;  // seed eq. 48 (Shao & Lo 2003)
   double viscous_alpha = 0.1;  // seed eq. 49
   double max_time_step = 0.0;  // [s] an upper bound of the user's (0: none)
 
@@ -42,8 +42,8 @@ struct Settings {
   int wall_layers = 3;  // fixed wall particle rows (seed: 3); at least ceil(2h/dx)
 
   // run control
-  double end_time = 1.0;                   // [s]
-  double output_interval = 0.0;            // [s] between frames (<= 0: none)
+  double end_time = 1.0;  // [s]
+  double output_interval = 0.0;  // [s] between frames (<= 0: none)
   double checkpoint_interval_wall_s = 0.0;  // wall seconds between checkpoints (<= 0: none)
   double blow_up_energy_factor = 10.0;
 

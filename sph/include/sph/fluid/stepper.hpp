@@ -21,10 +21,10 @@ namespace sph::fluid {
 // What the last step did (for reports and tests).
 struct StepDiagnostics {
   SolveReport solve;
-  double max_density_error = 0;   // max over fluid of |rho* - rho0| / rho0
+  double max_density_error = 0;  // max over fluid of |rho* - rho0| / rho0
   double mean_density_error = 0;  // mean over fluid of |rho* - rho0| / rho0
   std::size_t surface_particles = 0;
-  std::size_t wall_passes = 0;    // wall extrapolations + solves of the last step
+  std::size_t wall_passes = 0;  // wall extrapolations + solves of the last step
   double time_step = 0;
 };
 
