@@ -3,6 +3,7 @@
 // Prints wall time, steps and fluid particle-steps per second for the thread count given by OMP_NUM_THREADS, and
 // the front against Martin & Moyce (1952, n^2 = 2; T = sqrt(2) t sqrt(g/a), Z = x/a, a = 1 m).
 // Usage: bench-isph [dx (default 0.01)] [explicit|iterative (default iterative)] [end time s (default 0.5)]
+//                   [solver tolerance (default: the settings' 1e-8)]
 #include <omp.h>
 
 #include <cmath>
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
   st.particle_spacing = argc > 1 ? std::atof(argv[1]) : 0.01;
   st.pressure_mode = sph::fluid::pressure_mode_from(argc > 2 ? argv[2] : "iterative");
   st.end_time = argc > 3 ? std::atof(argv[3]) : 0.5;
+  if (argc > 4) st.solver_tolerance = std::atof(argv[4]);
   const double a = 1.0;
   sph::fluid::Model model = sph::fluid::make_dam_break(st, a, 2.0, 4.0);
   long long iterations = 0;

@@ -100,7 +100,7 @@ TankResult run_tank(PressureMode mode) {
 TEST_CASE("ISPH still water tank: hydrostatic pressure, volume kept, no spurious motion", "[sph][isph][validation]") {
   const double depth = 0.4, dx = 0.02;
   const double celerity = std::sqrt(kG * depth);
-  SECTION("iterative pressure (CG to 1e-6)") {
+  SECTION("iterative pressure (CG to 1e-8)") {
     const TankResult r = run_tank(PressureMode::iterative);
     CHECK(r.outside == 0);
     CHECK(r.slope_ratio == Approx(1.0).margin(0.05));

@@ -33,7 +33,7 @@ struct Settings {
 
   PressureMode pressure_mode = PressureMode::iterative;
   LinearSolver solver = LinearSolver::conjugate_gradient;
-  double solver_tolerance = 1.0e-6;  // relative residual |b - A p| / |b| of the iterative mode
+  double solver_tolerance = 1.0e-8;  // relative residual |b - M p| / |b| of the iterative mode (D10)
   int solver_max_iterations = 2000;
   // iterative mode: solves of the fluid's equation per step, each after a new wall-pressure extrapolation (the
   // explicit mode does one extrapolation and one sweep)
