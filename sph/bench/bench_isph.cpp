@@ -24,7 +24,15 @@ int main(int argc, char** argv) {
   sph::fluid::Model model = sph::fluid::make_dam_break(st, a, 2.0, 4.0);
   long long iterations = 0;
   double worst_density_error = 0;
-  const auto sum = sph::fluid::run(model, {}, {}, [&](const sph::fluid::Step& s, const sph::RunState&) {
+  sph::RunOptions options;
+  options.progress_interval_wall_s = 30.0;
+  sph::RunCallbacks callbacks;
+  callbacks.progress = [](const sph::Progress& p) {
+    std::printf("  t = %.4f s  step %llu  %.1f steps/s  dt %.3g s  max speed %.3g m/s\n", p.time,
+                static_cast<unsigned long long>(p.step), p.steps_per_second, p.time_step, p.max_speed);
+    std::fflush(stdout);
+  };
+  const auto sum = sph::fluid::run(model, options, callbacks, [&](const sph::fluid::Step& s, const sph::RunState&) {
     iterations += s.diagnostics().solve.iterations;
     worst_density_error = std::max(worst_density_error, s.diagnostics().max_density_error);
   });
