@@ -13,6 +13,7 @@
 
 #include "sph/fluid/cases.hpp"
 #include "sph/fluid/run.hpp"
+#include "sphslope/units.hpp"
 
 int main(int argc, char** argv) {
   sph::fluid::Settings st;
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
     iterations += s.diagnostics().solve.iterations;
     worst_density_error = std::max(worst_density_error, s.diagnostics().max_density_error);
   });
-  const double T = std::sqrt(2.0) * model.state.time * std::sqrt(9.81 / a);
+  const double T = std::sqrt(2.0) * model.state.time * std::sqrt(sphslope::standard_gravity / a);
   std::printf(
       "bench-isph: dam break 1 m x 2 m in a 4 m tank, %zu fluid + %zu wall particles, dx = %.3g m, "
       "h/dx = %.2f, pressure %s (%s, tolerance %.0e)\n",

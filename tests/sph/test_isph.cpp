@@ -14,11 +14,12 @@
 #include "sph/fluid/cases.hpp"
 #include "sph/fluid/pressure.hpp"
 #include "sph/fluid/run.hpp"
+#include "sphslope/units.hpp"
 
 namespace {
 
 using namespace sph::fluid;
-constexpr double kG = 9.81;
+constexpr double kG = sphslope::standard_gravity;
 
 // A chain of n nodes, node 0 given (P = 0), B = -1 between neighbours; source from a manufactured solution.
 PoissonSystem chain_system(std::size_t n, std::vector<double>& exact) {
@@ -73,12 +74,22 @@ TEST_CASE("ISPH settings: keys and ranges", "[sph][isph]") {
   CHECK(linear_solver_from("bicgstab") == LinearSolver::bicgstab);
   CHECK_THROWS_AS(pressure_mode_from("implicit"), std::invalid_argument);
   Settings st;
-  CHECK_NOTHROW(validate(st));
+  CHECK_NOTHROW(st.validate());
   st.wall_layers = 2;  // h = 1.5 dx needs 3 rows
-  CHECK_THROWS_AS(validate(st), std::invalid_argument);
+  CHECK_THROWS_AS(st.validate(), std::invalid_argument);
   st = Settings{};
   st.surface_beta = 1.2;
-  CHECK_THROWS_AS(validate(st), std::invalid_argument);
+  CHECK_THROWS_AS(st.validate(), std::invalid_argument);
+  // the engine's settings and ranges (sph/engine/settings.hpp), with the fluid's defaults h = 1.5 dx and CFL 0.1
+  st = Settings{};
+  CHECK(st.h_over_dx == 1.5);
+  CHECK(st.cfl == 0.1);
+  CHECK(st.gravity_y == -sphslope::standard_gravity);
+  st.h_over_dx = 2.5;  // above EngineSettings::h_over_dx_max
+  CHECK_THROWS_AS(st.validate(), std::invalid_argument);
+  st = Settings{};
+  st.cfl = 0.8;  // above the engine's 0.5
+  CHECK_THROWS_AS(st.validate(), std::invalid_argument);
 }
 
 TEST_CASE("ISPH resume from a checkpoint gives bitwise the same state", "[sph][isph]") {

@@ -14,11 +14,12 @@
 
 #include "sph/fluid/cases.hpp"
 #include "sph/fluid/run.hpp"
+#include "sphslope/units.hpp"
 
 namespace {
 
 using namespace sph::fluid;
-constexpr double kG = 9.81;
+constexpr double kG = sphslope::standard_gravity;
 constexpr std::uint8_t kFluid = 0;
 
 struct TankResult {

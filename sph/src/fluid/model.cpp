@@ -4,7 +4,7 @@
 
 namespace sph::fluid {
 
-Model::Model(const Settings& s) : settings(s), fields(Fields::register_in(particles)) { validate(settings); }
+Model::Model(const Settings& s) : settings(s), fields(Fields::register_in(particles)) { settings.validate(); }
 
 double Model::fluid_mass() const {
   double m = 0;
@@ -35,7 +35,8 @@ std::size_t add_tank_walls(Model& model, double x_min, double x_max, double y_mi
 }
 
 void set_hydrostatic_pressure(Model& model, double surface_y) {
-  const double g = std::hypot(model.settings.gravity_x, model.settings.gravity_y);
+  const Settings& st = model.settings;
+  const double g = st.gravity_factor(model.state.time) * std::hypot(st.gravity_x, st.gravity_y);
   double* p = model.particles.field(model.fields.pressure).data();
   for (std::size_t i = 0; i < model.particles.size(); ++i)
     p[i] = model.settings.rest_density * g * std::max(surface_y - model.particles.y[i], 0.0);

@@ -2,28 +2,25 @@
 
 #include <cmath>
 
+#include "sph/engine/neighbours.hpp"
+
 namespace sph::fluid {
 
 namespace {
 using Index = std::int64_t;
 }  // namespace
 
-void PairList::build(const ParticleSet& p, const CellList& cells, const CubicSplineKernel& kernel) {
+void PairList::build(const ParticleSet& p, const CellSortedSet& sorted, const FluidKernel& kernel) {
   const std::size_t n = p.size();
   const Index nn = static_cast<Index>(n);
-  const double support2 = kernel.support() * kernel.support();
-  const double* x = p.x.data();
-  const double* y = p.y.data();
+  const double support = kernel.support();
   start.assign(n + 1, 0);
   // pass 1: count the neighbours of every particle
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < nn; ++k) {
     const auto i = static_cast<std::size_t>(k);
     std::uint32_t c = 0;
-    cells.for_each_candidate(i, [&](std::uint32_t jj) {
-      const double ddx = x[i] - x[jj], ddy = y[i] - y[jj];
-      if (jj != i && ddx * ddx + ddy * ddy < support2) ++c;
-    });
+    for_each_neighbour(sorted, p, i, support, [&](std::size_t, double, double, double) { ++c; });
     start[i + 1] = c;
   }
   for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
@@ -39,12 +36,9 @@ void PairList::build(const ParticleSet& p, const CellList& cells, const CubicSpl
   for (Index k = 0; k < nn; ++k) {
     const auto i = static_cast<std::size_t>(k);
     std::size_t at = start[i];
-    cells.for_each_candidate(i, [&](std::uint32_t jj) {
-      const double ddx = x[i] - x[jj], ddy = y[i] - y[jj];
-      const double rr = ddx * ddx + ddy * ddy;
-      if (jj == i || rr >= support2) return;
+    for_each_neighbour(sorted, p, i, support, [&](std::size_t jj, double ddx, double ddy, double rr) {
       const double r = std::sqrt(rr);
-      j[at] = jj;
+      j[at] = static_cast<std::uint32_t>(jj);
       dx[at] = ddx;
       dy[at] = ddy;
       r2[at] = rr;

@@ -17,8 +17,8 @@ constexpr std::uint8_t kFluid = static_cast<std::uint8_t>(ParticleKind::soil);
 }  // namespace
 
 struct Step::Impl {
-  explicit Impl(double h) : kernel(h) {}
-  CubicSplineKernel kernel;
+  Impl(KernelType type, double h) : kernel(type, h) {}
+  FluidKernel kernel;
   CellSortedSet sorted;
   PairList pairs;
   PoissonSystem system;
@@ -26,8 +26,9 @@ struct Step::Impl {
   double lattice_kernel_sum = 1;  // sum_j W_ij dx^2 over a full square lattice (the kernel sum of a particle at rest)
 };
 
-Step::Step(Model& model) : model_(model), impl_(std::make_unique<Impl>(model.settings.smoothing_length())) {
-  validate(model.settings);
+Step::Step(Model& model)
+    : model_(model), impl_(std::make_unique<Impl>(model.settings.kernel, model.settings.smoothing_length())) {
+  model.settings.validate();
   const double dx = model.settings.particle_spacing;
   const int reach = static_cast<int>(std::ceil(impl_->kernel.support() / dx)) + 1;
   double sum = 0;
@@ -37,6 +38,10 @@ Step::Step(Model& model) : model_(model), impl_(std::make_unique<Impl>(model.set
 }
 
 Step::~Step() = default;
+
+// The gravity acting at the current time (EngineSettings::gravity_factor: full, or ramped).
+double Step::gravity_x() const { return model_.settings.gravity_factor(model_.state.time) * model_.settings.gravity_x; }
+double Step::gravity_y() const { return model_.settings.gravity_factor(model_.state.time) * model_.settings.gravity_y; }
 
 void Step::initialise() {
   impl_->sorted.reserve(model_.particles);
@@ -69,10 +74,11 @@ void Step::viscous_step(double dt) {
   const PairList& pl = impl_->pairs;
   const Index n = static_cast<Index>(p.size());
   const double mu = st.viscosity, rho0 = st.rest_density, eta2 = st.eta() * st.eta();
+  const double gx = gravity_x(), gy = gravity_y();
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    if (p.kind[i] == kFluid) terms::body_force_step(p.vx[i], p.vy[i], st.gravity_x, st.gravity_y, dt);
+    if (p.kind[i] == kFluid) terms::body_force_step(p.vx[i], p.vy[i], gx, gy, dt);
   }
   impl_->ax.assign(p.size(), 0.0);
   impl_->ay.assign(p.size(), 0.0);
@@ -109,7 +115,7 @@ void Step::provisional_density(double dt) {
   const double scale = 1.0 / impl_->lattice_kernel_sum;
   const bool correct = model_.settings.compression_correction;
   // the walls' velocity in the fluid's continuity sum: the body-force increment (decision D7)
-  const double wvx = model_.settings.gravity_x * dt, wvy = model_.settings.gravity_y * dt;
+  const double wvx = gravity_x() * dt, wvy = gravity_y() * dt;
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
@@ -159,6 +165,7 @@ void Step::extrapolate_wall_pressure() {
   const PairList& pl = impl_->pairs;
   const Settings& st = model_.settings;
   const Index n = static_cast<Index>(p.size());
+  const double gx = gravity_x(), gy = gravity_y();
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
@@ -167,8 +174,7 @@ void Step::extrapolate_wall_pressure() {
     for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q) {
       const std::uint32_t j = pl.j[q];
       if (p.kind[j] != kFluid) continue;  // walls read only fluid values (no data race)
-      num += terms::wall_pressure_share(a.pressure[j], st.rest_density, st.gravity_x, st.gravity_y, pl.dx[q], pl.dy[q],
-                                        pl.W[q]);
+      num += terms::wall_pressure_share(a.pressure[j], st.rest_density, gx, gy, pl.dx[q], pl.dy[q], pl.W[q]);
       den += pl.W[q];
     }
     a.pressure[i] = den > 0 ? std::max(num / den, 0.0) : 0.0;
@@ -253,7 +259,7 @@ void Step::advance(double dt) {
   ParticleSet& p = model_.particles;
   const double cell = impl_->kernel.support();
   impl_->sorted.sort(p, cell);
-  impl_->pairs.build(p, impl_->sorted.cells(), impl_->kernel);
+  impl_->pairs.build(p, impl_->sorted, impl_->kernel);
   {
     const Arrays a = model_.arrays();
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -270,7 +276,7 @@ void Step::advance(double dt) {
       p.y[i] = terms::temporary_position(p.y[i], p.vy[i], dt);
     }
   impl_->sorted.sort(p, cell);
-  impl_->pairs.build(p, impl_->sorted.cells(), impl_->kernel);
+  impl_->pairs.build(p, impl_->sorted, impl_->kernel);
   provisional_density(dt);
   mark_roles();
   solve_pressure_equation(dt);

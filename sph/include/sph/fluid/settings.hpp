@@ -1,8 +1,13 @@
 #pragma once
 // Settings of the explicit three-step incompressible SPH (ISPH) fluid (Hosseini, Manzari & Hannani 2007, as used
-// by the seed paper, shared/seeds/seed-000-isph-landslide.md). SI units, 2-D. docs/isph.md lists the equations,
-// the decisions where the paper is wrong or silent, and every default below with its source.
+// by the seed paper, shared/seeds/seed-000-isph-landslide.md). SI units, 2-D. What every physics shares (kernel,
+// dx, h/dx and its range, gravity and its ramp, CFL factor, end time, output and checkpoint cadence, blow-up guard)
+// comes from sph::EngineSettings; this struct adds the fluid's options and its own defaults for two engine
+// settings (h = 1.5 dx, CFL 0.1, the seed's values). docs/isph.md lists the equations, the decisions where the
+// paper is wrong or silent, and every default below with its source.
 #include <string>
+
+#include "sph/engine/settings.hpp"
 
 namespace sph::fluid {
 
@@ -14,9 +19,12 @@ enum class PressureMode {
 
 enum class LinearSolver { conjugate_gradient, bicgstab };
 
-struct Settings {
-  double particle_spacing = 0.01;  // dx [m]
-  double h_over_dx = 1.5;  // h = 1.5 dx (seed, dam break)
+struct Settings : EngineSettings {
+  static constexpr double default_h_over_dx = 1.5;  // h = 1.5 dx (seed, dam break)
+  static constexpr double default_cfl = 0.1;  // seed eq. 48 (Shao & Lo 2003)
+
+  Settings();
+
   double rest_density = 1000.0;  // rho0 [kg/m^3]
   double viscosity = 1.0e-3;  // dynamic viscosity mu [Pa s] (water at 20 C; the seed's 1e-4 is doubted, A10)
   double eta_over_h = 0.1;  // eta = 0.1 h in the Laplacians (seed eqs. 9, 22, 36)
@@ -24,10 +32,9 @@ struct Settings {
   double surface_beta = 0.9;
   bool surface_mirror = false;  // seed eq. 46: double the pressure gradient at free-surface particles (D6)
   bool compression_correction = false;  // add the kernel-sum compression to rho* (D3; false: eq. 32 as printed)
-  double gravity_x = 0.0, gravity_y = -9.81;  // [m/s^2]
 
-  // time step: dt = min(cfl dx / v_max, cfl sqrt(dx/|g|), viscous_alpha dx^2 rho0 / mu, max_time_step)
-  double cfl = 0.1;  // seed eq. 48 (Shao & Lo 2003)
+  // time step: dt = min(cfl dx / v_max, cfl sqrt(dx/|g|), viscous_alpha dx^2 rho0 / mu, max_time_step), with the
+  // engine's `cfl` (default 0.1 here)
   double viscous_alpha = 0.1;  // seed eq. 49
   double max_time_step = 0.0;  // [s] an upper bound of the user's (0: none)
 
@@ -41,15 +48,12 @@ struct Settings {
 
   int wall_layers = 3;  // fixed wall particle rows (seed: 3); at least ceil(2h/dx)
 
-  // run control
-  double end_time = 1.0;  // [s]
-  double output_interval = 0.0;  // [s] between frames (<= 0: none)
-  double checkpoint_interval_wall_s = 0.0;  // wall seconds between checkpoints (<= 0: none)
-  double blow_up_energy_factor = 10.0;
-
-  double smoothing_length() const { return h_over_dx * particle_spacing; }
   double eta() const { return eta_over_h * smoothing_length(); }
   double particle_mass() const { return rest_density * particle_spacing * particle_spacing; }  // [kg/m]
+
+  // The engine's checks (validate_engine), then the fluid's. Throws std::invalid_argument naming the first
+  // setting out of its range.
+  void validate() const;
 };
 
 // "explicit" / "iterative"; "cg" / "bicgstab". Throws std::invalid_argument on other names.
@@ -57,8 +61,5 @@ PressureMode pressure_mode_from(const std::string& key);
 const char* pressure_mode_key(PressureMode mode);
 LinearSolver linear_solver_from(const std::string& key);
 const char* linear_solver_key(LinearSolver solver);
-
-// Throws std::invalid_argument naming the first setting out of its range.
-void validate(const Settings& settings);
 
 }  // namespace sph::fluid

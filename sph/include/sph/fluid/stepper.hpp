@@ -48,6 +48,8 @@ class Step : public Stepper {
   struct Impl;
 
  private:
+  double gravity_x() const;
+  double gravity_y() const;
   void viscous_step(double dt);
   void provisional_density(double dt);
   void mark_roles();
