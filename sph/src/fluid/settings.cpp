@@ -26,6 +26,7 @@ const char* linear_solver_key(LinearSolver solver) {
 }
 
 Settings::Settings() {
+  kernel = default_kernel;
   particle_spacing = 0.01;
   h_over_dx = default_h_over_dx;
   cfl = default_cfl;

@@ -23,6 +23,12 @@ struct Step::Impl {
   PairList pairs;
   PoissonSystem system;
   std::vector<double> ax, ay;  // viscous accelerations
+  // at r*: the inverse of each particle's kernel moment matrix M_i = -sum_j V_j F_ij x_ij x_ij^T (the identity
+  // for a full lattice support), 0 where M_i is too far from it (renormalisation refused)
+  std::vector<double> lxx, lxy, lyy;
+  std::vector<double> bx, by;  // b_i = sum_j B_ij x_ij (decision D14)
+  std::vector<double> source0;  // the density-invariance source before the consistency term
+  std::vector<std::uint8_t> dry;  // wall particles with no pressure (above the water): out of the moment matrices
   double lattice_kernel_sum = 1;  // sum_j W_ij dx^2 over a full square lattice (the kernel sum of a particle at rest)
 };
 
@@ -135,6 +141,48 @@ void Step::provisional_density(double dt) {
   }
 }
 
+// The inverse kernel moment matrices at r* (renormalisation of the gradient: exact for a linear field on any
+// particle arrangement, the identity on a full lattice).
+void Step::moment_matrices() {
+  const ParticleSet& p = model_.particles;
+  const PairList& pl = impl_->pairs;
+  const Index n = static_cast<Index>(p.size());
+  const double rho0 = model_.settings.rest_density;
+  impl_->lxx.assign(p.size(), 0.0);
+  impl_->lxy.assign(p.size(), 0.0);
+  impl_->lyy.assign(p.size(), 0.0);
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    double mxx = 0, mxy = 0, myy = 0;
+    for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q) {
+      if (impl_->dry[pl.j[q]]) continue;
+      const double w = -p.mass[pl.j[q]] / rho0 * pl.F[q];
+      mxx += w * pl.dx[q] * pl.dx[q];
+      mxy += w * pl.dx[q] * pl.dy[q];
+      myy += w * pl.dy[q] * pl.dy[q];
+    }
+    terms::invert_moment_matrix(mxx, mxy, myy, impl_->lxx[i], impl_->lxy[i], impl_->lyy[i]);
+  }
+}
+
+// The renormalised gradient of a field f at particle i, L_i sum_j V_j (f_j - f_i) grad_i W_ij (0 where the
+// renormalisation was refused).
+void Step::renormalised_gradient(std::size_t i, const double* f, double& gx, double& gy) const {
+  const ParticleSet& p = model_.particles;
+  const PairList& pl = impl_->pairs;
+  const double rho0 = model_.settings.rest_density;
+  double sx = 0, sy = 0;
+  for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q) {
+    if (impl_->dry[pl.j[q]]) continue;
+    const double w = p.mass[pl.j[q]] / rho0 * (f[pl.j[q]] - f[i]) * pl.F[q];
+    sx += w * pl.dx[q];
+    sy += w * pl.dy[q];
+  }
+  gx = impl_->lxx[i] * sx + impl_->lxy[i] * sy;
+  gy = impl_->lxy[i] * sx + impl_->lyy[i] * sy;
+}
+
 // The roles in the pressure equation: fluid particles are unknowns, except free-surface ones (P = 0, given);
 // wall particles hold the extrapolated pressure (given).
 void Step::mark_roles() {
@@ -181,10 +229,19 @@ void Step::extrapolate_wall_pressure() {
   }
 }
 
-// Step 3: the pressure Poisson equation (eqs. 35-37), explicit (one Jacobi sweep) or solved, with the wall
-// pressures extrapolated before each solve and after the last.
-void Step::solve_pressure_equation(double dt) {
-  ParticleSet& p = model_.particles;
+// Decision D13: wall particles whose pressure, extrapolated from the fluid's pressures of the last solve, is not
+// positive (walls above the water line) are "dry": they leave the moment matrices and the renormalised gradient
+// (they stay in the pressure equation as given values P = 0).
+void Step::mark_dry_walls() {
+  const ParticleSet& p = model_.particles;
+  const Arrays a = model_.arrays();
+  impl_->dry.assign(p.size(), 0);
+  for (std::size_t i = 0; i < p.size(); ++i) impl_->dry[i] = p.kind[i] != kFluid && !(a.pressure[i] > 0.0);
+}
+
+// The coefficients B_ij (eq. 36), the sources (eq. 35) and b_i = sum_j B_ij x_ij (D14).
+void Step::assemble_pressure_equation(double dt) {
+  const ParticleSet& p = model_.particles;
   const PairList& pl = impl_->pairs;
   const Settings& st = model_.settings;
   PoissonSystem& sys = impl_->system;
@@ -193,28 +250,64 @@ void Step::solve_pressure_equation(double dt) {
   sys.col = pl.j;
   sys.coef.resize(pl.pair_count());
   sys.source.resize(p.size());
+  impl_->bx.assign(p.size(), 0.0);
+  impl_->by.assign(p.size(), 0.0);
+  const Arrays a = model_.arrays();
   const Index n = static_cast<Index>(p.size());
-  {
-    const Arrays a = model_.arrays();
 #pragma omp parallel for schedule(static)
-    for (Index k = 0; k < n; ++k) {
-      const auto i = static_cast<std::size_t>(k);
-      const double ri = a.provisional_density[i];
-      for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q)
-        sys.coef[q] =
-            terms::laplacian_coefficient(p.mass[pl.j[q]], ri, a.provisional_density[pl.j[q]], pl.F[q], pl.r2[q], eta2);
-      sys.source[i] = terms::poisson_source(st.rest_density, ri, dt);
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const double ri = a.provisional_density[i];
+    double bx = 0, by = 0;
+    for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q) {
+      const std::uint32_t j = pl.j[q];
+      const double c = terms::laplacian_coefficient(p.mass[j], ri, a.provisional_density[j], pl.F[q], pl.r2[q], eta2);
+      sys.coef[q] = c;
+      bx += c * pl.dx[q];
+      by += c * pl.dy[q];
     }
+    impl_->bx[i] = bx;
+    impl_->by[i] = by;
+    sys.source[i] = terms::poisson_source(st.rest_density, ri, dt);
   }
+  impl_->source0 = sys.source;
+}
+
+// Decision D14: the source of every unknown with the consistency term b_i . grad P_i, grad P_i the renormalised
+// gradient of the current pressures (the last solve's, or the last step's before the first solve).
+void Step::add_consistency_term() {
+  const ParticleSet& p = model_.particles;
+  PoissonSystem& sys = impl_->system;
+  const double* pressure = p.field(model_.fields.pressure).data();
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (sys.role[i] != PressureRole::unknown) continue;
+    double gx, gy;
+    renormalised_gradient(i, pressure, gx, gy);
+    sys.source[i] = impl_->source0[i] + terms::laplacian_consistency(impl_->bx[i], impl_->by[i], gx, gy);
+  }
+}
+
+// Step 3: the pressure Poisson equation (eqs. 35-37), explicit (one Jacobi sweep) or solved, with the wall
+// pressures extrapolated before each solve and after the last.
+void Step::solve_pressure_equation(double dt) {
+  const Settings& st = model_.settings;
+  extrapolate_wall_pressure();
+  mark_dry_walls();
+  moment_matrices();
+  assemble_pressure_equation(dt);
   const bool explicit_mode = st.pressure_mode == PressureMode::explicit_jacobi;
   const int passes = explicit_mode ? 1 : st.wall_passes;
   for (int pass = 0; pass < passes; ++pass) {
-    extrapolate_wall_pressure();
-    std::vector<double>& pressure = p.field(model_.fields.pressure);
+    if (pass > 0) extrapolate_wall_pressure();
+    add_consistency_term();
+    std::vector<double>& pressure = model_.particles.field(model_.fields.pressure);
     if (explicit_mode)
-      diag_.solve = jacobi_sweep(sys, pressure);
+      diag_.solve = jacobi_sweep(impl_->system, pressure);
     else
-      diag_.solve = solve_pressure(sys, st.solver, st.solver_tolerance, st.solver_max_iterations, pressure);
+      diag_.solve = solve_pressure(impl_->system, st.solver, st.solver_tolerance, st.solver_max_iterations, pressure);
   }
   extrapolate_wall_pressure();
   diag_.wall_passes = static_cast<std::size_t>(passes);
@@ -242,7 +335,13 @@ void Step::correct(double dt) {
       gx += f * pl.dx[q];
       gy += f * pl.dy[q];
     }
-    const double w = terms::surface_gradient_weight(mirror && a.free_surface[i] != 0.0);
+    const bool surface = a.free_surface[i] != 0.0;
+    if (surface && !mirror && impl_->lxx[i] != 0.0) {  // decision D15: the renormalised surface gradient
+      impl_->ax[i] = -(impl_->lxx[i] * gx + impl_->lxy[i] * gy);
+      impl_->ay[i] = -(impl_->lxy[i] * gx + impl_->lyy[i] * gy);
+      continue;
+    }
+    const double w = terms::surface_gradient_weight(mirror && surface);
     impl_->ax[i] = -w * gx;
     impl_->ay[i] = -w * gy;
   }
@@ -270,11 +369,12 @@ void Step::advance(double dt) {
     }
   }
   viscous_step(dt);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == kFluid) {
-      p.x[i] = terms::temporary_position(p.x[i], p.vx[i], dt);
-      p.y[i] = terms::temporary_position(p.y[i], p.vy[i], dt);
-    }
+  const double wvx = gravity_x() * dt, wvy = gravity_y() * dt;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const bool fluid = p.kind[i] == kFluid;
+    p.x[i] = terms::temporary_position(p.x[i], fluid ? p.vx[i] : wvx, dt);
+    p.y[i] = terms::temporary_position(p.y[i], fluid ? p.vy[i] : wvy, dt);
+  }
   impl_->sorted.sort(p, cell);
   impl_->pairs.build(p, impl_->sorted, impl_->kernel);
   provisional_density(dt);
@@ -295,7 +395,11 @@ void Step::finish_positions(double dt) {
   double err_max = 0, err_sum = 0;
   std::size_t nf = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != kFluid) continue;
+    if (p.kind[i] != kFluid) {
+      p.x[i] = a.x_start[i];
+      p.y[i] = a.y_start[i];
+      continue;
+    }
     p.x[i] = terms::trapezoidal_position(a.x_start[i], a.vx_start[i], p.vx[i], dt);
     p.y[i] = terms::trapezoidal_position(a.y_start[i], a.vy_start[i], p.vy[i], dt);
     const double e = std::abs(a.provisional_density[i] - rho0) / rho0;

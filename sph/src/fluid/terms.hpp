@@ -4,6 +4,9 @@
 // the equation table in docs/isph.md. The loops that gather them over neighbours are in stepper.cpp and
 // pressure.cpp. Notation: x_ij = x_i - x_j, r = |x_ij|, grad_i W_ij = F(r) x_ij with F = W'(r)/r < 0,
 // so x_ij . grad_i W_ij = F r^2 <= 0.
+#include <algorithm>
+#include <cmath>
+
 namespace sph::fluid::terms {
 
 // [I1] eqs. 24-25, step 1: the body force alone, V* = V^n + g dt (no pressure in the predictor).
@@ -78,6 +81,27 @@ inline double wall_pressure_share(double p_f, double rho_f, double gx, double gy
                                   double w) {
   return (p_f + rho_f * (gx * dx_wf + gy * dy_wf)) * w;
 }
+
+// [I13] decisions D14, D15: the inverse L = M^-1 of the symmetric kernel moment matrix M = [[mxx, mxy], [mxy, myy]],
+// M = -sum_j V_j F_ij x_ij x_ij^T (the identity for a full support). Refused (L = 0) when the smallest
+// eigenvalue of M is below 1/4: a particle with so little support (a splash) keeps the plain gradient.
+inline void invert_moment_matrix(double mxx, double mxy, double myy, double& lxx, double& lxy, double& lyy) {
+  const double det = mxx * myy - mxy * mxy, half_trace = 0.5 * (mxx + myy);
+  const double smallest = half_trace - std::sqrt(std::max(half_trace * half_trace - det, 0.0));
+  if (!(smallest >= 0.25)) {
+    lxx = lxy = lyy = 0.0;
+    return;
+  }
+  lxx = myy / det;
+  lxy = -mxy / det;
+  lyy = mxx / det;
+}
+
+// [I14] decision D14: the consistency term of the pressure equation, b_i . grad P_i with b_i = sum_j B_ij x_ij
+// (0 for a full symmetric support). sum_j B_ij (P_i - P_j) = b_i . G for a linear field P of gradient G, so the
+// equation sum_j B_ij (P_i - P_j) = s_i + b_i . grad P_i holds a hydrostatic field also where the support is cut
+// by the free surface (without it the second row below the surface is 0.24 rho g dx too high).
+inline double laplacian_consistency(double bx, double by, double gx, double gy) { return bx * gx + by * gy; }
 
 // [I11] eqs. 31, 41-42: final position by the trapezoidal rule from the old position, r^{n+1} = r^n + dt/2 (V^n +
 // V^{n+1}); the temporary r* is discarded.

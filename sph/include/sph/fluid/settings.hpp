@@ -3,8 +3,8 @@
 // by the seed paper, shared/seeds/seed-000-isph-landslide.md). SI units, 2-D. What every physics shares (kernel,
 // dx, h/dx and its range, gravity and its ramp, CFL factor, end time, output and checkpoint cadence, blow-up guard)
 // comes from sph::EngineSettings; this struct adds the fluid's options and its own defaults for two engine
-// settings (h = 1.5 dx, CFL 0.1, the seed's values). docs/isph.md lists the equations, the decisions where the
-// paper is wrong or silent, and every default below with its source.
+// settings (h = 1.5 dx and CFL 0.1, the seed's values; the Wendland C2 kernel, decision D16). docs/isph.md lists the
+// equations, the decisions where the paper is wrong or silent, and every default below with its source.
 #include <string>
 
 #include "sph/engine/settings.hpp"
@@ -22,6 +22,9 @@ enum class LinearSolver { conjugate_gradient, bicgstab };
 struct Settings : EngineSettings {
   static constexpr double default_h_over_dx = 1.5;  // h = 1.5 dx (seed, dam break)
   static constexpr double default_cfl = 0.1;  // seed eq. 48 (Shao & Lo 2003)
+  // Wendland C2, not the seed's cubic spline: at h = 1.5 dx the spline puts the nearest neighbours at the
+  // inflection of W (q = 2/3) and a checkerboard displacement of the particles grows (decision D16)
+  static constexpr KernelType default_kernel = KernelType::wendland_c2;
 
   Settings();
 

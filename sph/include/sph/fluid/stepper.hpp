@@ -52,8 +52,13 @@ class Step : public Stepper {
   double gravity_y() const;
   void viscous_step(double dt);
   void provisional_density(double dt);
+  void moment_matrices();
+  void renormalised_gradient(std::size_t i, const double* f, double& gx, double& gy) const;
   void mark_roles();
   void extrapolate_wall_pressure();
+  void mark_dry_walls();
+  void assemble_pressure_equation(double dt);
+  void add_consistency_term();
   void solve_pressure_equation(double dt);
   void correct(double dt);
   void finish_positions(double dt);
