@@ -23,100 +23,170 @@ constexpr double kG = sphslope::standard_gravity;
 constexpr std::uint8_t kFluid = 0;
 
 struct TankResult {
-  double slope_ratio = 0;  // fitted -dp/dy over rho0 g
-  double worst_band = 0;  // max over 4 depth bands of |mean p - rho0 g (H - mean y)| / (rho0 g H)
-  double late_speed = 0;  // max fluid speed over the second half of the run [m/s]
-  double top = 0;  // highest fluid particle centre at the end [m]
-  double mean_density = 0;  // mean normalised kernel-sum density of the non-surface fluid [kg/m^3]
+  double worst_pressure = 0;  // max over non-surface fluid of |P - rho0 g (y_s - y)| / (rho0 g H)
+  double slope_ratio = 0;  // fitted -dP/dy over rho0 g
+  double early_speed = 0;  // max fluid speed over (0, settle] [m/s]
+  double late_speed = 0;  // max fluid speed over (settle, end] [m/s]
+  double top_shift = 0;  // mean height of the top row's particles at the end minus at the start [m]
+  double mass_change = 0;  // |fluid mass at the end - at the start| / at the start
   std::size_t outside = 0;  // fluid particle centres outside the tank's inner box
   std::size_t fluid = 0;
   double density_error = 0;  // max |rho* - rho0|/rho0 of the last step
 };
 
-TankResult measure_tank(const Model& m, double width, double depth) {
+// The pressure of every non-surface fluid particle against rho0 g (y_s - y), y_s = H - dx/2 the height of the
+// top row's centres, where the free-surface condition P = 0 is imposed (decision D6).
+void measure_pressure(const Model& m, double depth, TankResult& r) {
   const sph::ParticleSet& p = m.particles;
-  const ConstArrays a = m.arrays();
-  TankResult r;
-  double sy = 0, sp = 0, syy = 0, syp = 0, n = 0, kd = 0;
-  double band_p[4] = {0, 0, 0, 0}, band_y[4] = {0, 0, 0, 0}, band_n[4] = {0, 0, 0, 0};
+  const ConstArrays a(m.particles, m.fields);
+  const double rg = m.settings.rest_density * kG, ys = depth - 0.5 * m.settings.particle_spacing;
+  double sy = 0, sp = 0, syy = 0, syp = 0, n = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != kFluid) continue;
-    ++r.fluid;
-    r.top = std::max(r.top, p.y[i]);
-    if (p.x[i] <= 0 || p.x[i] >= width || p.y[i] <= 0) ++r.outside;
-    if (a.free_surface[i] != 0.0) continue;
+    if (p.kind[i] != kFluid || a.free_surface[i] != 0.0) continue;
     const double y = p.y[i], pr = a.pressure[i];
+    r.worst_pressure = std::max(r.worst_pressure, std::abs(pr - rg * (ys - y)) / (rg * depth));
     sy += y;
     sp += pr;
     syy += y * y;
     syp += y * pr;
     n += 1;
-    kd += a.kernel_density[i];
-    const int b = std::clamp(static_cast<int>(4.0 * y / depth), 0, 3);
-    band_p[b] += pr;
-    band_y[b] += y;
-    band_n[b] += 1;
   }
-  const double rg = m.settings.rest_density * kG;
   r.slope_ratio = -((n * syp - sy * sp) / (n * syy - sy * sy)) / rg;
-  r.mean_density = kd / n;
-  for (int b = 0; b < 4; ++b) {
-    if (band_n[b] == 0) continue;
-    const double pm = band_p[b] / band_n[b], ym = band_y[b] / band_n[b];
-    r.worst_band = std::max(r.worst_band, std::abs(pm - rg * (depth - ym)) / (rg * depth));
-  }
-  return r;
 }
+
+double fluid_mass(const Model& m) {
+  double mass = 0;
+  for (std::size_t i = 0; i < m.particles.size(); ++i)
+    if (m.particles.kind[i] == kFluid) mass += m.particles.mass[i];
+  return mass;
+}
+
+double top_row_height(const Model& m, double depth) {
+  double sum = 0, n = 0;
+  for (std::size_t i = 0; i < m.particles.size(); ++i)
+    if (m.particles.kind[i] == kFluid && m.particles.y0[i] > depth - m.settings.particle_spacing) {
+      sum += m.particles.y[i];
+      n += 1;
+    }
+  return sum / n;
+}
+
+constexpr double kTankSettle = 1.0, kTankEnd = 2.0;  // [s]
 
 TankResult run_tank(PressureMode mode) {
   const double width = 0.4, depth = 0.4;
   Settings st;
   st.particle_spacing = 0.02;
   st.pressure_mode = mode;
-  st.end_time = 2.0;
+  st.end_time = kTankEnd;
   Model m = make_still_tank(st, width, depth);
+  const double mass0 = fluid_mass(m), top0 = top_row_height(m, depth);
   const std::size_t fluid0 = m.particles.count(sph::ParticleKind::soil);
-  double late = 0, derr = 0;
+  TankResult r;
   const auto sum = run(m, {}, {}, [&](const Step& s, const sph::RunState& rs) {
-    derr = s.diagnostics().max_density_error;
-    if (rs.time < 0.5 * st.end_time) return;
+    r.density_error = s.diagnostics().max_density_error;
+    double& speed = rs.time <= kTankSettle ? r.early_speed : r.late_speed;
     for (std::size_t i = 0; i < m.particles.size(); ++i)
-      if (m.particles.kind[i] == kFluid) late = std::max(late, std::hypot(m.particles.vx[i], m.particles.vy[i]));
+      if (m.particles.kind[i] == kFluid) speed = std::max(speed, std::hypot(m.particles.vx[i], m.particles.vy[i]));
   });
   REQUIRE(sum.stopped_because == "end_time");
-  TankResult r = measure_tank(m, width, depth);
-  r.late_speed = late;
-  r.density_error = derr;
+  measure_pressure(m, depth, r);
+  r.mass_change = std::abs(fluid_mass(m) - mass0) / mass0;
+  r.top_shift = top_row_height(m, depth) - top0;
+  for (std::size_t i = 0; i < m.particles.size(); ++i) {
+    if (m.particles.kind[i] != kFluid) continue;
+    ++r.fluid;
+    if (m.particles.x[i] <= 0 || m.particles.x[i] >= width || m.particles.y[i] <= 0) ++r.outside;
+  }
   REQUIRE(r.fluid == fluid0);
   std::printf(
-      "still tank (%s, dx = %.3f m, %zu fluid, %llu steps, %.2f s wall): -dp/dy / rho g = %.4f, worst band "
-      "error %.4f, late max speed %.4f m/s, top %.4f m, mean kernel density %.1f, density error %.4f\n",
+      "still tank (%s, dx = %.3f m, %zu fluid, %llu steps, %.2f s wall): worst particle pressure error %.4f rho g H, "
+      "-dp/dy / rho g = %.4f, max speed %.4f m/s to %.1f s and %.4f m/s after (%.2f %% of sqrt(gH)), top row moved "
+      "%.2f mm, mass change %.1e, density error %.4f\n",
       pressure_mode_key(mode), st.particle_spacing, r.fluid, static_cast<unsigned long long>(sum.steps),
-      sum.wall_seconds, r.slope_ratio, r.worst_band, r.late_speed, r.top, r.mean_density, r.density_error);
+      sum.wall_seconds, r.worst_pressure, r.slope_ratio, r.early_speed, kTankSettle, r.late_speed,
+      100.0 * r.late_speed / std::sqrt(kG * depth), 1e3 * r.top_shift, r.mass_change, r.density_error);
   return r;
 }
 
 }  // namespace
 
-TEST_CASE("ISPH still water tank: hydrostatic pressure, volume kept, no spurious motion", "[sph][isph][validation]") {
+// Water at rest, 0.4 m x 0.4 m, dx = 0.02 m (400 fluid particles), hydrostatic start, 2 s. Reference: hydrostatics,
+// P = rho0 g (y_s - y) with y_s the height of the top row's centres (the free-surface condition's place), and a
+// fluid at rest. Tolerances (docs/isph.md section 5, measured values there):
+//  * every non-surface particle's pressure within 0.5 % of rho0 g H of hydrostatic at the end (measured 0.13 %;
+//    before decision D14 the second row below the surface alone was 0.24 rho0 g dx = 1.2 % of rho0 g H too high);
+//  * the fitted -dP/dy within 0.5 % of rho0 g (measured 0.03 % iterative, 0.12 % explicit);
+//  * mass: no particle lost or added, total mass unchanged to round-off; volume: the top row's mean height moved by
+//    less than dx/10 (before decisions D12-D16 the surface particles sank by 0.25 dx in 2 s);
+//  * motion: the largest speed after a settling second below 1.5 % of sqrt(g H) = 0.030 m/s (measured 1.0 %
+//    iterative, 1.3 % explicit; 11 % before the fix). Not 1 %: an undamped shear mode of the particle lattice
+//    (alternate columns sliding vertically, restoring stiffness about 150 s^-2 against 1750 s^-2 for the
+//    checkerboard) stays excited at about 1 %. The bound holds only to about 2.5 s at this spacing: later a
+//    surface particle at a wall corner is lifted out (docs/isph.md section 5, an open item), which is why the run
+//    stops at 2 s.
+TEST_CASE("ISPH still water tank: hydrostatic pressure, mass kept, fluid at rest", "[sph][isph][validation]") {
   const double depth = 0.4, dx = 0.02;
   const double celerity = std::sqrt(kG * depth);
-  SECTION("iterative pressure (CG to 1e-8)") {
-    const TankResult r = run_tank(PressureMode::iterative);
+  for (PressureMode mode : {PressureMode::iterative, PressureMode::explicit_jacobi}) {
+    INFO("pressure mode " << pressure_mode_key(mode));
+    const TankResult r = run_tank(mode);
     CHECK(r.outside == 0);
-    CHECK(r.slope_ratio == Approx(1.0).margin(0.05));
-    CHECK(r.worst_band < 0.05);
-    CHECK(std::abs(r.top - (depth - 0.5 * dx)) < dx);
-    CHECK(r.mean_density == Approx(1000.0).margin(20.0));
-    CHECK(r.late_speed < 0.15 * celerity);
+    CHECK(r.worst_pressure < 0.005);
+    CHECK(r.slope_ratio == Approx(1.0).margin(0.005));
+    CHECK(r.mass_change < 1e-12);
+    CHECK(std::abs(r.top_shift) < 0.1 * dx);
+    CHECK(r.late_speed < 0.015 * celerity);
   }
-  SECTION("explicit pressure (one Jacobi sweep per step, seed eq. 37)") {
-    const TankResult r = run_tank(PressureMode::explicit_jacobi);
-    CHECK(r.outside == 0);
-    CHECK(r.slope_ratio == Approx(1.0).margin(0.10));
-    CHECK(r.worst_band < 0.10);
-    CHECK(r.late_speed < 0.15 * celerity);
-  }
+}
+
+// Decision D16: a checkerboard displacement of the particles (alternate particles moved by +-0.02 dx along the
+// diagonal, in the interior of the still tank) must be pushed back. With the cubic spline at h = 1.5 dx the nearest
+// neighbours sit at the inflection of W (q = 2/3) and the displacement grows (measured +0.40 m/s^2, growth rate
+// about 30/s, the still tank's spurious motion before the fix); with the Wendland C2 kernel it is restored
+// (measured -0.98 m/s^2).
+TEST_CASE("ISPH checkerboard displacement is restored with the fluid's kernel and grows with the cubic spline",
+          "[sph][isph]") {
+  auto projected_acceleration = [](sph::KernelType kernel) {
+    Settings st;
+    st.kernel = kernel;
+    st.particle_spacing = 0.02;
+    st.max_time_step = 1e-3;
+    Model m = make_still_tank(st, 0.4, 0.4);
+    sph::ParticleSet& p = m.particles;
+    const double d = 0.02 * st.particle_spacing;
+    auto sign = [&](std::size_t i) {
+      const int c = static_cast<int>(std::floor(p.x0[i] / st.particle_spacing));
+      const int r = static_cast<int>(std::floor(p.y0[i] / st.particle_spacing));
+      return (c + r) % 2 != 0 ? -1.0 : 1.0;
+    };
+    auto inside = [&](std::size_t i) {
+      return p.kind[i] == kFluid && p.x0[i] > 0.1 && p.x0[i] < 0.3 && p.y0[i] > 0.05 && p.y0[i] < 0.3;
+    };
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (inside(i)) {
+        p.x[i] += sign(i) * d;
+        p.y[i] += sign(i) * d;
+      }
+    sph::RunOptions opt;
+    opt.max_steps = 1;
+    run(m, opt);
+    double sum = 0, n = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (inside(i)) {
+        sum += sign(i) * (p.vx[i] + p.vy[i]) / std::sqrt(2.0);
+        n += 1;
+      }
+    return sum / n / m.state.time;
+  };
+  const double wendland = projected_acceleration(Settings{}.kernel);
+  const double cubic = projected_acceleration(sph::KernelType::cubic_spline);
+  std::printf(
+      "checkerboard 0.02 dx: mean acceleration along the displacement %+.3f m/s^2 (Wendland C2), %+.3f (cubic)\n",
+      wendland, cubic);
+  CHECK(Settings{}.kernel == sph::KernelType::wendland_c2);
+  CHECK(wendland < -0.5);
+  CHECK(cubic > 0.2);
 }
 
 namespace {
