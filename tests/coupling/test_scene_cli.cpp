@@ -7,8 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -28,12 +28,10 @@ ProgramRun run_program(const std::string& arguments) { return run_sphslope(argum
 
 fs::path source_path(const std::string& relative) { return fs::path(SPHSLOPE_SOURCE_DIR) / relative; }
 
-
-
 struct BadScene {
-  const char* file;        // in tests/coupling/bad_scenes/
-  const char* command;     // check or lem
-  const char* expected;    // substring of the error message (the JSON path, or the line/column)
+  const char* file;  // in tests/coupling/bad_scenes/
+  const char* command;  // check or lem
+  const char* expected;  // substring of the error message (the JSON path, or the line/column)
 };
 
 // Every malformed scene must be rejected with exit status 2 and a message naming where the fault is.
@@ -47,7 +45,8 @@ const BadScene bad_scenes[] = {
     {"missing_analyses.json", "check", "analyses: missing"},
     {"wrong_type_cohesion.json", "check", "section.materials[0].cohesion_kPa: expected a number"},
     {"wrong_type_points.json", "check", "section.profile_lines[0].points_m[1][1]: expected a number"},
-    {"unknown_key_material.json", "check", "section.materials[0].cohesion_kpa: unknown key (did you mean \"cohesion_kPa\"?"},
+    {"unknown_key_material.json", "check",
+     "section.materials[0].cohesion_kpa: unknown key (did you mean \"cohesion_kPa\"?"},
     {"unknown_key_top.json", "check", "analysis: unknown key (did you mean \"analyses\"?"},
     {"unknown_analysis.json", "check", "analyses.fem: unknown key"},
     {"empty_analyses.json", "check", "analyses: no analysis requested"},
@@ -80,12 +79,15 @@ const BadScene bad_scenes[] = {
     {"radius_zero.json", "check", "analyses.lem.search.radius_m: both ends must be > 0"},
     {"minimum_depth_negative.json", "check", "analyses.lem.search.minimum_depth_m: must be > 0 (got -1)"},
     {"grid_count_one.json", "check", "analyses.lem.search.centre_grid.nx: must be in [2, 200]"},
-    {"sph_missing_elastic.json", "check", "section.materials[0]: material \"upper\" lacks youngs_modulus_MPa and poisson_ratio"},
+    {"sph_missing_elastic.json", "check",
+     "section.materials[0]: material \"upper\" lacks youngs_modulus_MPa and poisson_ratio"},
     // Found by scripts/fuzz: the particle and step counts of an absurd spacing overflowed their integer types.
     {"spacing_absurdly_small.json", "check", "more than analyses.sph.max_particles = 5000000"},
     {"lem_without_section.json", "check", "analyses.lem: limit equilibrium needs a \"section\""},
     {"slip_surface_above_ground.json", "check",
      "analyses.lem.surfaces[0]: not an admissible slip surface: point 1 (25, 19) is not below the ground surface"},
+    {"isph_unknown_pressure_mode.json", "check", "analyses.isph.pressure: expected \"explicit\" or \"iterative\""},
+    {"isph_water_outside_tank.json", "check", "analyses.isph.water[0]: the water must lie inside the tank"},
     // Valid on its own; only the search itself finds that the limits admit no slip circle.
     {"no_valid_circle.json", "lem", "analyses.lem.search: the search limits admit no valid slip circle"},
 };
@@ -133,11 +135,11 @@ TEST_CASE("a missing scene file and a bad command line are invalid input", "[cli
   const ProgramRun missing = run_program("check /nonexistent/scene.json");
   CHECK(missing.status == 2);
   CHECK(missing.output.find("cannot read scene file") != std::string::npos);
-  CHECK(run_program("lem").status == 2);                 // SCENE is required
-  CHECK(run_program("frobnicate x.json").status == 2);   // unknown subcommand
-  CHECK(run_program("").status == 2);                    // a subcommand is required
+  CHECK(run_program("lem").status == 2);  // SCENE is required
+  CHECK(run_program("frobnicate x.json").status == 2);  // unknown subcommand
+  CHECK(run_program("").status == 2);  // a subcommand is required
   const std::string column = quoted(source_path("cases/elastic_column.json").string());
-  CHECK(run_program("study " + column).status == 2);     // --spacings is required
+  CHECK(run_program("study " + column).status == 2);  // --spacings is required
   const ProgramRun bad_spacing = run_program("study " + column + " --spacings 0.1,0 -o /nonexistent/study");
   CHECK(bad_spacing.status == 2);
   CHECK(bad_spacing.output.find("--spacings: 0 is not a positive spacing") != std::string::npos);
@@ -146,7 +148,7 @@ TEST_CASE("a missing scene file and a bad command line are invalid input", "[cli
 TEST_CASE("sphslope study prints a table of errors and writes study.json", "[cli][study][e2e]") {
   TemporaryFolder folder("study");
   const ProgramRun result = run_program("study " + quoted(source_path("cases/elastic_column.json").string()) +
-                                           " --spacings 0.1,0.05 -o " + quoted(folder.path.string()));
+                                        " --spacings 0.1,0.05 -o " + quoted(folder.path.string()));
   INFO(result.output);
   REQUIRE(result.status == 0);
   CHECK(result.output.find("sigma_yy_error") != std::string::npos);
@@ -202,8 +204,8 @@ TEST_CASE("sphslope lem on Griffiths & Lane (1999) writes a complete report.json
   if (scene_json["analyses"]["lem"].contains("methods")) {
     for (const auto& m : scene_json["analyses"]["lem"]["methods"]) requested.push_back(m.get<std::string>());
   } else {
-    requested = {"ordinary", "bishop", "janbu", "janbu_corrected", "spencer", "morgenstern_price",
-                 "morgenstern_price_constant"};
+    requested = {
+        "ordinary", "bishop", "janbu", "janbu_corrected", "spencer", "morgenstern_price", "morgenstern_price_constant"};
   }
   for (const std::string& method : requested) {
     INFO(method);
@@ -220,10 +222,10 @@ TEST_CASE("sphslope lem on Griffiths & Lane (1999) writes a complete report.json
     REQUIRE(m["slices"].size() >= 5);
     double weight = 0.0;
     for (const auto& slice : m["slices"]) {
-      for (const char* key : {"x_left_m", "x_right_m", "base_angle_deg", "weight_kN_m", "pore_pressure_kPa",
-                              "normal_force_kN_m", "shear_force_kN_m", "base_length_m", "cohesion_kPa",
-                              "friction_angle_deg", "surcharge_kN_m", "interslice_normal_right_kN_m",
-                              "interslice_shear_right_kN_m"}) {
+      for (const char* key :
+           {"x_left_m", "x_right_m", "base_angle_deg", "weight_kN_m", "pore_pressure_kPa", "normal_force_kN_m",
+            "shear_force_kN_m", "base_length_m", "cohesion_kPa", "friction_angle_deg", "surcharge_kN_m",
+            "interslice_normal_right_kN_m", "interslice_shear_right_kN_m"}) {
         INFO(key);
         CHECK(slice.contains(key));
       }
@@ -284,7 +286,6 @@ TEST_CASE("sphslope run writes runs/<scene stem>/report.json by default, pore pr
   CHECK_FALSE(report["lem"]["methods"].contains("morgenstern_price_constant"));  // not asked for in this scene
 }
 
-
 TEST_CASE("sphslope run prints the strength-reduction FS next to the LEM ones on stdout", "[cli][srm][e2e]") {
   TemporaryFolder folder("srm");
   std::ifstream in(source_path("cases/griffiths_lane_1999_srm.json"));
@@ -306,4 +307,45 @@ TEST_CASE("sphslope run prints the strength-reduction FS next to the LEM ones on
   CHECK(fs_sph < 1.6);
   CHECK(result.output.find("limit equilibrium bishop") != std::string::npos);
   CHECK(result.output.find("limit equilibrium spencer") != std::string::npos);
+}
+
+// The isph analysis from the command line: the Martin & Moyce dam break of cases/ at a coarse spacing and a short
+// end, its report block and monitors.csv (time_s, the gauge <name>_m, front_x_m). The front must have left the
+// column (x > a) and stay in the tank; the fluid mass is kept (no particle leaves a closed tank).
+TEST_CASE("sphslope run on an isph scene writes the isph block and monitors.csv", "[cli][isph][e2e]") {
+  TemporaryFolder folder("isph");
+  std::ifstream in(source_path("cases/isph_dam_break_martin_moyce.json"));
+  nlohmann::json scene = nlohmann::json::parse(in);
+  const double a = 0.05715;
+  scene["analyses"]["isph"]["particle_spacing_m"] = a / 10.0;  // 200 fluid particles: about a second
+  scene["analyses"]["isph"]["end_time_s"] = 0.1;
+  const fs::path file = folder.path / "isph.json";
+  std::ofstream(file) << scene.dump();
+  const fs::path out = folder.path / "out";
+  const ProgramRun result = run_program("run " + quoted(file.string()) + " -o " + quoted(out.string()));
+  INFO(result.output);
+  REQUIRE(result.status == 0);
+  std::ifstream report_file(out / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(report_file);
+  const nlohmann::json& isph = report["isph"];
+  CHECK(isph["status"] == "ok");
+  CHECK(isph["particles"]["fluid"] == 200);
+  CHECK(isph["simulated_time_s"].get<double>() == Approx(0.1));
+  CHECK(isph["fluid_mass_kg_per_m"]["end"].get<double>() == Approx(isph["fluid_mass_kg_per_m"]["start"].get<double>()));
+  const double front = isph["front_x_m"].get<double>();
+  CHECK(front > 1.5 * a);
+  CHECK(front < 6.0 * a);
+  std::ifstream csv(out / "monitors.csv");
+  std::string header, line, last;
+  std::getline(csv, header);
+  CHECK(header == "time_s,depth_at_0p1_m,front_x_m");
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    last = line;
+    ++rows;
+  }
+  CHECK(rows == isph["monitors"]["rows"].get<int>());
+  CHECK(rows >= 21);  // t = 0, then every 5 ms to 0.1 s
+  const double last_front = std::stod(last.substr(last.rfind(',') + 1));
+  CHECK(last_front == Approx(front).margin(a / 10.0));
 }

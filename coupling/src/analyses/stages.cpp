@@ -9,12 +9,14 @@ bool lem_requested(const Scene&, const StageContext& context) { return context.l
 bool sph_requested(const Scene& scene, const StageContext&) { return scene.analyses.sph.has_value(); }
 bool compare_requested(const Scene& scene, const StageContext&) { return scene.analyses.compare.has_value(); }
 bool srm_requested(const Scene& scene, const StageContext&) { return scene.analyses.srm.has_value(); }
+bool isph_requested(const Scene& scene, const StageContext&) { return scene.analyses.isph.has_value(); }
 
 constexpr Stage stages[] = {
     {"lem", lem_requested, run_lem_stage},
     {"sph", sph_requested, run_sph_analysis_stage},
     {"compare", compare_requested, run_compare_stage},
     {"srm", srm_requested, run_srm_stage},
+    {"isph", isph_requested, run_isph_stage},
 };
 
 }  // namespace

@@ -31,8 +31,9 @@ class DuplicateKeyCheck {
         Frame& top = stack_.back();
         top.key = parsed.get<std::string>();
         if (!top.keys.insert(top.key).second) {
-          diagnostics_->error(path(), "duplicate key (each key may appear once in an object; the JSON parser "
-                                      "would keep only the last one)");
+          diagnostics_->error(path(),
+                              "duplicate key (each key may appear once in an object; the JSON parser "
+                              "would keep only the last one)");
         }
         break;
       }
@@ -130,8 +131,8 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
   }
   if (const auto refine = lem->boolean("refine", Need::optional)) result.search.refine = *refine;
   if (auto search = lem->object("search", Need::optional)) {
-    result.has_search_limits = read_search_limits(*search, scene.section ? &scene.section->section : nullptr,
-                                                  result.search.limits);
+    result.has_search_limits =
+        read_search_limits(*search, scene.section ? &scene.section->section : nullptr, result.search.limits);
     if (const auto depth = read_minimum_depth(*search)) {
       result.search.minimum_depth = *depth;
       result.has_search_limits = true;
@@ -180,8 +181,12 @@ void read_analyses(JsonReader& top, Scene& scene, bool has_section, SphBlocks& b
       blocks.srm = srm;
     }
   }
-  if (!analyses->has("lem") && !analyses->has("sph") && !analyses->has("compare") && !analyses->has("srm")) {
-    diagnostics.error(analyses->path(), "no analysis requested (add at least one of: \"lem\": {}, \"sph\": {...})");
+  if (auto isph = analyses->object("isph", Need::optional, "an object (docs/scene-format.md, analyses.isph)"))
+    scene.analyses.isph = read_isph_analysis(*isph);
+  if (!analyses->has("lem") && !analyses->has("sph") && !analyses->has("compare") && !analyses->has("srm") &&
+      !analyses->has("isph")) {
+    diagnostics.error(analyses->path(),
+                      "no analysis requested (add at least one of: \"lem\": {}, \"sph\": {...}, \"isph\": {...})");
   }
   analyses->finish();
 }
@@ -194,8 +199,9 @@ void read_srm_scene(const SphBlocks& blocks, Scene& scene, Diagnostics& diagnost
   if (!scene.section)
     diagnostics.error("analyses.srm", "strength reduction needs a slope \"section\" (this is a particle scene)");
   if (!blocks.sph)
-    diagnostics.error("analyses.srm", "strength reduction needs analyses.sph in the scene for the particle settings "
-                                      "(particle_spacing_m, ...)");
+    diagnostics.error("analyses.srm",
+                      "strength reduction needs analyses.sph in the scene for the particle settings "
+                      "(particle_spacing_m, ...)");
 }
 
 LemAnalysis default_lem_analysis() {
@@ -216,8 +222,8 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
 
   if (const auto format = top.string("format", Need::required)) {
     if (*format != scene_format) {
-      diagnostics.error("format", "unsupported format \"" + *format + "\" (allowed: \"" + std::string(scene_format) +
-                                      "\")");
+      diagnostics.error("format",
+                        "unsupported format \"" + *format + "\" (allowed: \"" + std::string(scene_format) + "\")");
     }
   }
   scene.name = top.string("name", Need::optional).value_or(file.stem().string());
@@ -226,9 +232,14 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
 
   const bool has_section = top.has("section");
   const bool has_bodies = top.has("bodies");
-  if (!has_section && !has_bodies && top.is_object()) {
-    diagnostics.error("section", "missing (required: a \"section\" for a slope, or \"bodies\" (and \"walls\") for a "
-                                 "particle scene)");
+  // a fluid scene: analyses.isph carries its own tank and water
+  const auto analyses_block = document.find("analyses");
+  const bool fluid_scene =
+      analyses_block != document.end() && analyses_block->is_object() && analyses_block->contains("isph");
+  if (!has_section && !has_bodies && !fluid_scene && top.is_object()) {
+    diagnostics.error("section",
+                      "missing (required: a \"section\" for a slope, \"bodies\" (and \"walls\") for a "
+                      "particle scene, or analyses.isph for a fluid scene)");
   }
   if (has_section) {
     if (auto section = top.object("section", Need::required)) {
@@ -271,7 +282,8 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file) {
   } catch (const nlohmann::json::exception& error) {
     // e.g. out_of_range.406 "number overflow parsing '1e400'" (no position is available for these).
     std::string detail = error.what();
-    if (const auto bracket = detail.find("] "); detail.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) {
+    if (const auto bracket = detail.find("] ");
+        detail.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) {
       detail = detail.substr(bracket + 2);
     }
     throw SceneError({"invalid JSON: " + detail});
@@ -355,8 +367,15 @@ std::string summarize(const Scene& scene) {
         << s.profile_lines.size() << " profile line" << (s.profile_lines.size() == 1 ? "" : "s") << ", "
         << s.materials.size() << " material" << (s.materials.size() == 1 ? "" : "s");
     if (s.water) out << ", water table";
-    if (!s.surcharges.empty()) out << ", " << s.surcharges.size() << " surcharge" << (s.surcharges.size() == 1 ? "" : "s");
+    if (!s.surcharges.empty())
+      out << ", " << s.surcharges.size() << " surcharge" << (s.surcharges.size() == 1 ? "" : "s");
     if (s.seismic_coefficient > 0) out << ", seismic kh = " << format_number(s.seismic_coefficient);
+  }
+  if (scene.analyses.isph) {
+    const IsphAnalysis& f = *scene.analyses.isph;
+    out << "fluid tank x " << format_number(f.tank.x_min) << " to " << format_number(f.tank.x_max) << " m, "
+        << f.water.size() << " water block" << (f.water.size() == 1 ? "" : "s");
+    if (scene.section || scene.body_count) out << "; ";
   }
   if (scene.body_count) {
     if (scene.section) out << "; ";
@@ -374,6 +393,7 @@ std::string summarize(const Scene& scene) {
   if (scene.analyses.sph) analyses.emplace_back("sph");
   if (scene.analyses.compare) analyses.emplace_back("compare");
   if (scene.analyses.srm) analyses.emplace_back("srm");
+  if (scene.analyses.isph) analyses.emplace_back("isph");
   out << "; analyses: " << join(analyses);
   return out.str();
 }

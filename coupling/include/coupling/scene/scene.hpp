@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/scene/analysis_options.hpp"
+#include "coupling/scene/isph_analysis.hpp"
 #include "coupling/scene/soil_material.hpp"
 #include "coupling/scene/sph_analysis.hpp"
 #include "slope/methods.hpp"
@@ -58,7 +59,8 @@ struct Analyses {
   std::optional<SphAnalysis> sph;
   std::optional<ComparisonOptions> compare;
   std::optional<SrmOptions> srm;
-  bool empty() const { return !lem && !sph && !compare && !srm; }
+  std::optional<IsphAnalysis> isph;  // the ISPH fluid (docs/isph.md), independent of the others
+  bool empty() const { return !lem && !sph && !compare && !srm && !isph; }
 };
 
 struct Scene {

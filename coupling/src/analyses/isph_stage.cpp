@@ -1,0 +1,138 @@
+// The "isph" stage: the explicit three-step ISPH fluid (analyses.isph, docs/isph.md) in a tank, with its monitors
+// (surface gauges, the surge front) written to monitors.csv and its block of report.json.
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <ostream>
+#include <string>
+
+#include "coupling/analyses/stage.hpp"
+#include "coupling/output/isph_report.hpp"
+#include "sph/engine/atomic_file.hpp"
+#include "sph/fluid/cases.hpp"
+#include "sph/fluid/run.hpp"
+
+namespace coupling {
+
+namespace {
+
+constexpr std::uint8_t kFluid = 0;
+
+sph::fluid::Model build_isph_model(const IsphAnalysis& a) {
+  sph::fluid::Model model(a.settings);
+  double top = -std::numeric_limits<double>::infinity();
+  for (const IsphRectangle& w : a.water) {
+    sph::fluid::add_fluid_block(model, w.x_min, w.y_min, w.x_max, w.y_max);
+    top = std::max(top, w.y_max);
+  }
+  sph::fluid::add_tank_walls(model, a.tank.x_min, a.tank.x_max, a.tank.y_min, a.tank.height);
+  // hydrostatic start with P = 0 at the top row's centres (docs/isph.md D6)
+  sph::fluid::set_hydrostatic_pressure(model, top - 0.5 * a.settings.particle_spacing);
+  return model;
+}
+
+double fluid_mass(const sph::ParticleSet& p) {
+  double m = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == kFluid) m += p.mass[i];
+  return m;
+}
+
+// Samples the gauges and the front at t = 0, at the first step at or after each multiple of monitor_interval, and
+// at the end of the run.
+class IsphMonitors : public sph::Observer {
+ public:
+  explicit IsphMonitors(const IsphAnalysis& a) : a_(a) {
+    for (const IsphGauge& g : a.gauges) table_.columns.push_back(g.name + "_m");
+    if (a.front) table_.columns.push_back("front_x_m");
+  }
+  std::string after_step(const sph::ParticleSet& p, const sph::RunState& state, const sph::Energies&) override {
+    if (state.time + 1e-12 >= next_) sample(p, state.time);
+    return {};
+  }
+  void sample(const sph::ParticleSet& p, double time) {
+    const double dx = a_.settings.particle_spacing;
+    std::vector<double> row;
+    for (const IsphGauge& g : a_.gauges) {
+      double surface = a_.tank.y_min;  // no water within dx of the gauge: the tank floor
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.kind[i] == kFluid && std::abs(p.x[i] - g.x) < dx) surface = std::max(surface, p.y[i] + 0.5 * dx);
+      row.push_back(surface - a_.still_water);
+    }
+    if (a_.front) {
+      double front = -std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.kind[i] == kFluid) front = std::max(front, p.x[i] + 0.5 * dx);
+      row.push_back(front);
+    }
+    table_.times.push_back(time);
+    table_.rows.push_back(std::move(row));
+    next_ = (std::floor(time / a_.monitor_interval + 1e-9) + 1.0) * a_.monitor_interval;  // on the interval grid
+  }
+  IsphMonitorTable& table() { return table_; }
+
+ private:
+  const IsphAnalysis& a_;
+  IsphMonitorTable table_;
+  double next_ = 0;
+};
+
+IsphStageResult run_isph(const IsphAnalysis& a, const WorkflowOptions& options) {
+  sph::fluid::Model model = build_isph_model(a);
+  IsphStageResult result;
+  result.pressure_mode = sph::fluid::pressure_mode_key(a.settings.pressure_mode);
+  result.kernel = a.settings.kernel == sph::KernelType::wendland_c2 ? "wendland_c2" : "cubic_spline";
+  result.particle_spacing = a.settings.particle_spacing;
+  result.smoothing_length = a.settings.smoothing_length();
+  result.fluid_particles = model.particles.count(sph::ParticleKind::soil);
+  result.wall_particles = model.particles.size() - result.fluid_particles;
+  result.fluid_mass_start = fluid_mass(model.particles);
+  IsphMonitors monitors(a);
+  monitors.sample(model.particles, 0.0);
+  sph::RunOptions run_options;
+  if (options.output_dir) run_options.output_dir = options.output_dir->string();
+  sph::RunCallbacks callbacks;
+  callbacks.observers.push_back(&monitors);
+  double worst = 0;
+  result.summary =
+      sph::fluid::run(model, run_options, callbacks, [&worst](const sph::fluid::Step& s, const sph::RunState&) {
+        worst = std::max(worst, s.diagnostics().max_density_error);
+      });
+  result.max_density_error = worst;
+  if (monitors.table().times.back() < model.state.time) monitors.sample(model.particles, model.state.time);  // the end
+  result.fluid_mass_end = fluid_mass(model.particles);
+  result.front_x = sph::fluid::front_position(model);
+  result.monitors = std::move(monitors.table());
+  return result;
+}
+
+}  // namespace
+
+StageOutcome run_isph_stage(const Scene& scene, StageContext& context) {
+  const WorkflowOptions& options = context.options;
+  WorkflowResult& out = context.out;
+  StageOutcome outcome;
+  const StageClock::time_point start = StageClock::now();
+  try {
+    const IsphStageResult result = run_isph(*scene.analyses.isph, options);
+    out.report["isph"] = isph_report(result);
+    if (options.output_dir)
+      sph::write_file_atomically(*options.output_dir / "monitors.csv", monitors_csv(result.monitors));
+    if (result.summary.stopped_because != "end_time") {
+      outcome.status = ExitStatus::failed;
+      outcome.errors.push_back("isph: stopped (" + result.summary.stopped_because + ") " + result.summary.diagnostic);
+    }
+    if (options.log)
+      *options.log << "isph: " << result.fluid_particles << " fluid particles, " << result.summary.steps
+                   << " steps to t = " << result.summary.simulated_time << " s, front x = " << result.front_x << " m\n";
+  } catch (const std::exception& error) {
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back(std::string("isph: ") + error.what());
+    out.report["isph"] = isph_error_report(outcome.errors.back());
+  }
+  out.report["timing_s"]["isph"] = seconds_since(start);
+  return outcome;
+}
+
+}  // namespace coupling

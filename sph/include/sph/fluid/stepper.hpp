@@ -1,0 +1,71 @@
+#pragma once
+// One time step of the explicit three-step ISPH (Hosseini, Manzari & Hannani 2007; seed paper section 2-6):
+//   1  V*  = V^n + g dt                                      body force (eqs. 24-25)
+//   2  V** = V* + dt (mu/rho lap V*)                         viscous step (eqs. 22, 26-28)
+//      r*  = r^n + V** dt                                    temporary positions (eqs. 29-30)
+//      sort by cell at r*; rho* = rho0 + dt sum m_j V**_ij . grad W (eq. 32); free surface by the kernel-sum density
+//   3  sum_j B_ij (P_i - P_j) = (rho0 - rho*_i)/(rho0 dt^2)  pressure (eqs. 35-37: one Jacobi sweep, or solved)
+//      V^{n+1} = V** - dt sum m_j (P_i/rho*_i^2 + P_j/rho*_j^2) grad W   correction (eqs. 38-40, 46)
+//      r^{n+1} = r^n + dt/2 (V^n + V^{n+1})                  trapezoidal rule (eqs. 31, 41-42)
+// Wall particles are fixed (velocity 0) and take part in the continuity sums and the viscous term (no-slip); their
+// pressure is extrapolated from the fluid with the hydrostatic difference and enters the fluid's pressure equation
+// and gradient as a given value. docs/isph.md gives the decisions.
+#include <memory>
+
+#include "sph/engine/stepper.hpp"
+#include "sph/fluid/model.hpp"
+#include "sph/fluid/pressure.hpp"
+
+namespace sph::fluid {
+
+// What the last step did (for reports and tests).
+struct StepDiagnostics {
+  SolveReport solve;
+  double max_density_error = 0;  // max over fluid of |rho* - rho0| / rho0
+  double mean_density_error = 0;  // mean over fluid of |rho* - rho0| / rho0
+  std::size_t surface_particles = 0;
+  std::size_t wall_passes = 0;  // wall extrapolations + solves of the last step
+  double time_step = 0;
+};
+
+class Step : public Stepper {
+ public:
+  explicit Step(Model& model);
+  ~Step() override;
+  Step(const Step&) = delete;
+  Step& operator=(const Step&) = delete;
+
+  void initialise() override;
+  // min(cfl dx / v_max, cfl sqrt(dx/|g|), viscous_alpha dx^2 rho0/mu, max_time_step) (eqs. 48-49 + a body-force
+  // limit for the start from rest).
+  double stable_time_step() const override;
+  void advance(double dt) override;
+  Energies energies() const override;
+  Health check_health() const override;
+
+  const StepDiagnostics& diagnostics() const { return diag_; }
+
+  struct Impl;
+
+ private:
+  double gravity_x() const;
+  double gravity_y() const;
+  void viscous_step(double dt);
+  void provisional_density(double dt);
+  void moment_matrices();
+  void renormalised_gradient(std::size_t i, const double* f, double& gx, double& gy) const;
+  void mark_roles();
+  void extrapolate_wall_pressure();
+  void mark_dry_walls();
+  void assemble_pressure_equation(double dt);
+  void add_consistency_term();
+  void solve_pressure_equation(double dt);
+  void correct(double dt);
+  void finish_positions(double dt);
+
+  Model& model_;
+  StepDiagnostics diag_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sph::fluid

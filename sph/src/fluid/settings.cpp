@@ -1,0 +1,55 @@
+#include "sph/fluid/settings.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace sph::fluid {
+
+PressureMode pressure_mode_from(const std::string& key) {
+  if (key == "explicit") return PressureMode::explicit_jacobi;
+  if (key == "iterative") return PressureMode::iterative;
+  throw std::invalid_argument("pressure mode '" + key + "': expected \"explicit\" or \"iterative\"");
+}
+
+const char* pressure_mode_key(PressureMode mode) {
+  return mode == PressureMode::explicit_jacobi ? "explicit" : "iterative";
+}
+
+LinearSolver linear_solver_from(const std::string& key) {
+  if (key == "cg") return LinearSolver::conjugate_gradient;
+  if (key == "bicgstab") return LinearSolver::bicgstab;
+  throw std::invalid_argument("linear solver '" + key + "': expected \"cg\" or \"bicgstab\"");
+}
+
+const char* linear_solver_key(LinearSolver solver) {
+  return solver == LinearSolver::conjugate_gradient ? "cg" : "bicgstab";
+}
+
+Settings::Settings() {
+  kernel = default_kernel;
+  particle_spacing = 0.01;
+  h_over_dx = default_h_over_dx;
+  cfl = default_cfl;
+  output_interval = 0.0;  // no frames unless asked for
+}
+
+void Settings::validate() const {
+  validate_engine();
+  auto need = [](bool ok, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("fluid settings: ") + what);
+  };
+  need(rest_density > 0, "rest_density must be > 0");
+  need(viscosity >= 0, "viscosity must be >= 0");
+  need(eta_over_h > 0 && eta_over_h < 1, "eta_over_h must be in (0, 1)");
+  need(surface_beta > 0 && surface_beta < 1, "surface_beta must be in (0, 1)");
+  need(viscous_alpha > 0 && viscous_alpha <= 1, "viscous_alpha must be in (0, 1]");
+  need(max_time_step >= 0, "max_time_step must be >= 0");
+  need(solver_tolerance > 0 && solver_tolerance < 1, "solver_tolerance must be in (0, 1)");
+  need(solver_max_iterations > 0, "solver_max_iterations must be > 0");
+  need(wall_passes >= 1 && wall_passes <= 20, "wall_passes must be in [1, 20]");
+  need(wall_layers >= static_cast<int>(std::ceil(2.0 * h_over_dx - 1e-9)),
+       "wall_layers must cover the kernel support (at least ceil(2 h/dx))");
+  need(end_time > 0, "end_time must be > 0");
+}
+
+}  // namespace sph::fluid
