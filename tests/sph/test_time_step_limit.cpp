@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "sph/engine/fill.hpp"
+#include "sphslope/units.hpp"
 #include "sph/engine/kernel.hpp"
 #include "sph/soil/model.hpp"
 #include "sph/soil/soil_step.hpp"
@@ -23,7 +24,7 @@ double scaled_max_wave_operator(double h_over_dx) {
   double best = 0;
   for (const auto& [ex, ey] : {std::pair{1.0, 0.0}, std::pair{std::sqrt(0.5), std::sqrt(0.5)}}) {
     for (int n = 1; n <= 400; ++n) {
-      const double k = M_PI * n / 200.0;  // k dx up to 2 pi
+      const double k = sphslope::pi * n / 200.0;  // k dx up to 2 pi
       double g = 0;
       for (int i = -reach; i <= reach; ++i)
         for (int j = -reach; j <= reach; ++j) {
