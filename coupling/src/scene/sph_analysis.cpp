@@ -118,6 +118,19 @@ void read_kernel(JsonReader& r, sph::Settings& s) {
   }
 }
 
+void read_time_integration(JsonReader& r, sph::Settings& s) {
+  const auto scheme = r.string("time_integration", Need::optional);
+  if (!scheme) return;
+  if (*scheme == "predictor_corrector") {
+    s.integration = sph::TimeIntegration::predictor_corrector;
+  } else if (*scheme == "verlet") {
+    s.integration = sph::TimeIntegration::verlet;
+  } else {
+    r.diagnostics().error(r.path_of("time_integration"),
+                          "unknown time integration \"" + *scheme + "\" (allowed: predictor_corrector, verlet)");
+  }
+}
+
 void read_gravity_mode(JsonReader& r, sph::Settings& s) {
   const auto gravity = r.string("gravity", Need::optional);
   if (!gravity) return;
@@ -183,7 +196,7 @@ std::optional<long> read_section_walls(JsonReader& r, SphAnalysis& a) {
 // Stopping, checkpoint and the limits that refuse a case before it starts.
 void read_run_limits(JsonReader& r, SphAnalysis& a) {
   sph::Settings& s = a.settings;
-  s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, 0.5, true});  // sph::Settings accepts (0, 0.5]
+  s.cfl = r.number_or("cfl", sph::default_cfl(s.integration), Bounds{0.0, false, sph::max_cfl(s.integration), true});
   s.damping = r.number_or("damping_per_s", s.damping, Bounds::non_negative());
   s.checkpoint_interval_wall_s =
       r.number_or("checkpoint_interval_s", s.checkpoint_interval_wall_s, Bounds::non_negative());
@@ -250,6 +263,7 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   s.h_over_dx = r.number_or("smoothing_length_ratio", s.h_over_dx,
                             Bounds::closed(sph::EngineSettings::h_over_dx_min, sph::EngineSettings::h_over_dx_max));
   read_kernel(r, s);
+  read_time_integration(r, s);
   read_gravity_mode(r, s);
   const auto ramp = r.number("gravity_ramp_s", Need::optional, Bounds::positive());
   read_artificial_viscosity(r, s);

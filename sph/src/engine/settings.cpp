@@ -28,7 +28,7 @@ void EngineSettings::validate_engine() const {
   require(std::isfinite(gravity_x) && std::isfinite(gravity_y), "settings.gravity must be finite");
   if (gravity_mode == GravityMode::ramped)
     require(finite_positive(gravity_ramp_time), "settings.gravity_ramp_time must be > 0 s when gravity is ramped");
-  require(finite_positive(cfl) && cfl <= 0.5, "settings.cfl must lie in (0, 0.5] (typical 0.1-0.2)");
+  require(finite_positive(cfl) && cfl <= 2.0, "settings.cfl must lie in (0, 2] (each physics states its own limit)");
   require(finite_positive(acceleration_safety) && acceleration_safety <= 0.5,
           "settings.acceleration_safety must lie in (0, 0.5]");
   require(std::isfinite(end_time) && end_time >= 0, "settings.end_time must be >= 0 s");

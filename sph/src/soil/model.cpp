@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -17,8 +18,21 @@ void require(bool ok, const std::string& what) {
 bool finite_positive(double v) { return std::isfinite(v) && v > 0; }
 }  // namespace
 
+double default_cfl(TimeIntegration integration) {
+  return integration == TimeIntegration::verlet ? 1.0 : 0.2;
+}
+
+double max_cfl(TimeIntegration integration) { return integration == TimeIntegration::verlet ? 1.6 : 0.5; }
+
 void Settings::validate() const {
   validate_engine();
+  if (!(cfl <= max_cfl(integration))) {
+    std::ostringstream os;
+    os << "settings.cfl = " << cfl << " is above " << max_cfl(integration) << ", the largest stable value of the "
+       << (integration == TimeIntegration::verlet ? "verlet" : "predictor_corrector") << " time integration (default "
+       << default_cfl(integration) << "; docs/sph.md, \"Time step\")";
+    throw std::invalid_argument(os.str());
+  }
   require(std::isfinite(viscosity.alpha) && viscosity.alpha >= 0, "settings.viscosity.alpha must be >= 0");
   require(std::isfinite(viscosity.beta) && viscosity.beta >= 0, "settings.viscosity.beta must be >= 0");
   require(finite_positive(viscosity.eta_factor), "settings.viscosity.eta_factor must be > 0 (typical 0.01)");

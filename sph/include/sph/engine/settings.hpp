@@ -24,7 +24,7 @@ struct EngineSettings {
   double gravity_x = 0.0, gravity_y = -sphslope::standard_gravity;  // [m/s^2]
   GravityMode gravity_mode = GravityMode::sudden;
   double gravity_ramp_time = 0.0;  // [s] ramped mode: g(t) = min(t / gravity_ramp_time, 1) g (> 0 required)
-  double cfl = 0.2;  // dt <= cfl * h / (c + |v|max)
+  double cfl = 0.2;  // dt <= cfl * h / (c + |v|max); each physics sets its default and limit within (0, 2]
   double acceleration_safety = 0.25;  // dt <= acceleration_safety * sqrt(h / |a|max)
   double end_time = 1.0;  // [s]
   double output_interval = 0.1;  // [s] simulated time between frames / energy rows (<= 0: none)

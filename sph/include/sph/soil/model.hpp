@@ -34,6 +34,19 @@ struct ArtificialStress {
   double exponent = 2.55; // n in f_ij^n, f_ij = W(r_ij)/W(dx)
 };
 
+// The time integration of the soil model (sph/src/soil/soil_step.cpp; docs/sph.md, "Time step").
+enum class TimeIntegration {
+  predictor_corrector,  // one rate evaluation per step, rates of the predicted state (Bui et al. 2008)
+  verlet,               // kick-drift-kick (Stormer-Verlet): kinematic rates at the half-step velocity, then forces
+};
+
+// The default and the largest accepted cfl of each time integration (docs/sph.md, "Time step"). Verlet: the dispersion
+// relation of the SPH operators bounds the step at cfl ~ 2.0 (h omega_max / c_P = 1.06-1.14 for both kernels and
+// h/dx in [1, 2]); the default keeps half of it. Predictor-corrector: unstable for undamped waves at any step, held
+// by the artificial viscosity up to cfl 0.7-0.8 on the column collapse; Bui et al. (2008) used 0.2.
+double default_cfl(TimeIntegration integration);
+double max_cfl(TimeIntegration integration);
+
 struct Xsph {
   bool enabled = false;
   double chi = 0.5;  // Monaghan (2002)
@@ -46,6 +59,9 @@ struct Settings : EngineSettings {
   Xsph xsph;
   WallSlip wall_slip = WallSlip::no_slip;
   double damping = 0.0;          // optional linear velocity damping [1/s] (a -= damping * v), 0 = none
+  TimeIntegration integration = TimeIntegration::predictor_corrector;
+
+  Settings() { cfl = default_cfl(integration); }
 
   // The engine's checks, then the soil's.
   void validate() const;

@@ -64,6 +64,9 @@ class SoilStep : public Stepper {
   static void register_workspace(ParticleSet& particles, Impl* impl = nullptr);
 
  private:
+  void advance_predictor_corrector(double dt);
+  void advance_verlet(double dt);
+
   Model& model_;
   double h_ = 0;
   double c_max_ = 0;

@@ -1,0 +1,59 @@
+#pragma once
+// SoilStep's internals shared by its files: the workspace (Impl), the half-step view and the passes over the
+// particles (sph/src/soil/step_passes.cpp: sort, wall extrapolation, per-particle preparation, the pair loop).
+#include <cstdint>
+#include <vector>
+
+#include "sph/engine/cell_sort.hpp"
+#include "sph/soil/soil_step.hpp"
+
+namespace sph {
+
+namespace soil_detail {
+// One evaluation of the rates at the particles' current state (sort by cell, walls, pair loop): the combined
+// evaluation writes every rate; the Verlet step splits it into the kinematic rates (density, stress, XSPH; with the
+// sort) and the forces (acceleration).
+using Evaluator = void (*)(SoilStep&, Model&, SoilStep::Impl&);
+struct Evaluators {
+  Evaluator all = nullptr, kinematics = nullptr, forces = nullptr;
+};
+}  // namespace soil_detail
+
+struct SoilStep::Impl {
+  CellSortedSet sorted;  // the particles sorted by cell, and the cell list
+  // index lists (sorted positions), rebuilt after every sort
+  std::vector<std::uint32_t> soil, walls;
+  // half-step values: registered in the particle set (not checkpointed), so the sort reorders them
+  FieldId vxh, vyh, rhoh, sxxh, syyh, szzh, sxyh;
+  // per-evaluation scratch (recomputed after every sort)
+  std::vector<double> pxx, pyy, pxy, volume, sound, is_soil;  // sigma/rho^2, m/rho, c, 0/1
+  std::vector<double> rxx, ryy, rxy;                           // artificial stress R/rho^2 terms
+  std::vector<double> xsph_dx, xsph_dy;                        // XSPH velocity corrections
+  std::vector<double> block_a, block_b, block_c;
+  soil_detail::Evaluators eval;
+  double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
+  double gravity_x = 0.0, gravity_y = 0.0;  // gravity of the current evaluation (ramped: at its time), m/s^2
+};
+
+namespace soil_detail {
+
+Evaluators select_evaluators(KernelType kernel, bool artificial_stress, bool xsph);
+
+// Rebuilds the soil/wall index lists for the current particle order.
+void index_kinds(const ParticleSet& p, SoilStep::Impl& w);
+
+// Raw pointers to the half-step values (registered in the particle set); valid until the next sort.
+struct HalfStep {
+  double *vxh, *vyh, *rhoh, *sxxh, *syyh, *szzh, *sxyh;
+  HalfStep(ParticleSet& p, const SoilStep::Impl& w)
+      : vxh(p.field(w.vxh).data()),
+        vyh(p.field(w.vyh).data()),
+        rhoh(p.field(w.rhoh).data()),
+        sxxh(p.field(w.sxxh).data()),
+        syyh(p.field(w.syyh).data()),
+        szzh(p.field(w.szzh).data()),
+        sxyh(p.field(w.sxyh).data()) {}
+};
+
+}  // namespace soil_detail
+}  // namespace sph

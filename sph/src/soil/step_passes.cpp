@@ -1,0 +1,276 @@
+// The passes of one rate evaluation of the soil model (sort, wall extrapolation, preparation, the pair loop over
+// the neighbours); the equations of each pair term are in terms.hpp.
+#include "step_impl.hpp"
+#include "terms.hpp"
+
+#include <cmath>
+
+namespace sph::soil_detail {
+
+namespace {
+using namespace soil_terms;
+using Index = std::int64_t;
+}  // namespace
+
+void index_kinds(const ParticleSet& p, SoilStep::Impl& w) {
+  w.soil.clear();
+  w.walls.clear();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const bool soil = p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil);
+    w.is_soil[i] = soil ? 1.0 : 0.0;
+    (soil ? w.soil : w.walls).push_back(static_cast<std::uint32_t>(i));
+  }
+}
+
+namespace {
+
+// Sorts the particles by cell (every registered array follows) and keeps the soil/wall index lists current.
+void sort_and_index(Model& model, SoilStep::Impl& w, double cell_size) {
+  if (w.sorted.sort(model.particles, cell_size) == CellSortedSet::Change::kinds_moved) index_kinds(model.particles, w);
+}
+
+// Wall particles: Shepard-weighted soil stress with the Adami et al. (2012) hydrostatic correction on the
+// normal components, and a ghost velocity (no-slip: -v_avg; free-slip: v_avg mirrored in the wall normal).
+template <class Kernel>
+void wall_pass(Model& model, SoilStep::Impl& w, const Kernel& kernel) {
+  ParticleSet& p = model.particles;
+  const SoilArrays sa = model.soil();
+  const double support2 = kernel.support() * kernel.support();
+  const double gx = w.gravity_x, gy = w.gravity_y;  // the soil's current load (ramped gravity included)
+  const bool no_slip = model.settings.wall_slip == WallSlip::no_slip;
+  const Index nw = static_cast<Index>(w.walls.size());
+  const double* x = p.x.data();
+  const double* y = p.y.data();
+  const double* is_soil = w.is_soil.data();
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < nw; ++k) {
+    const std::size_t i = w.walls[static_cast<std::size_t>(k)];
+    const double xi = x[i], yi = y[i];
+    double sw = 0, sxx = 0, syy = 0, szz = 0, sxy = 0, hydro = 0, svx = 0, svy = 0;
+    w.sorted.cells().for_each_candidate(i, [&](std::uint32_t j) {
+      const double dx = xi - x[j], dy = yi - y[j];
+      const double r2 = dx * dx + dy * dy;
+      if (r2 >= support2 || is_soil[j] == 0.0) return;  // walls never read other walls (no data race)
+      const double wgt = kernel.value(std::sqrt(r2));
+      sw += wgt;
+      sxx += sa.sxx[j] * wgt;
+      syy += sa.syy[j] * wgt;
+      szz += sa.szz[j] * wgt;
+      sxy += sa.sxy[j] * wgt;
+      hydro += p.rho[j] * (gx * dx + gy * dy) * wgt;  // rho_f g.(x_w - x_f)
+      svx += p.vx[j] * wgt;
+      svy += p.vy[j] * wgt;
+    });
+    if (sw > 0) {
+      const double inv = 1.0 / sw;
+      const double axx = sxx * inv, ayy = syy * inv, axy = sxy * inv;
+      const double ax = svx * inv, ay = svy * inv;
+      if (no_slip) {
+        // shear traction continuous across the wall; ghost velocity opposite to the soil's (2 v_wall - v, v_wall = 0)
+        sa.sxx[i] = axx;
+        sa.syy[i] = ayy;
+        sa.sxy[i] = axy;
+        p.vx[i] = -ax;
+        p.vy[i] = -ay;
+      } else {
+        // free slip: mirror stress and velocity in the wall, Q = I - 2 n n: sigma_w = Q sigma Q (the
+        // normal-tangential shear changes sign, so the wall transmits no shear traction), v_w = Q v
+        const double nx = sa.wall_nx[i], ny = sa.wall_ny[i];
+        const double q11 = 1.0 - 2.0 * nx * nx, q12 = -2.0 * nx * ny, q22 = 1.0 - 2.0 * ny * ny;
+        // (Q S Q) for symmetric S = [axx axy; axy ayy]
+        const double t11 = q11 * axx + q12 * axy, t12 = q11 * axy + q12 * ayy;
+        const double t21 = q12 * axx + q22 * axy, t22 = q12 * axy + q22 * ayy;
+        sa.sxx[i] = t11 * q11 + t12 * q12;
+        sa.sxy[i] = t11 * q12 + t12 * q22;
+        sa.syy[i] = t21 * q12 + t22 * q22;
+        const double vn = ax * nx + ay * ny;
+        p.vx[i] = ax - 2.0 * vn * nx;
+        p.vy[i] = ay - 2.0 * vn * ny;
+      }
+      // Adami et al. (2012) hydrostatic correction of the normal stresses: sigma_w -= sum rho_f g.(x_w - x_f) W / sum W
+      sa.sxx[i] -= hydro * inv;
+      sa.syy[i] -= hydro * inv;
+      sa.szz[i] = (szz - hydro) * inv;
+    } else {
+      sa.sxx[i] = sa.syy[i] = sa.szz[i] = sa.sxy[i] = 0.0;
+      p.vx[i] = p.vy[i] = 0.0;
+    }
+  }
+}
+
+// Per-particle quantities used by the pair loop (all particles, soil and wall).
+void prepare_pass(Model& model, SoilStep::Impl& w, const std::vector<MaterialConstants>& mc, bool artificial_stress,
+                  double epsilon) {
+  ParticleSet& p = model.particles;
+  const SoilArrays sa = model.soil();
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const double inv_rho = 1.0 / p.rho[i];
+    const double inv_rho2 = inv_rho * inv_rho;
+    w.pxx[i] = sa.sxx[i] * inv_rho2;
+    w.pyy[i] = sa.syy[i] * inv_rho2;
+    w.pxy[i] = sa.sxy[i] * inv_rho2;
+    w.volume[i] = p.mass[i] * inv_rho;
+    w.sound[i] = mc[p.material[i]].sound_speed;
+    if (artificial_stress) {
+      // Gray, Monaghan & Swift (2001): principal in-plane stresses; R' = -eps sigma'/rho^2 for tension.
+      const double a = sa.sxx[i], b = sa.syy[i], c = sa.sxy[i];
+      const double mean = 0.5 * (a + b);
+      const double rad = std::sqrt(0.25 * (a - b) * (a - b) + c * c);
+      const double s1 = mean + rad, s2 = mean - rad;
+      const double theta = 0.5 * std::atan2(2.0 * c, a - b);
+      const double cs = std::cos(theta), sn = std::sin(theta);
+      const double r1 = s1 > 0 ? -epsilon * s1 * inv_rho2 : 0.0;
+      const double r2 = s2 > 0 ? -epsilon * s2 * inv_rho2 : 0.0;
+      w.rxx[i] = r1 * cs * cs + r2 * sn * sn;
+      w.ryy[i] = r1 * sn * sn + r2 * cs * cs;
+      w.rxy[i] = (r1 - r2) * sn * cs;
+    }
+  }
+}
+
+// What the pair sums read, gathered once per evaluation (after the sort, the wall pass and the prepare pass).
+struct PairInputs {
+  const double *x, *y, *vx, *vy, *rho, *mass;
+  const double *pxx, *pyy, *pxy, *vol, *snd, *rxx, *ryy, *rxy, *is_soil;  // prepare_pass
+  double h, support2, eta2, alpha, beta, inv_w_dx, as_n;
+
+  PairInputs(const ParticleSet& p, const SoilStep::Impl& w, const Settings& st, double h_, double support)
+      : x(p.x.data()), y(p.y.data()), vx(p.vx.data()), vy(p.vy.data()), rho(p.rho.data()), mass(p.mass.data()),
+        pxx(w.pxx.data()), pyy(w.pyy.data()), pxy(w.pxy.data()), vol(w.volume.data()), snd(w.sound.data()),
+        rxx(w.rxx.data()), ryy(w.ryy.data()), rxy(w.rxy.data()), is_soil(w.is_soil.data()), h(h_),
+        support2(support * support), eta2(st.viscosity.eta_factor * h_ * h_), alpha(st.viscosity.alpha),
+        beta(st.viscosity.beta), inv_w_dx(1.0 / w.w_dx), as_n(st.artificial_stress.exponent) {}
+};
+
+// The sums over the neighbours of one particle.
+struct PairSums {
+  double drho = 0, ax = 0, ay = 0, xsph_x = 0, xsph_y = 0;
+  VelocityGradient gradient;
+};
+
+// Gathers the pair terms of particle i over its neighbours: the kinematic terms [C, L, X] when kRates, the forces
+// [AV, AS, M] when kForces (both: the combined evaluation, in the order its results were pinned with).
+template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces>
+PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, const CellList& cells) {
+  const double xi = in.x[i], yi = in.y[i], vxi = in.vx[i], vyi = in.vy[i], rhoi = in.rho[i], ci = in.snd[i];
+  const double pxxi = in.pxx[i], pyyi = in.pyy[i], pxyi = in.pxy[i];
+  double rxxi = 0, ryyi = 0, rxyi = 0;
+  if constexpr (kArtificialStress) {
+    rxxi = in.rxx[i]; ryyi = in.ryy[i]; rxyi = in.rxy[i];
+  }
+  PairSums sum;
+  IndexRange ranges[3];
+  const int nr = cells.candidate_ranges(i, ranges);
+  for (int rr = 0; rr < nr; ++rr) {
+    for (std::uint32_t j = ranges[rr].begin; j < ranges[rr].end; ++j) {
+      const double dx = xi - in.x[j], dy = yi - in.y[j];
+      const double r2 = dx * dx + dy * dy;
+      if (r2 >= in.support2) continue;
+      const double r = std::sqrt(r2);
+      const double F = kernel.gradient_factor(r);
+      const PairGeometry g{dx, dy, r2, r, F * dx, F * dy};
+      const double dvx = vxi - in.vx[j], dvy = vyi - in.vy[j];  // v_i - v_j (a wall: its ghost velocity)
+      const double mj = in.mass[j];
+      if constexpr (kRates) {
+        // [C] with the walls' own velocity (at rest): with the no-slip ghost velocity -v_avg here, a particle sliding
+        // down a wall next to the free surface, whose wall neighbours above see only it, lost density at a rate
+        // ~ 2 v |grad W| until it went negative (docs/stability.md).
+        sum.drho += continuity(mj, vxi - in.is_soil[j] * in.vx[j], vyi - in.is_soil[j] * in.vy[j], g);
+        sum.gradient.add(in.vol[j], dvx, dvy, g);
+      }
+      const double rho_bar = mean_density(rhoi, in.rho[j]);
+      if constexpr (kForces) {
+        const double pi_ij =
+            artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
+        double txx = pxxi + in.pxx[j] - pi_ij;
+        double tyy = pyyi + in.pyy[j] - pi_ij;
+        double txy = pxyi + in.pxy[j];
+        if constexpr (kArtificialStress) {
+          const double fn = artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n);
+          txx += fn * (rxxi + in.rxx[j]);
+          tyy += fn * (ryyi + in.ryy[j]);
+          txy += fn * (rxyi + in.rxy[j]);
+        }
+        momentum(mj, txx, tyy, txy, g, sum.ax, sum.ay);
+      }
+      if constexpr (kXsph && kRates) {
+        const double wv = xsph_weight(mj, rho_bar, kernel.value(r));
+        sum.xsph_x -= wv * dvx;
+        sum.xsph_y -= wv * dvy;
+      }
+    }
+  }
+  return sum;
+}
+
+// The rates of every soil particle; pairs are gathered from the perspective of i (no write conflicts). kRates: sorts
+// by cell first and writes the density and stress rates (and XSPH); kForces: writes the acceleration.
+template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces>
+void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
+  ParticleSet& p = model.particles;
+  const Settings& st = model.settings;
+  const Kernel kernel(self.smoothing_length());
+  if constexpr (kRates) sort_and_index(model, w, kernel.support());
+  wall_pass(model, w, kernel);
+  prepare_pass(model, w, self.material_constants(), kArtificialStress && kForces, st.artificial_stress.epsilon);
+  const SoilArrays sa = model.soil();  // after the sort: it may have swapped the arrays' buffers
+  const PairInputs in(p, w, st, kernel.h(), kernel.support());
+  const double chi = st.xsph.chi;
+  const double gx = w.gravity_x, gy = w.gravity_y, damping = st.damping;
+  const auto& mc = self.material_constants();
+  const CellList& cells = w.sorted.cells();
+
+  const Index ns = static_cast<Index>(w.soil.size());
+#pragma omp parallel for schedule(dynamic, 256)  // gather per particle: results do not depend on the schedule
+  for (Index k = 0; k < ns; ++k) {
+    const std::size_t i = w.soil[static_cast<std::size_t>(k)];
+    const PairSums sum = pair_sums<Kernel, kArtificialStress, kXsph, kRates, kForces>(i, in, kernel, cells);
+    if constexpr (kForces) {
+      const double vxi = p.vx[i], vyi = p.vy[i];
+      sa.ax[i] = sum.ax + gx - damping * vxi;
+      sa.ay[i] = sum.ay + gy - damping * vyi;
+    }
+    if constexpr (kRates) {
+      sa.drho[i] = sum.drho;
+      // [L] strain rate and spin, [E, P, J] the stress rate of the material
+      const VelocityGradient& L = sum.gradient;
+      const Stress s{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
+      const StressRate sr = stress_rate(mc[p.material[i]], s, L.xx, L.yy, 0.5 * (L.xy + L.yx), 0.5 * (L.xy - L.yx));
+      sa.dsxx[i] = sr.rate.xx;
+      sa.dsyy[i] = sr.rate.yy;
+      sa.dszz[i] = sr.rate.zz;
+      sa.dsxy[i] = sr.rate.xy;
+      sa.dplastic_strain[i] = sr.plastic_strain_rate;
+      sa.dplastic_work[i] = sr.plastic_work_rate / p.rho[i];
+      if constexpr (kXsph) {
+        w.xsph_dx[i] = chi * sum.xsph_x;
+        w.xsph_dy[i] = chi * sum.xsph_y;
+      }
+    }
+  }
+}
+
+template <class Kernel, bool kArtificialStress, bool kXsph>
+Evaluators evaluators() {
+  return {&evaluate_rates<Kernel, kArtificialStress, kXsph, true, true>,
+          &evaluate_rates<Kernel, kArtificialStress, kXsph, true, false>,
+          &evaluate_rates<Kernel, kArtificialStress, kXsph, false, true>};
+}
+
+template <class Kernel>
+Evaluators evaluators_for(bool artificial_stress, bool xsph) {
+  if (artificial_stress) return xsph ? evaluators<Kernel, true, true>() : evaluators<Kernel, true, false>();
+  return xsph ? evaluators<Kernel, false, true>() : evaluators<Kernel, false, false>();
+}
+
+}  // namespace
+
+Evaluators select_evaluators(KernelType kernel, bool artificial_stress, bool xsph) {
+  if (kernel == KernelType::cubic_spline) return evaluators_for<CubicSplineKernel>(artificial_stress, xsph);
+  return evaluators_for<WendlandC2Kernel>(artificial_stress, xsph);
+}
+
+}  // namespace sph::soil_detail
