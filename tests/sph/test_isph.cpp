@@ -88,7 +88,7 @@ TEST_CASE("ISPH settings: keys and ranges", "[sph][isph]") {
   st.h_over_dx = 2.5;  // above EngineSettings::h_over_dx_max
   CHECK_THROWS_AS(st.validate(), std::invalid_argument);
   st = Settings{};
-  st.cfl = 0.8;  // above the engine's 0.5
+  st.cfl = 0.8;  // above the fluid's 0.5
   CHECK_THROWS_AS(st.validate(), std::invalid_argument);
 }
 

@@ -38,6 +38,7 @@ void Settings::validate() const {
   auto need = [](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("fluid settings: ") + what);
   };
+  need(cfl <= max_cfl, "cfl must be at most 0.5 (the particle may move at most half a spacing per step; 0.1 typical)");
   need(rest_density > 0, "rest_density must be > 0");
   need(viscosity >= 0, "viscosity must be >= 0");
   need(eta_over_h > 0 && eta_over_h < 1, "eta_over_h must be in (0, 1)");

@@ -22,6 +22,7 @@ enum class LinearSolver { conjugate_gradient, bicgstab };
 struct Settings : EngineSettings {
   static constexpr double default_h_over_dx = 1.5;  // h = 1.5 dx (seed, dam break)
   static constexpr double default_cfl = 0.1;  // seed eq. 48 (Shao & Lo 2003)
+  static constexpr double max_cfl = 0.5;      // at most half a spacing per step (the engine allows each physics (0, 2])
   // Wendland C2, not the seed's cubic spline: at h = 1.5 dx the spline puts the nearest neighbours at the
   // inflection of W (q = 2/3) and a checkerboard displacement of the particles grows (decision D16)
   static constexpr KernelType default_kernel = KernelType::wendland_c2;
