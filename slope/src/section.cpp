@@ -27,6 +27,13 @@ double Section::x_max() const {
   return profile_lines.empty() || profile_lines.front().points.empty() ? 0.0 : profile_lines.front().points.back().x;
 }
 
+int facing_direction(const Section& section) {
+  const double left = section.ground_y(section.x_min()), right = section.ground_y(section.x_max());
+  if (left > right) return 1;
+  if (right > left) return -1;
+  return 0;
+}
+
 double Section::ground_y(double x) const {
   if (profile_lines.empty()) return 0.0;
   return polyline_y(profile_lines.front().points, std::clamp(x, x_min(), x_max()));

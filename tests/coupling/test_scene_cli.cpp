@@ -37,7 +37,7 @@ struct BadScene {
 // Every malformed scene must be rejected with exit status 2 and a message naming where the fault is.
 const BadScene bad_scenes[] = {
     {"syntax_error.json", "check", "JSON syntax error at line 6, column"},
-    {"sph_water_not_carried.json", "check", "section.water: the SPH model does not carry water yet"},
+    {"sph_ignores_absent_load.json", "check", "analyses.sph.ignore_loads[0]: the section has no seismic to leave out"},
     {"empty_file.json", "check", "JSON syntax error at line 1, column 1"},
     {"duplicate_key.json", "check", "section.materials[0].cohesion_kPa: duplicate key"},
     {"missing_bottom.json", "check", "section.bottom_y_m: missing"},

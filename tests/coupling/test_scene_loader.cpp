@@ -312,32 +312,37 @@ TEST_CASE("scene: geometry faults", "[scene]") {
   }
 }
 
-TEST_CASE("scene: SPH on a section with loads it does not carry is refused unless the user accepts it",
+TEST_CASE("scene: SPH carries the section loads, and ignore_loads leaves one out only if the section has it",
           "[scene][sph]") {
-  // Until the SPH model carries pore water, surcharges and seismic loads, it must never analyse a different slope
-  // than limit equilibrium without saying so (docs/scene-format.md, analyses.sph.ignore_loads).
+  // docs/scene-format.md, analyses.sph.ignore_loads: SPH carries water, surcharges and k_h like limit equilibrium;
+  // the user may leave one out on purpose (the report then warns), never one the section does not have.
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/two_layer_water.json"));
   scene["section"]["seismic"]["horizontal_coefficient"] = 0.1;
   scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 1.0}};
-  try {
-    parse_scene(scene.dump());
-    FAIL("a loaded section was accepted for SPH");
-  } catch (const coupling::SceneError& error) {
-    std::string all;
-    for (const auto& message : error.messages()) all += message + "\n";
-    CHECK(all.find("section.water: the SPH model does not carry water") != std::string::npos);
-    CHECK(all.find("section.surcharges: the SPH model does not carry surcharges") != std::string::npos);
-    CHECK(all.find("section.seismic: the SPH model does not carry seismic") != std::string::npos);
-  }
-  scene["analyses"]["sph"]["ignore_loads"] = {"water", "surcharges", "seismic"};
-  CHECK_NOTHROW(parse_scene(scene.dump()));
+  CHECK(coupling::loads_sph_leaves_out(parse_scene(scene.dump())).empty());
+  scene["analyses"]["sph"]["ignore_loads"] = {"water", "seismic"};
+  const auto left_out = coupling::loads_sph_leaves_out(parse_scene(scene.dump()));
+  REQUIRE(left_out.size() == 2);
+  CHECK(left_out[0].path == "section.water");
+  CHECK(left_out[1].path == "section.seismic");
   scene["analyses"]["sph"]["ignore_loads"] = {"water", "surcharge"};
   CHECK_THROWS_WITH(parse_scene(scene.dump()), Catch::Contains("analyses.sph.ignore_loads[1]"));
   scene["section"].erase("water");
-  scene["section"].erase("surcharges");
-  scene["section"].erase("seismic");
-  scene["analyses"]["sph"].erase("ignore_loads");
-  CHECK_NOTHROW(parse_scene(scene.dump()));  // a dry, unloaded section needs no permission
+  scene["analyses"]["sph"]["ignore_loads"] = {"water"};
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("analyses.sph.ignore_loads[0]: the section has no water to leave out"));
+}
+
+TEST_CASE("scene: k_h on a section level at both ends is refused for SPH (no direction)", "[scene][sph]") {
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/two_layer_water.json"));
+  scene["section"]["seismic"]["horizontal_coefficient"] = 0.1;
+  scene["section"]["profile_lines"][0]["points_m"] = {{0, 20}, {20, 20}, {30, 10}, {40, 20}, {60, 20}};
+  scene["section"]["profile_lines"][1]["points_m"] = {{0, 8}, {60, 8}};
+  CHECK_NOTHROW(parse_scene(scene.dump()));  // limit equilibrium alone takes each surface's direction
+  scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 1.0}};
+  CHECK_THROWS_WITH(parse_scene(scene.dump()), Catch::Contains("section.seismic: the ground is level at both ends"));
+  scene["analyses"]["sph"]["ignore_loads"] = {"seismic"};
+  CHECK_NOTHROW(parse_scene(scene.dump()));
 }
 
 TEST_CASE("scene: syntax errors give line and column", "[scene]") {

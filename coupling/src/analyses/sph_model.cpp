@@ -269,6 +269,32 @@ void build_body_particles(const std::vector<ParticleBody>& bodies, const std::op
   }
 }
 
+bool sph_carries(const SphAnalysis& analysis, const char* load) {
+  const auto& ignored = analysis.ignored_loads;
+  return std::find(ignored.begin(), ignored.end(), load) == ignored.end();
+}
+
+// The section's loads on the SPH model (sph/soil/loads.hpp), except those analyses.sph.ignore_loads leaves out: the
+// piezometric line, k_h toward the lower end of the ground (the direction limit equilibrium slides), the strip
+// surcharges on the ground's particles.
+void apply_section_loads(const slope::Section& section, const SphAnalysis& analysis, sph::Model& model) {
+  if (section.water && sph_carries(analysis, "water")) {
+    sph::PiezometricLine line;
+    for (const auto& p : section.water->piezometric_line) {
+      line.x.push_back(p.x);
+      line.y.push_back(p.y);
+    }
+    line.unit_weight = section.water->unit_weight;
+    model.loads.water = line;
+  }
+  if (section.seismic_coefficient != 0.0 && sph_carries(analysis, "seismic"))
+    model.loads.seismic_coefficient = slope::facing_direction(section) * section.seismic_coefficient;
+  if (sph_carries(analysis, "surcharges"))
+    for (const auto& strip : section.surcharges)
+      sph::add_strip_load(model.particles, model.loads, strip.from_x, strip.to_x, strip.pressure,
+                          model.settings.particle_spacing);
+}
+
 }  // namespace
 
 sph::Model build_sph_model(const Scene& scene, SphSize* size) {
@@ -279,6 +305,7 @@ sph::Model build_sph_model(const Scene& scene, SphSize* size) {
   SphSize counted;
   if (scene.section) {
     build_section_particles(*scene.section, *analysis, model, counted);
+    apply_section_loads(scene.section->section, *analysis, model);
   } else if (scene.bodies) {
     build_body_particles(*scene.bodies, scene.walls, *analysis, model, counted);
   } else {

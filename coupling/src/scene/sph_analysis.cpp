@@ -75,31 +75,41 @@ std::vector<std::string> read_ignored_loads(JsonReader& r) {
   return names;
 }
 
-// Until SPH carries a load, a scene asking SPH (or strength reduction) for a loaded section is refused unless
-// the user lists the load in analyses.sph.ignore_loads: SPH must never solve a different problem than limit
-// equilibrium without saying so.
-void check_unmodelled_loads(const Scene& scene, const SphAnalysis& analysis, Diagnostics& diagnostics) {
-  for (const SectionLoad& load : loads_sph_leaves_out(scene)) {
-    const auto& ignored = analysis.ignored_loads;
-    if (std::find(ignored.begin(), ignored.end(), load.name) != ignored.end()) continue;
-    diagnostics.error(load.path, "the SPH model does not carry " + load.name +
-                                     " yet: SPH (and strength reduction and the comparison) would analyse the "
-                                     "slope without it, unlike limit equilibrium. Remove analyses.sph, or add \"" +
-                                     load.name +
-                                     "\" to analyses.sph.ignore_loads to run SPH without it (the "
-                                     "report then warns)");
+// The SPH model carries the section's loads (coupling/src/analyses/sph_model.cpp). What remains to check: a load
+// listed in analyses.sph.ignore_loads that the section does not have (a slip of the pen), and k_h on a section whose
+// ground is level at both ends, where SPH has no direction to apply it in (limit equilibrium takes each surface's).
+void check_section_loads(const Scene& scene, const SphAnalysis& analysis, Diagnostics& diagnostics) {
+  if (!scene.section) return;
+  const slope::Section& section = scene.section->section;
+  for (std::size_t k = 0; k < analysis.ignored_loads.size(); ++k) {
+    const std::string& name = analysis.ignored_loads[k];
+    const bool present = name == "water"        ? section.water.has_value()
+                         : name == "surcharges" ? !section.surcharges.empty()
+                                                : section.seismic_coefficient != 0.0;
+    if (!present)
+      diagnostics.error(index_path("analyses.sph.ignore_loads", k),
+                        "the section has no " + name + " to leave out (remove it from the list)");
   }
+  const bool seismic_ignored =
+      std::find(analysis.ignored_loads.begin(), analysis.ignored_loads.end(), "seismic") != analysis.ignored_loads.end();
+  if (section.seismic_coefficient != 0.0 && !seismic_ignored && slope::facing_direction(section) == 0)
+    diagnostics.error("section.seismic",
+                      "the ground is level at both ends of the section, so SPH cannot tell which way the slope "
+                      "faces to apply k_h (limit equilibrium applies it toward each surface's sliding); extend the "
+                      "section so that one end is higher, or add \"seismic\" to analyses.sph.ignore_loads");
 }
 
 }  // namespace
 
 std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
   std::vector<SectionLoad> loads;
-  if (!scene.section) return loads;
+  if (!scene.section || !scene.analyses.sph) return loads;
   const slope::Section& section = scene.section->section;
-  if (section.water) loads.push_back({"water", "section.water"});
-  if (!section.surcharges.empty()) loads.push_back({"surcharges", "section.surcharges"});
-  if (section.seismic_coefficient != 0.0) loads.push_back({"seismic", "section.seismic"});
+  const auto& ignored = scene.analyses.sph->ignored_loads;
+  auto listed = [&](const char* name) { return std::find(ignored.begin(), ignored.end(), name) != ignored.end(); };
+  if (section.water && listed("water")) loads.push_back({"water", "section.water"});
+  if (!section.surcharges.empty() && listed("surcharges")) loads.push_back({"surcharges", "section.surcharges"});
+  if (section.seismic_coefficient != 0.0 && listed("seismic")) loads.push_back({"seismic", "section.seismic"});
   return loads;
 }
 
@@ -419,7 +429,7 @@ void read_sph_scene(const SphBlocks& blocks, Scene& scene, Diagnostics& diagnost
                       "walls belong to particle scenes with \"bodies\"; for a slope section set "
                       "analyses.sph.walls.sides instead");
   }
-  if (analysis) check_unmodelled_loads(scene, *analysis, diagnostics);
+  if (analysis) check_section_loads(scene, *analysis, diagnostics);
   if (analysis && scene.section)
     check_particles_across_section(scene.section->section, analysis->settings.particle_spacing, diagnostics);
   scene.analyses.sph = analysis;

@@ -54,6 +54,10 @@ struct Section {
   double ground_y(double x) const;
 };
 
+// The way the section's slope faces: +1 when the ground's left end is higher than its right end (a mass slides
+// toward +x), -1 the other way, 0 when both ends are level.
+int facing_direction(const Section& section);
+
 // Height of a polyline (x strictly increasing) at x, linear between vertices, constant beyond the ends.
 double polyline_y(const std::vector<Point>& line, double x);
 

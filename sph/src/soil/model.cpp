@@ -55,6 +55,11 @@ void Model::validate() const {
   const_cast<ParticleSet&>(p).for_each_array([&](auto& a) { sizes_ok = sizes_ok && a.size() == n; });
   require(sizes_ok, "model: particle arrays have inconsistent sizes");
   require(p.count(ParticleKind::soil) > 0, "model: no soil particles");
+  if (loads.water) {
+    const std::string why = loads.water->error();
+    require(why.empty(), "model.loads.water: " + why);
+  }
+  require(std::isfinite(loads.seismic_coefficient), "model.loads.seismic_coefficient must be finite");
   for (std::size_t i = 0; i < n; ++i) {
     if (p.material[i] >= materials.size())
       throw std::invalid_argument("model: particle " + std::to_string(p.id[i]) + " has material " +

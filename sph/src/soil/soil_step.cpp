@@ -111,16 +111,25 @@ void SoilStep::apply_geostatic_stress() {
     if (p.y[a] != p.y[b]) return p.y[a] > p.y[b];
     return p.id[a] < p.id[b];
   });
+  // Effective vertical stress: the weight above (and a surface force on the column's top), less the rise of the
+  // pore pressure from the column's top (docs/sph.md, "Loads"): sigma'_yy = -(sum rho g dx) + u(y) - u(top).
+  const PiezometricLine* water = model_.loads.water ? &*model_.loads.water : nullptr;
+  const double* surface_fy =
+      model_.loads.surface_force_y ? p.field(*model_.loads.surface_force_y).data() : nullptr;
   long long current = std::numeric_limits<long long>::min();
-  double above = 0;  // sum rho dx g of the particles above in this column
+  double above = 0;  // sum rho dx g of the particles above in this column (and surface forces), per metre width
+  double top_u = 0;  // pore pressure at the column's top
   for (auto i : soil) {
     const long long c = column(i);
     if (c != current) {
       current = c;
       above = 0;
+      top_u = water ? water->pressure(p.x[i], p.y[i] + 0.5 * dx) : 0.0;
     }
+    if (surface_fy) above -= surface_fy[i] / dx;
     const double rho_g_dx = p.rho[i] * g * dx;
-    const double syy = -(above + 0.5 * rho_g_dx);
+    double syy = -(above + 0.5 * rho_g_dx);
+    if (water) syy += water->pressure(p.x[i], p.y[i]) - top_u;
     above += rho_g_dx;
     const double k0 = mc_[p.material[i]].k0;
     sa.syy[i] = syy;
@@ -137,10 +146,7 @@ void SoilStep::evaluate() { evaluate_at(model_.state.time); }
 
 void SoilStep::evaluate_at(double time) {
   // Gravity is set once per evaluation (not tested per particle): full, or its ramped fraction at `time`.
-  const Settings& st = model_.settings;
-  const double factor = st.gravity_factor(time);
-  impl_->gravity_x = factor * st.gravity_x;
-  impl_->gravity_y = factor * st.gravity_y;
+  impl_->set_gravity(model_.settings, time);
   impl_->eval.all(*this, model_, *impl_);
 }
 
@@ -224,9 +230,7 @@ void SoilStep::advance_verlet(double dt) {
     }
   }
   const Settings& st = model_.settings;
-  const double factor = st.gravity_factor(model_.state.time + dt);
-  w.gravity_x = factor * st.gravity_x;
-  w.gravity_y = factor * st.gravity_y;
+  w.set_gravity(st, model_.state.time + dt);
   w.eval.forces(*this, model_, w);  // walls from the new stress; accelerations at the step's end
   {
     const SoilArrays sa = model_.soil();
@@ -313,7 +317,14 @@ std::vector<DerivedField> SoilStep::derived_outputs() const {
   const SoilArrays sa = model_.soil();
   DerivedField pressure{"pressure", std::vector<double>(model_.particles.size())};
   for (std::size_t i = 0; i < model_.particles.size(); ++i) pressure.values[i] = -(sa.sxx[i] + sa.syy[i] + sa.szz[i]) / 3.0;
-  return {pressure};
+  if (!model_.loads.water) return {pressure};
+  // With pore water the stress is effective: "pressure" is the mean effective pressure; the pore pressure beside it.
+  const ParticleSet& p = model_.particles;
+  DerivedField pore{"pore_pressure", std::vector<double>(p.size())};
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil))
+      pore.values[i] = model_.loads.water->pressure(p.x[i], p.y[i]);
+  return {pressure, pore};
 }
 
 Energies SoilStep::energies() const {
@@ -321,6 +332,12 @@ Energies SoilStep::energies() const {
   const SoilArrays sa = model_.soil();
   auto& w = *impl_;
   const double gx = model_.settings.gravity_x, gy = model_.settings.gravity_y;
+  // The loads' potentials (sph/soil/loads.hpp): volume times pore pressure, -m kh |g| x, -f.x of a surface force.
+  const SoilLoads& loads = model_.loads;
+  const PiezometricLine* water = loads.water ? &*loads.water : nullptr;
+  const double seismic_ax = loads.seismic_coefficient * std::hypot(gx, gy);
+  const double* fx = loads.surface_force_x ? p.field(*loads.surface_force_x).data() : nullptr;
+  const double* fy = loads.surface_force_y ? p.field(*loads.surface_force_y).data() : nullptr;
   Energies e;
   block_sums(
       w.soil, w.block_a, w.block_b, w.block_c,
@@ -328,6 +345,9 @@ Energies SoilStep::energies() const {
         ke += 0.5 * p.mass[i] * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
         pe -= p.mass[i] * (gx * p.x[i] + gy * p.y[i]);
         pw += p.mass[i] * sa.plastic_work[i];
+        if (water) pe += p.mass[i] / p.rho[i] * water->pressure(p.x[i], p.y[i]);
+        if (seismic_ax != 0.0) pe -= p.mass[i] * seismic_ax * p.x[i];
+        if (fx) pe -= fx[i] * p.x[i] + fy[i] * p.y[i];
       },
       e.kinetic, e.potential, e.plastic_dissipation);
   double v2 = 0;

@@ -33,6 +33,14 @@ struct SoilStep::Impl {
   soil_detail::Evaluators eval;
   double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
   double gravity_x = 0.0, gravity_y = 0.0;  // gravity of the current evaluation (ramped: at its time), m/s^2
+  double load_factor = 0.0;                 // the fraction of the loads acting at that time (as of gravity)
+
+  // Gravity and loads of an evaluation at simulated time `time` (full, or their ramped fraction).
+  void set_gravity(const Settings& st, double time) {
+    load_factor = st.gravity_factor(time);
+    gravity_x = load_factor * st.gravity_x;
+    gravity_y = load_factor * st.gravity_y;
+  }
 };
 
 namespace soil_detail {

@@ -206,6 +206,42 @@ PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, co
   return sum;
 }
 
+
+// The accelerations of the loads besides gravity (sph/soil/loads.hpp), at the evaluation's load factor: the seismic
+// body force, minus the pore-pressure gradient over the density, the surface forces over the mass.
+struct LoadTerms {
+  const PiezometricLine* water = nullptr;
+  const double *fx = nullptr, *fy = nullptr;
+  double factor = 0.0, seismic_ax = 0.0;
+  bool active = false;
+
+  LoadTerms(Model& model, double load_factor) : factor(load_factor) {
+    const SoilLoads& l = model.loads;
+    active = l.any();
+    if (!active) return;
+    if (l.water) water = &*l.water;
+    if (l.surface_force_x) {
+      fx = model.particles.field(*l.surface_force_x).data();
+      fy = model.particles.field(*l.surface_force_y).data();
+    }
+    seismic_ax = factor * l.seismic_coefficient * std::hypot(model.settings.gravity_x, model.settings.gravity_y);
+  }
+
+  void add(const ParticleSet& p, std::size_t i, double& ax, double& ay) const {
+    ax += seismic_ax;
+    if (water) {
+      double ux = 0.0, uy = 0.0;
+      water->gradient(p.x[i], p.y[i], ux, uy);
+      ax -= factor * ux / p.rho[i];
+      ay -= factor * uy / p.rho[i];
+    }
+    if (fx) {
+      ax += factor * fx[i] / p.mass[i];
+      ay += factor * fy[i] / p.mass[i];
+    }
+  }
+};
+
 // The rates of every soil particle; pairs are gathered from the perspective of i (no write conflicts). kRates: sorts
 // by cell first and writes the density and stress rates (and XSPH); kForces: writes the acceleration.
 template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces>
@@ -220,6 +256,7 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   const PairInputs in(p, w, st, kernel.h(), kernel.support());
   const double chi = st.xsph.chi;
   const double gx = w.gravity_x, gy = w.gravity_y, damping = st.damping;
+  const LoadTerms loads(model, w.load_factor);
   const auto& mc = self.material_constants();
   const CellList& cells = w.sorted.cells();
 
@@ -232,6 +269,7 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
       const double vxi = p.vx[i], vyi = p.vy[i];
       sa.ax[i] = sum.ax + gx - damping * vxi;
       sa.ay[i] = sum.ay + gy - damping * vyi;
+      if (loads.active) loads.add(p, i, sa.ax[i], sa.ay[i]);
     }
     if constexpr (kRates) {
       sa.drho[i] = sum.drho;

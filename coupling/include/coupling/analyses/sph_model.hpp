@@ -35,7 +35,8 @@ std::optional<SphPlan> plan_sph(const Scene& scene, const SphAnalysis& analysis)
 // max_particles, more memory than max_memory_GiB, more steps than max_steps. Empty when it may run.
 std::vector<std::string> sph_refusals(const SphAnalysis& analysis, const SphPlan& plan);
 
-// Builds the particle model of a validated scene. Throws SceneError (path "analyses.sph.particle_spacing_m")
+// Builds the particle model of a validated scene, with the section's loads (water, surcharges, seismic) except those
+// listed in analyses.sph.ignore_loads. Throws SceneError (path "analyses.sph.particle_spacing_m")
 // when the case would exceed the memory limit or the particle limit, before allocating particles.
 sph::Model build_sph_model(const Scene& scene, SphSize* size = nullptr);
 

@@ -103,8 +103,9 @@ LemAnalysis default_lem_analysis();
 // Keys of the methods analyses.lem computes ("bishop", ...), in the scene's order; empty without analyses.lem.
 std::vector<std::string> lem_method_keys(const Scene& scene);
 
-// The loads of a slope section that the SPH model does not carry yet, each with the JSON path that defines it:
-// {"water", "section.water"}, {"surcharges", "section.surcharges"}, {"seismic", "section.seismic"}.
+// The loads of a slope section that the SPH model leaves out because analyses.sph.ignore_loads lists them, each with
+// the JSON path that defines it: {"water", "section.water"}, {"surcharges", "section.surcharges"},
+// {"seismic", "section.seismic"}. Empty without a section or an SPH analysis.
 struct SectionLoad {
   std::string name;
   std::string path;

@@ -1,6 +1,7 @@
 #pragma once
 // The soil model's state block: the per-particle arrays it registers in the engine's particle set, and a view
-// of raw pointers into them for the per-particle loops. Stress is the total Cauchy stress, tension positive;
+// of raw pointers into them for the per-particle loops. Stress is the Cauchy stress, tension positive: the total
+// stress of a dry model, the effective stress when the model has pore water (sph/soil/loads.hpp);
 // sigma_zz is the out-of-plane normal stress (plane strain).
 #include "sph/engine/particle_set.hpp"
 

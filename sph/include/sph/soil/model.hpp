@@ -12,6 +12,7 @@
 #include "sph/engine/settings.hpp"
 #include "sph/engine/stepper.hpp"
 #include "sph/soil/fields.hpp"
+#include "sph/soil/loads.hpp"
 
 namespace sph {
 
@@ -72,6 +73,7 @@ struct Model {
   SoilFields fields = SoilFields::register_in(particles);  // the soil's state block in `particles`
   std::vector<Material> materials;
   Settings settings;
+  SoilLoads loads;  // pore water, seismic, surface forces (none by default); the stress is effective with water
   RunState state;
 
   // Validates settings, materials and particles (material ids in range, positive masses, ...).

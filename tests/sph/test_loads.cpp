@@ -1,0 +1,184 @@
+// The loads the soil model carries besides its weight (sph/soil/loads.hpp; docs/sph.md, "Loads"), against closed
+// forms:
+//  - a saturated elastic column in a free-slip box (oedometric), the water table inside it or ponded above it:
+//    effective sigma'_yy = -(rho g d - gamma_w d_w), d the depth below the top, d_w the depth below the water table
+//    (0 above it) within the soil; total sigma_yy = sigma'_yy - u with u = gamma_w (line - y). Tolerance 5 % of the
+//    total vertical stress on row averages, rows over 3 dx from the top and the floor (as the dry column test);
+//  - the fully submerged body equals the dry body of buoyant density (rho - rho_w): same effective stress at rest;
+//  - k_h: a block on a frictionless floor accelerates at k_h g; a surface force F on a particle: the floor's
+//    reaction grows by F (the column's vertical stress at the floor).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+
+#include "sph/engine/fill.hpp"
+#include "sph/soil/run.hpp"
+#include "sph/soil/soil_step.hpp"
+
+namespace {
+
+constexpr double rho = 2000.0, g = 9.81, gamma_w = 9810.0, W = 0.5, H = 1.0;
+
+sph::Model elastic_box(sph::GravityMode mode, double damping, double density = rho, bool side_walls = true) {
+  sph::Model m;
+  sph::Material mat;
+  mat.name = "elastic";
+  mat.density = density;
+  mat.youngs_modulus = 5e6;
+  mat.poisson_ratio = 0.3;
+  mat.plastic = false;
+  m.materials.push_back(mat);
+  auto& s = m.settings;
+  s.particle_spacing = 0.025;
+  s.h_over_dx = 1.3;
+  s.gravity_mode = mode;
+  s.damping = damping;
+  s.wall_slip = sph::WallSlip::free_slip;
+  s.end_time = 0.3;
+  s.output_interval = 0;
+  sph::add_soil(m.particles,
+                sph::lattice_points_in_region(0, 0, W, H, s.particle_spacing, [](double, double) { return true; }),
+                s.particle_spacing, 0, density);
+  sph::BoxWalls box;
+  box.x_min = 0;
+  box.x_max = W;
+  box.y_min = 0;
+  box.height = 1.2 * H;
+  box.left = box.right = side_walls;
+  sph::add_box_walls(m.particles, box, s.particle_spacing, s.smoothing_length(), 0, density);
+  return m;
+}
+
+sph::PiezometricLine level_line(double y) {
+  sph::PiezometricLine line;
+  line.x = {-1.0, 2.0};
+  line.y = {y, y};
+  line.unit_weight = gamma_w;
+  return line;
+}
+
+// Row averages of the effective and total sigma_yy against the closed form: water table at `table` (none: below
+// the column), a surcharge q (Pa) on the top.
+void check_saturated_profile(const sph::Model& m, double table, double q = 0.0) {
+  const auto& p = m.particles;
+  const auto soil = m.soil();
+  const double dx = m.settings.particle_spacing;
+  std::map<long, double> effective, total;
+  std::map<long, int> count;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != 0) continue;
+    const long row = std::lround((p.y0[i] - 0.5 * dx) / dx);
+    effective[row] += soil.syy[i];
+    total[row] += soil.syy[i] - (m.loads.water ? m.loads.water->pressure(p.x[i], p.y[i]) : 0.0);
+    count[row] += 1;
+  }
+  int checked = 0;
+  for (const auto& [row, n] : count) {
+    const double y = (static_cast<double>(row) + 0.5) * dx;
+    const double depth = H - y;
+    if (depth < 3 * dx || y < 3 * dx) continue;
+    const double submerged = std::max(table - y, 0.0) - std::max(table - H, 0.0);
+    const double exact_effective = -(rho * g * depth + q - gamma_w * submerged);
+    const double exact_total = exact_effective - gamma_w * std::max(table - y, 0.0);
+    const double got_effective = effective[row] / n, got_total = total[row] / n;
+    INFO("table " << table << " m, surcharge " << q << " m, depth " << depth << " m: sigma'_yy " << got_effective << " vs " << exact_effective
+                  << ", sigma_yy " << got_total << " vs " << exact_total);
+    if (std::getenv("SPH_PRINT")) std::printf("%g %g %g %g %g\n", depth, got_effective, exact_effective, got_total, exact_total);
+    CHECK(std::fabs(got_effective - exact_effective) < 0.05 * std::fabs(exact_total));
+    CHECK(std::fabs(got_total - exact_total) < 0.05 * std::fabs(exact_total));
+    ++checked;
+  }
+  CHECK(checked > 30);
+}
+
+double largest_displacement(const sph::Model& m) {
+  double umax = 0;
+  for (std::size_t i = 0; i < m.particles.size(); ++i)
+    if (m.particles.kind[i] == 0)
+      umax = std::max(umax, std::hypot(m.particles.x[i] - m.particles.x0[i], m.particles.y[i] - m.particles.y0[i]));
+  return umax;
+}
+
+}  // namespace
+
+TEST_CASE("loads: a saturated elastic column settles to the effective and total stresses of the closed form",
+          "[sph][validation][loads]") {
+  for (const double table : {0.6, 1.3}) {  // inside the column; ponded 0.3 m above its top
+    auto m = elastic_box(sph::GravityMode::sudden, 150.0);
+    m.loads.water = level_line(table);
+    const auto sum = sph::run(m, {});
+    REQUIRE(sum.stopped_because == "end_time");
+    check_saturated_profile(m, table);
+  }
+}
+
+TEST_CASE("loads: a saturated column with its K0 initial stress is at rest", "[sph][validation][loads]") {
+  // The geostatic initial stress (effective, with the rise of the pore pressure below the table) and the body force
+  // of the pore-pressure gradient balance: the column does not move, and its stress stays that of the closed form.
+  auto m = elastic_box(sph::GravityMode::geostatic_k0, 0.0);
+  m.loads.water = level_line(0.6);
+  const auto sum = sph::run(m, {});
+  REQUIRE(sum.stopped_because == "end_time");
+  check_saturated_profile(m, 0.6);
+  CHECK(largest_displacement(m) < 1e-3);
+  // Without the water the same initial stress is out of balance by the buoyancy: the column moves up.
+  auto dry = elastic_box(sph::GravityMode::geostatic_k0, 0.0);
+  dry.loads.water = level_line(0.6);
+  sph::SoilStep step(dry);
+  step.initialise();
+  dry.loads.water.reset();
+  sph::SoilStep unbalanced(dry);
+  unbalanced.initialise();
+  for (int k = 0; k < 200; ++k) unbalanced.advance(unbalanced.stable_time_step());
+  CHECK(largest_displacement(dry) > 1e-4);
+}
+
+TEST_CASE("loads: the submerged column equals the dry column of buoyant density", "[sph][validation][loads]") {
+  auto wet = elastic_box(sph::GravityMode::sudden, 150.0);
+  wet.loads.water = level_line(1.5);
+  auto buoyant = elastic_box(sph::GravityMode::sudden, 150.0, rho - gamma_w / g);
+  REQUIRE(sph::run(wet, {}).stopped_because == "end_time");
+  REQUIRE(sph::run(buoyant, {}).stopped_because == "end_time");
+  const auto a = wet.soil(), b = buoyant.soil();
+  std::map<std::uint32_t, std::size_t> index_of;
+  for (std::size_t i = 0; i < buoyant.particles.size(); ++i) index_of[buoyant.particles.id[i]] = i;
+  double worst = 0, scale = (rho - gamma_w / g) * g * H;
+  for (std::size_t i = 0; i < wet.particles.size(); ++i) {
+    if (wet.particles.kind[i] != 0) continue;
+    const std::size_t j = index_of.at(wet.particles.id[i]);
+    worst = std::max(worst, std::fabs(a.syy[i] - b.syy[j]));
+  }
+  INFO("largest difference of sigma'_yy " << worst << " Pa, buoyant weight of the column " << scale << " Pa");
+  CHECK(worst < 0.03 * scale);
+}
+
+TEST_CASE("loads: a strip surcharge over the whole top of a column adds q to its vertical stress",
+          "[sph][validation][loads]") {
+  const double q = 10e3;  // Pa: half the weight of the column
+  auto m = elastic_box(sph::GravityMode::sudden, 150.0);
+  const std::size_t loaded = sph::add_strip_load(m.particles, m.loads, -1.0, 2.0, q, m.settings.particle_spacing);
+  CHECK(loaded == 60);  // the three topmost particles of each of the 20 columns
+  REQUIRE(sph::run(m, {}).stopped_because == "end_time");
+  check_saturated_profile(m, -1.0, q);
+}
+
+TEST_CASE("loads: k_h accelerates a block on a frictionless floor at k_h g", "[sph][validation][loads]") {
+  // An elastic block resting on a free-slip floor, no side walls, K0 initial stress (at rest): the pseudo-static
+  // force is the only horizontal force, so the mean horizontal velocity after t is k_h g t.
+  auto m = elastic_box(sph::GravityMode::geostatic_k0, 0.0, rho, false);
+  m.loads.seismic_coefficient = -0.1;
+  m.settings.end_time = 0.05;
+  REQUIRE(sph::run(m, {}).stopped_because == "end_time");
+  double momentum = 0, mass = 0;
+  for (std::size_t i = 0; i < m.particles.size(); ++i)
+    if (m.particles.kind[i] == 0) {
+      momentum += m.particles.mass[i] * m.particles.vx[i];
+      mass += m.particles.mass[i];
+    }
+  const double expected = -0.1 * g * 0.05;
+  INFO("mean vx " << momentum / mass << " m/s, k_h g t = " << expected << " m/s");
+  CHECK(std::fabs(momentum / mass - expected) < 0.05 * std::fabs(expected));
+}
