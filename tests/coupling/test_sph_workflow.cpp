@@ -202,8 +202,8 @@ TEST_CASE("an SPH run killed at any moment leaves a checkpoint that loads", "[sp
 
 TEST_CASE("SPH run without the loads the user let it leave out: the report warns in every block that depends on it",
           "[sph][loads][cli]") {
-  // cases/two_layer_water.json has a water table and a crest surcharge, which the SPH model does not carry yet;
-  // with analyses.sph.ignore_loads the run goes ahead and sph, srm and the comparison say what was left out.
+  // cases/two_layer_water.json has a water table and a crest surcharge; with analyses.sph.ignore_loads the SPH run
+  // leaves them out, and sph, srm and the comparison say what was left out.
   const fs::path dir = fresh_dir("ignored_loads");
   nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/two_layer_water.json");
   scene["analyses"]["lem"]["methods"] = {"bishop"};

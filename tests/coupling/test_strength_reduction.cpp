@@ -118,6 +118,38 @@ TEST_CASE("srm: scene keys are validated with their JSON paths", "[srm]") {
   CHECK(mentions(errors_of({{"sph", sph}, {"srm", 3}}), "analyses.srm"));
 }
 
+namespace {
+
+struct SrmOutcome {
+  double lo = 0, hi = 0, bishop = 0;
+};
+
+// Strength reduction at 1 m spacing of the Griffiths & Lane section with `section_changes` merged into it.
+SrmOutcome srm_of_griffiths_lane(const nlohmann::json& section_changes) {
+  nlohmann::json document = griffiths_lane();
+  document["section"].merge_patch(section_changes);
+  document["analyses"] = {{"lem", nlohmann::json::object()},
+                          {"sph", {{"particle_spacing_m", 1.0}, {"end_time_s", 0.001}}},
+                          {"srm", {{"tolerance", 0.05}}}};
+  const Scene scene = scene_from_json(document, "gl.json");
+  std::ostringstream log;
+  WorkflowOptions options;
+  options.log = &log;
+  const WorkflowResult out = run_scene(scene, options);
+  INFO(log.str());
+  REQUIRE(out.status == ExitStatus::ok);
+  const nlohmann::json& srm = out.report.at("srm");
+  REQUIRE(srm.at("bracketed").get<bool>());
+  CHECK(srm.at("warnings").empty());  // every load of the section is carried
+  return {srm.at("bracket")[0], srm.at("bracket")[1], srm.at("lem_bishop")};
+}
+
+nlohmann::json level_water(double y) {
+  return {{"water", {{"piezometric_line_m", {{0, y}, {52, y}}}, {"unit_weight_kN_m3", 9.81}}}};
+}
+
+}  // namespace
+
 TEST_CASE("srm: Griffiths & Lane example 1 at 1 m spacing is within 15 % of LEM Bishop", "[srm][validation]") {
   // Reference: Griffiths & Lane (1999), FE strength reduction about 1.4, Bishop 1.38; our LEM Bishop 1.378.
   // At 1 m spacing (10 particles over the 10 m height) SPH measured 1.316 in [1.296, 1.335] (-4.5 %); the
@@ -151,4 +183,56 @@ TEST_CASE("srm: Griffiths & Lane example 1 at 1 m spacing is within 15 % of LEM 
   CHECK(hi_failed);
   CHECK(log.str().find("srm: FS_SPH = ") != std::string::npos);
   CHECK(srm.at("lem_factor_of_safety").contains("bishop"));
+}
+
+TEST_CASE("srm: with the water line on the ground surface the Griffiths & Lane slope fails (FS_SPH < 1) as LEM says, "
+          "while dry it stands (test above)", "[srm][validation][loads]") {
+  // LEM Bishop: dry 1.378 (stands), the piezometric line on the ground surface 0.855 (fails). SPH at 1 m measured
+  // dry 1.316 in [1.296, 1.335] and wet 0.708 in [0.684, 0.732]: below LEM by 17 % (docs/validation.md).
+  const SrmOutcome wet =
+      srm_of_griffiths_lane({{"water", {{"piezometric_line_m", {{0, 10}, {12, 10}, {32, 0}, {52, 0}}},
+                                        {"unit_weight_kN_m3", 9.81}}}});
+  CHECK(wet.bishop == Approx(0.855).margin(0.01));
+  CHECK(wet.hi < 1.0);
+  CHECK(wet.lo > 0.5);
+}
+
+TEST_CASE("srm: a crest surcharge and k_h on the Griffiths & Lane slope at 1 m spacing are within 10 % of LEM "
+          "Bishop", "[srm][validation][loads]") {
+  // LEM Bishop: 40 kPa on the crest from x = 4 to 12 m (its edge) 1.240; k_h = 0.1 toward the toe 1.109 (dry
+  // 1.378). SPH measured 1.219 in [1.201, 1.236] (-1.7 %) and 1.028 in [1.012, 1.043] (-7.3 %); 10 % as the
+  // slow-drawdown case at this spacing.
+  const SrmOutcome surcharged =
+      srm_of_griffiths_lane({{"surcharges", {{{"from_x_m", 4}, {"to_x_m", 12}, {"pressure_kPa", 40}}}}});
+  const SrmOutcome seismic = srm_of_griffiths_lane({{"seismic", {{"horizontal_coefficient", 0.1}}}});
+  CHECK(surcharged.bishop == Approx(1.240).margin(0.01));
+  CHECK(seismic.bishop == Approx(1.109).margin(0.01));
+  for (const SrmOutcome& srm : {surcharged, seismic}) {
+    INFO("FS_SPH in [" << srm.lo << ", " << srm.hi << "], LEM Bishop " << srm.bishop);
+    CHECK(srm.hi >= 0.9 * srm.bishop);
+    CHECK(srm.lo <= 1.1 * srm.bishop);
+    CHECK(srm.hi <= 1.296);  // below the dry slope's bracket at this spacing, [1.296, 1.335]: the load weakens it
+  }
+}
+
+TEST_CASE("srm: Griffiths & Lane example 5, slow drawdown to L/H = 0 and 0.7, at 1 m spacing, within 10 % of LEM "
+          "Bishop and of the paper's FE values", "[srm][validation][loads]") {
+  // Reference: Griffiths & Lane (1999) example 5, Fig. 15: the slope of example 1 with a level free surface at depth
+  // L below the crest, in the slope and the reservoir; FE strength reduction 1.85 at L/H = 0 (Morgenstern 1963
+  // chart 1.85) and 1.30 (the minimum) at L/H = 0.7 (values as re-read from the figure by a re-implementation; the
+  // paper's gamma/gamma_w = 2, here 20/9.81). Our LEM Bishop: 1.824 and 1.302. SPH measured 1.805 in
+  // [1.792, 1.818] (-1.0 %) and 1.207 in [1.188, 1.225] (-7.3 %; 1.280 at 0.5 m). Tolerance 10 %: the coarse
+  // resolution (ten particles over the height; the dry slope is -4.5 % at this spacing).
+  const SrmOutcome submerged = srm_of_griffiths_lane(level_water(10.0));
+  const SrmOutcome drawn_down = srm_of_griffiths_lane(level_water(3.0));
+  CHECK(submerged.bishop == Approx(1.824).margin(0.01));
+  CHECK(drawn_down.bishop == Approx(1.302).margin(0.01));
+  for (const auto& [srm, fe] : {std::pair{submerged, 1.85}, std::pair{drawn_down, 1.30}}) {
+    INFO("FS_SPH in [" << srm.lo << ", " << srm.hi << "], LEM Bishop " << srm.bishop << ", FE " << fe);
+    CHECK(srm.hi >= 0.9 * srm.bishop);
+    CHECK(srm.lo <= 1.1 * srm.bishop);
+    CHECK(srm.hi >= 0.9 * fe);
+    CHECK(srm.lo <= 1.1 * fe);
+  }
+  CHECK(submerged.lo > drawn_down.hi);  // the reservoir's support, as LE and FE say
 }
