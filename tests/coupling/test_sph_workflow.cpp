@@ -263,3 +263,31 @@ TEST_CASE("the thesis slopes fill with the thesis's particle counts", "[sph][fil
     CHECK(coupling::fill_section(scene.section->section, dx).points.size() == expected);
   }
 }
+
+TEST_CASE("the demo with water: two_layer_water_sph at 1 m runs end to end, SPH carries the water table and the "
+          "surcharge, and the comparison agrees with limit equilibrium", "[sph][loads][cli]") {
+  // cases/two_layer_water_sph.json (LEM Bishop 1.438 with the water table and the 20 kPa crest strip) at a coarse
+  // spacing: the SPH run stands (measured: largest displacement 0.135 m, no plastic band), the comparison says so
+  // and that LE agrees, and the strength reduction finds FS_SPH near Bishop's (measured 1.540 at 1 m, +7.1 %;
+  // 15 % as the dry Griffiths & Lane test at this resolution). No load is left out, so no warning about loads.
+  const fs::path dir = fresh_dir("demo_water");
+  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/two_layer_water_sph.json");
+  scene["analyses"]["sph"]["particle_spacing_m"] = 1.0;
+  scene["analyses"]["srm"]["tolerance"] = 0.05;
+  write_json(dir / "scene.json", scene);
+  REQUIRE(run_program("run \"" + (dir / "scene.json").string() + "\" -o \"" + (dir / "out").string() + "\"") == 0);
+  const nlohmann::json report = read_json(dir / "out/report.json");
+  CHECK(report["status"] == "ok");
+  CHECK(report["sph"]["warnings"].empty());
+  CHECK(report["srm"]["warnings"].empty());
+  CHECK(report["sph"]["max_displacement_m"].get<double>() < 0.5);
+  const std::string verdict = report["comparison"]["verdict"];
+  CHECK(verdict.find("the slope stands in SPH") != std::string::npos);
+  CHECK(verdict.find("limit equilibrium agrees") != std::string::npos);
+  const double bishop = report["srm"]["lem_bishop"];
+  const double lo = report["srm"]["bracket"][0], hi = report["srm"]["bracket"][1];
+  CHECK(bishop == Approx(1.438).margin(0.01));
+  CHECK(hi >= 0.85 * bishop);
+  CHECK(lo <= 1.15 * bishop);
+  fs::remove_all(dir);
+}

@@ -270,6 +270,36 @@ TEST_CASE("stability: failing slopes of extreme materials finish, fail as LEM sa
   }
 }
 
+TEST_CASE("stability: the loads at their extremes (deep ponding, the water line on the ground, k_h = 0.9) finish "
+          "and stand or fail as LEM says", "[stability][sph][loads][cli]") {
+  // Deep ponding (LEM Bishop 1.82): the slope stays in place (below 2 % of H, as the dry stable slope under sudden
+  // gravity). The water line on the ground (0.855) and k_h = 0.9 (0.36): it fails (more than 5 % of H). In every
+  // case kinetic energy + plastic work stays within the potential energy released (gravity, pore pressure, k_h).
+  TemporaryFolder folder("stability-loads");
+  for (const char* stem : {"sph_deep_ponding", "sph_water_at_ground_surface", "sph_kh_top_of_range"}) {
+    INFO(stem);
+    const Run run = run_case("run", case_file(stem), folder.path / stem);
+    INFO(run.output);
+    REQUIRE(run.status == 0);
+    const json report = read_json(folder.path / stem / "report.json");
+    CHECK(unexplained_nulls(report).empty());
+    CHECK(report["sph"]["stopped_because"] == "end_time");
+    CHECK(report["sph"]["warnings"].empty());
+    const double displacement = report["sph"]["max_displacement_m"];
+    if (std::string(stem) == "sph_deep_ponding") {
+      CHECK(fs_of(report, "bishop") > 1.5);
+      CHECK(displacement < 0.2);
+    } else {
+      CHECK(fs_of(report, "bishop") < 1.0);
+      CHECK(displacement > 0.5);
+    }
+    const EnergyHistory e = read_energy(folder.path / stem / "energy.csv");
+    CHECK(e.finite);
+    REQUIRE(e.released_potential > 0);
+    CHECK(e.final_kinetic + e.plastic <= 1.05 * e.released_potential);
+  }
+}
+
 namespace {
 
 // The deposit of a finished collapse against the true-2-D laws of Nguyen, Bui & Fukagawa (2015), arXiv:1512.05180,

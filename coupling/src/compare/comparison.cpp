@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "coupling/compare/sliding_mass.hpp"
+#include "coupling/scene/json_reader.hpp"
 #include "slope/methods.hpp"
 #include "slope/slices.hpp"
 
@@ -222,6 +223,27 @@ std::string like_for_like_text(const ComparisonResult& result) {
   return text.str();
 }
 
+// The verdict when there is no SPH surface to set against a critical one: the SPH run shows no plastic band (the
+// slope stands in SPH), told against the lowest limit-equilibrium factor of safety; or no method found a surface.
+std::string verdict_without_surfaces(const SphFailure& sph, const std::vector<MethodComparison>& methods) {
+  const MethodComparison* lowest = nullptr;
+  for (const MethodComparison& m : methods)
+    if (m.lem_factor_of_safety && (!lowest || *m.lem_factor_of_safety < *lowest->lem_factor_of_safety)) lowest = &m;
+  if (!lowest) return "No comparison: no limit-equilibrium method found a critical surface.";
+  if (sph.entry) return "No comparison: the SPH plastic band could not be set against a critical surface.";
+  std::ostringstream text;
+  text << "No surface to compare: the SPH run shows no plastic band above the threshold, so the slope stands in SPH; ";
+  if (*lowest->lem_factor_of_safety >= 1.0) {
+    text << "limit equilibrium agrees (every method's factor of safety is above 1, the lowest "
+         << lowest->method << " " << format_number(*lowest->lem_factor_of_safety) << ").";
+  } else {
+    text << "limit equilibrium does not (" << lowest->method << " FS = "
+         << format_number(*lowest->lem_factor_of_safety)
+         << " < 1): the SPH run may be too short for the failure to develop, or the band threshold too high.";
+  }
+  return text.str();
+}
+
 }  // namespace
 
 const MethodComparison* ComparisonResult::find(const std::string& method) const {
@@ -259,9 +281,7 @@ ComparisonResult compare_with_lem(const slope::Section& section, const SphFailur
     result.methods.push_back(
         compare_method(critical, sph, sph_mass, sph_surface, ground, sph_polygon, tells_verdict, verdict));
   }
-  result.verdict = verdict ? *verdict
-                           : std::string("No comparison: the SPH run shows no plastic band above the threshold "
-                                         "or no LEM method found a critical surface.");
+  result.verdict = verdict ? *verdict : verdict_without_surfaces(sph, result.methods);
   if (verdict) result.verdict += like_for_like_text(result);
   return result;
 }
