@@ -80,6 +80,31 @@ void refuse_before_start(const Scene& scene, const SphAnalysis& analysis) {
 }
 
 // The model's size, kernel, wave speed, time step and gravity, and the plan on the log.
+// The loads of the model besides its weight, one sentence each, so that a reader of the report can check them.
+std::vector<std::string> loads_carried(const sph::Model& model) {
+  std::vector<std::string> out;
+  const sph::SoilLoads& loads = model.loads;
+  if (loads.water)
+    out.push_back("pore water below the piezometric line (gamma_w = " +
+                  format_number(loads.water->unit_weight / 1000.0) +
+                  " kN/m3): effective stress, ponded water included");
+  if (loads.seismic_coefficient != 0.0)
+    out.push_back("pseudo-static k_h = " + format_number(std::fabs(loads.seismic_coefficient)) + " toward " +
+                  (loads.seismic_coefficient > 0 ? "+x" : "-x"));
+  if (loads.surface_force_y) {
+    const auto& fy = model.particles.field(*loads.surface_force_y);
+    double total = 0.0;
+    std::size_t loaded = 0;
+    for (double f : fy) {
+      total -= f;
+      if (f != 0.0) ++loaded;
+    }
+    out.push_back("surcharges: " + format_number(total / 1000.0) + " kN/m downward on " + std::to_string(loaded) +
+                  " particles under the strips");
+  }
+  return out;
+}
+
 SphModelFacts model_facts(const sph::Model& model, const SphSize& size, const SphAnalysis& analysis,
                           std::ostream* log) {
   SphModelFacts f;
@@ -98,7 +123,9 @@ SphModelFacts model_facts(const sph::Model& model, const SphSize& size, const Sp
   f.gravity_ramp_s = model.settings.gravity_ramp_time;
   f.wall_layers = analysis.wall_layers;
   f.memory_estimate_MiB = static_cast<double>(size.memory_bytes) / (1024.0 * 1024.0);
+  f.loads = loads_carried(model);
   if (log) {
+    for (const auto& load : f.loads) *log << "sph: load: " << load << "\n";
     *log << "sph: " << size.soil_particles << " soil + " << size.wall_particles << " wall particles, dx = "
          << model.settings.particle_spacing << " m, h = " << f.smoothing_length_m << " m, P-wave speed "
          << f.p_wave_speed_m_s << " m/s, time step about " << f.time_step_estimate_s << " s: about "

@@ -33,6 +33,7 @@ void write_model(const SphModelFacts& f, nlohmann::json& report) {
   if (f.gravity == sph::GravityMode::ramped) report["gravity_ramp_s"] = f.gravity_ramp_s;
   report["wall_layers"] = f.wall_layers;
   report["memory_estimate_MiB"] = f.memory_estimate_MiB;
+  report["loads"] = f.loads;
 }
 
 void write_summary(const sph::RunSummary& summary, nlohmann::json& report) {

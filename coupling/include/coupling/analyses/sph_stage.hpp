@@ -31,6 +31,7 @@ struct SphModelFacts {
   double gravity_ramp_s = 0;  // ramped gravity only
   int wall_layers = 0;
   double memory_estimate_MiB = 0;
+  std::vector<std::string> loads;  // the loads besides the weight the model carries, one sentence each (units stated)
 };
 
 // Kinetic energy + plastic work against the potential energy released (when some was released).
