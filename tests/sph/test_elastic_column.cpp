@@ -9,39 +9,13 @@
 #include <cstdlib>
 #include <map>
 
+#include "elastic_box.hpp"
 #include "sph/engine/fill.hpp"
 #include "sph/soil/run.hpp"
 
 namespace {
 
-sph::Model elastic_column(sph::GravityMode mode, double damping) {
-  sph::Model m;
-  sph::Material mat;
-  mat.name = "elastic";
-  mat.density = 2000;
-  mat.youngs_modulus = 5e6;
-  mat.poisson_ratio = 0.3;
-  mat.plastic = false;
-  m.materials.push_back(mat);
-  auto& s = m.settings;
-  s.particle_spacing = 0.025;
-  s.h_over_dx = 1.3;
-  s.gravity_mode = mode;
-  s.damping = damping;
-  s.wall_slip = sph::WallSlip::free_slip;
-  s.end_time = 0.3;
-  s.output_interval = 0;
-  const double W = 0.5, H = 1.0;
-  sph::add_soil(m.particles, sph::lattice_points_in_region(0, 0, W, H, s.particle_spacing, [](double, double) { return true; }),
-                s.particle_spacing, 0, mat.density);
-  sph::BoxWalls box;
-  box.x_min = 0;
-  box.x_max = W;
-  box.y_min = 0;
-  box.height = 1.2 * H;
-  sph::add_box_walls(m.particles, box, s.particle_spacing, s.smoothing_length(), 0, mat.density);
-  return m;
-}
+sph::Model elastic_column(sph::GravityMode mode, double damping) { return test_column::elastic_box(mode, damping); }
 
 void check_profile(const sph::Model& m, double H) {
   const auto& p = m.particles;

@@ -16,43 +16,17 @@
 #include <cmath>
 #include <map>
 
+#include "elastic_box.hpp"
 #include "sph/engine/fill.hpp"
 #include "sph/soil/run.hpp"
 #include "sph/soil/soil_step.hpp"
 
 namespace {
 
-constexpr double rho = 2000.0, g = 9.81, gamma_w = 9810.0, W = 0.5, H = 1.0;
+constexpr double rho = test_column::density, g = 9.81, gamma_w = 9810.0, W = test_column::width,
+                 H = test_column::height;
 
-sph::Model elastic_box(sph::GravityMode mode, double damping, double density = rho, bool side_walls = true) {
-  sph::Model m;
-  sph::Material mat;
-  mat.name = "elastic";
-  mat.density = density;
-  mat.youngs_modulus = 5e6;
-  mat.poisson_ratio = 0.3;
-  mat.plastic = false;
-  m.materials.push_back(mat);
-  auto& s = m.settings;
-  s.particle_spacing = 0.025;
-  s.h_over_dx = 1.3;
-  s.gravity_mode = mode;
-  s.damping = damping;
-  s.wall_slip = sph::WallSlip::free_slip;
-  s.end_time = 0.3;
-  s.output_interval = 0;
-  sph::add_soil(m.particles,
-                sph::lattice_points_in_region(0, 0, W, H, s.particle_spacing, [](double, double) { return true; }),
-                s.particle_spacing, 0, density);
-  sph::BoxWalls box;
-  box.x_min = 0;
-  box.x_max = W;
-  box.y_min = 0;
-  box.height = 1.2 * H;
-  box.left = box.right = side_walls;
-  sph::add_box_walls(m.particles, box, s.particle_spacing, s.smoothing_length(), 0, density);
-  return m;
-}
+using test_column::elastic_box;
 
 sph::PiezometricLine level_line(double y) {
   sph::PiezometricLine line;
