@@ -182,6 +182,21 @@ TEST_CASE("every scene in cases/ passes sphslope check", "[cli][cases]") {
   CHECK(count >= 5);
 }
 
+TEST_CASE("sphslope check warns about a load the SPH model is told to leave out, naming its JSON path", "[cli][sph]") {
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(source_path("cases/two_layer_water_sph.json")));
+  scene["analyses"]["sph"]["ignore_loads"] = {"surcharges"};
+  const fs::path file = fs::temp_directory_path() / "sphslope_check_ignore_loads.json";
+  std::ofstream(file) << scene.dump();
+  const ProgramRun result = run_program("check " + quoted(file.string()));
+  INFO(result.output);
+  CHECK(result.status == 0);
+  CHECK(result.output.find("warning: " + file.string() + ": section.surcharges is left out of the SPH model") !=
+        std::string::npos);
+  const ProgramRun carried = run_program("check " + quoted(source_path("cases/two_layer_water_sph.json").string()));
+  CHECK(carried.output.find("warning") == std::string::npos);
+  fs::remove(file);
+}
+
 TEST_CASE("sphslope lem on Griffiths & Lane (1999) writes a complete report.json", "[cli][lem][e2e]") {
   TemporaryFolder folder("gl");
   const fs::path scene = source_path("cases/griffiths_lane_1999.json");

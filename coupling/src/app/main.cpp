@@ -83,6 +83,11 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
   }
   if (mode == coupling::Mode::check) {
     std::cout << "ok: " << scene_file.string() << ": " << coupling::summarize(*result.scene) << "\n";
+    for (const coupling::SectionLoad& load : coupling::loads_sph_leaves_out(*result.scene))
+      std::cerr << "warning: " << scene_file.string() << ": " << load.path
+                << " is left out of the SPH model (analyses.sph.ignore_loads): SPH, strength reduction and the "
+                   "comparison will analyse the slope without "
+                << load.name << ", limit equilibrium with it\n";
     return 0;
   }
   if (result.lem && result.scene) {
