@@ -169,7 +169,11 @@ std::vector<std::string> sph_refusals(const SphAnalysis& analysis, const SphPlan
   std::vector<std::string> out;
   if (auto why = size_refusal(analysis, plan.soil_particles + plan.wall_particles)) out.push_back(*why);
   if (plan.planned_steps > analysis.max_steps) {
-    out.push_back("analyses.sph: the run needs about " + format_number(std::ceil(plan.planned_steps)) +
+    // A whole number of steps, as a reader counts them (scientific notation only beyond what an integer holds).
+    const double steps = std::ceil(plan.planned_steps);
+    const std::string steps_text =
+        steps < 1e18 ? std::to_string(static_cast<long long>(steps)) : format_number(steps);
+    out.push_back("analyses.sph: the run needs about " + steps_text +
                   " time steps (P-wave speed " + format_number(plan.p_wave_speed) + " m/s, time step " +
                   format_number(plan.time_step) + " s for " + format_number(analysis.settings.end_time) +
                   " s), more than analyses.sph.max_steps = " + std::to_string(std::llround(analysis.max_steps)) +
