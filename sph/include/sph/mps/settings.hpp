@@ -1,0 +1,60 @@
+#pragma once
+// Settings of the weakly compressible MPS method for granular flows (WC-MPS; Jafari Nodoushan, Shakibaeinia &
+// Hosseini 2016, shared/seeds/seed-001-wcmps-granular.md; issue 12). SI units, 2-D. What every physics shares
+// (dx, gravity, CFL factor, end time, output and checkpoint cadence, blow-up guard) comes from sph::EngineSettings.
+// The MPS does not use the engine's SPH kernel or h: its weight w = (1 - r/r_e)^3 has its own radius r_e
+// (re_over_dx below), and its neighbour search uses cells of side r_e. docs/mps.md lists the equations, the
+// decisions on the seed's ambiguities A1-A24 and the source of every default below.
+#include <string>
+
+#include "sph/engine/settings.hpp"
+
+namespace sph::mps {
+
+// How the exponential (Papanastasiou / Zhu et al. 2005) regularisation of Herschel-Bulkley is written (seed
+// ambiguity A2; docs/mps.md "Rheology").
+enum class Regularisation {
+  // "as_printed": seed eq. 16 as printed, mu = tau_y (1 - exp(-m |D|)) / (2 |D|) + mu0 |D|^(N-1);
+  // its zero-rate limit (N = 1) is mu0 + m tau_y / 2, not the mu0 + m tau_y the paper states
+  as_printed,
+  // "consistent" (default): mu = tau_y (1 - exp(-m gdot)) / gdot + mu0 gdot^(N-1) with gdot = 2 |D|; tends to the
+  // ideal Herschel-Bulkley law of seed eq. 2 as m -> infinity and to the paper's mu0 + m tau_y at zero rate (N = 1)
+  consistent,
+};
+
+struct Settings : EngineSettings {
+  // r_e = 4.0 dx: the value of the paper's code lineage for weakly compressible 2-D runs (seed 2.3 and A12; the
+  // paper gives none). On the square lattice it gives n0 = 4.1983 and lambda = 2.7345 dx^2 and about 48 neighbours;
+  // 3.1 dx (n0 = 2.2414) is the seed's alternative. Below 2 dx the first ring alone carries the operators.
+  static constexpr double default_re_over_dx = 4.0;
+  static constexpr double min_re_over_dx = 2.0;
+  static constexpr double max_re_over_dx = 6.0;  // beyond: > 110 neighbours per particle for no stated gain
+  static constexpr double min_surface_beta = 0.80;  // the paper's range for beta (seed eq. 15)
+  static constexpr double max_surface_beta = 0.99;
+
+  Settings();
+
+  double re_over_dx = default_re_over_dx;  // r_e / dx, the weight's support radius in spacings
+  double rest_density = 1500.0;  // rho0 [kg/m^3] of the EOS prefactor (dry glass beads, phi0 = 0.6: A22)
+  // c0 [m/s], the artificial sound speed; at least 10 x the largest flow speed (seed eq. 13-14; checked against the
+  // flow when the run loop exists). 20 m/s: the code lineage's value, >= 10 x 2 sqrt(g h0) for both seed cases (A12)
+  double sound_speed = 20.0;
+  double tait_gamma = 7.0;  // Tait exponent (lost in the extraction; the standard 7, A11)
+  double surface_beta = 0.92;  // free surface where n <= beta n0 (seed eq. 15; code lineage 0.92, A12)
+  // cap of the effective viscosity [Pa s] (seed A3: mandatory, N < 1 makes mu0 |D|^(N-1) unbounded at rest); the
+  // code lineage's 200 Pa s; its sensitivity is to be studied (issue 12, the stability matrix)
+  double viscosity_cap = 200.0;
+  Regularisation regularisation = Regularisation::consistent;  // A2
+
+  double effective_radius() const { return re_over_dx * particle_spacing; }  // r_e [m]
+
+  // The engine's checks (validate_engine), then the MPS's. Throws std::invalid_argument whose message names the
+  // setting, its value and the allowed range.
+  void validate() const;
+};
+
+// "as_printed" / "consistent". Throws std::invalid_argument on other names.
+Regularisation regularisation_from(const std::string& key);
+const char* regularisation_key(Regularisation r);
+
+}  // namespace sph::mps

@@ -1,0 +1,54 @@
+#include "sph/mps/settings.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace sph::mps {
+
+Regularisation regularisation_from(const std::string& key) {
+  if (key == "as_printed") return Regularisation::as_printed;
+  if (key == "consistent") return Regularisation::consistent;
+  throw std::invalid_argument("mps regularisation '" + key + "': expected \"as_printed\" or \"consistent\"");
+}
+
+const char* regularisation_key(Regularisation r) {
+  return r == Regularisation::as_printed ? "as_printed" : "consistent";
+}
+
+Settings::Settings() {
+  particle_spacing = 0.001;  // 1 mm: the dry collapse's likely spacing (seed A14)
+  output_interval = 0.0;  // no frames unless asked for
+}
+
+namespace {
+
+// Throws "mps settings: <name> = <value> is <what is wrong>; allowed: <allowed>" unless ok.
+void need(bool ok, const char* name, double value, const char* wrong, const char* allowed) {
+  if (ok) return;
+  std::ostringstream s;
+  s << "mps settings: " << name << " = " << value << " is " << wrong << "; allowed: " << allowed;
+  throw std::invalid_argument(s.str());
+}
+
+}  // namespace
+
+void Settings::validate() const {
+  validate_engine();
+  const double re = re_over_dx;
+  need(std::isfinite(re) && re >= min_re_over_dx && re <= max_re_over_dx, "re_over_dx", re,
+       "out of range (the weight's radius r_e in spacings)", "2 to 6 (default 4)");
+  need(std::isfinite(rest_density) && rest_density > 0, "rest_density", rest_density, "not a positive density",
+       "> 0 kg/m^3");
+  need(std::isfinite(sound_speed) && sound_speed > 0, "sound_speed", sound_speed, "not a positive speed",
+       "> 0 m/s, at least 10 x the largest flow speed");
+  need(std::isfinite(tait_gamma) && tait_gamma >= 1 && tait_gamma <= 10, "tait_gamma", tait_gamma,
+       "out of range", "1 to 10 (default 7)");
+  need(surface_beta >= min_surface_beta && surface_beta <= max_surface_beta, "surface_beta", surface_beta,
+       "outside the paper's range", "0.80 to 0.99 (default 0.92)");
+  need(std::isfinite(viscosity_cap) && viscosity_cap > 0, "viscosity_cap", viscosity_cap, "not a positive viscosity",
+       "> 0 Pa s (default 200)");
+  need(end_time > 0, "end_time", end_time, "not positive", "> 0 s");
+}
+
+}  // namespace sph::mps
