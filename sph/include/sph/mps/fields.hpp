@@ -1,0 +1,27 @@
+#pragma once
+// The WC-MPS state block in the engine's particle set: the arrays it registers by name (seed 2.11, step b-f), and
+// a view of raw pointers for the per-particle loops (valid until the next sort or particle addition).
+// The stepper that fills them is not written yet (docs/mps.md, "Not yet").
+#include "sph/engine/particle_set.hpp"
+
+namespace sph::mps {
+
+struct Fields {
+  // state (checkpointed): p^m feeds the predictor's (1 - alpha) grad p^m of the next step (seed eq. 28)
+  FieldId pressure;  // [Pa]
+  // written to frames, recomputed every step
+  FieldId number_density;  // n* at the predicted positions [-] (seed eq. 6, 13)
+  FieldId smoothed_pressure;  // p' of the yield stress [Pa] (seed eq. 20, A4)
+  FieldId viscosity;  // effective viscosity mu_i [Pa s] (seed eq. 16, capped)
+  FieldId free_surface;  // 1 where n* <= beta n0 (pressure 0), else 0 (seed eq. 15)
+
+  // Registers the block (or finds it, if already registered) in `set`.
+  static Fields register_in(ParticleSet& set);
+};
+
+struct Arrays {
+  double *pressure, *number_density, *smoothed_pressure, *viscosity, *free_surface;
+  Arrays(ParticleSet& set, const Fields& f);
+};
+
+}  // namespace sph::mps

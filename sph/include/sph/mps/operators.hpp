@@ -1,0 +1,59 @@
+#pragma once
+// The MPS operators of the WC-MPS (seed eqs. 6-12, 17, 20) gathered over a particle's neighbours with the engine's
+// cell list (sph/engine/neighbours.hpp), and the reference number density n0 and lambda of the initial lattice.
+// Every neighbour within r_e of particle i takes part (j != i), whatever its kind: walls and dummy particles
+// included (they exist to complete the sums near a wall, seed 2.7). The pair equations are in sph/mps/terms.hpp.
+// SI units, 2-D.
+#include <cstddef>
+
+#include "sph/engine/cell_sort.hpp"
+#include "sph/engine/particle_set.hpp"
+#include "sph/mps/terms.hpp"
+
+namespace sph::mps {
+
+// The reference values of an interior particle of the initial square lattice (seed eq. 12, computed discretely as
+// the seed advises: the continuous lambda = r_e^2/7 is 16 % smaller at r_e = 4 dx).
+struct LatticeConstants {
+  double n0 = 0;  // number density sum_{j != i} w_ij [-]
+  double lambda = 0;  // sum r^2 w / sum w [m^2]
+};
+
+// n0 and lambda of a particle with a full neighbourhood on the square lattice of spacing dx [m], weight radius
+// re [m]: the direct sum over the lattice offsets (k dx, l dx), (k, l) != (0, 0), closer than re.
+// Throws std::invalid_argument unless dx > 0 and re > dx (at least the first ring must be in reach).
+LatticeConstants lattice_constants(double dx, double re);
+
+// Where the operators look: a set sorted by its CellSortedSet with cells of side >= re, and the radius re [m].
+struct Neighbourhood {
+  const CellSortedSet& sorted;
+  const ParticleSet& set;
+  double re;
+};
+
+struct Vector2 {
+  double x = 0, y = 0;
+};
+
+// [M2] n_i = sum_{j != i} w_ij [-].
+double number_density(const Neighbourhood& nb, std::size_t i);
+// Fills n[i] for every particle of the set.
+void number_densities(const Neighbourhood& nb, double* n);
+
+// [M4] <grad phi>_i = (d/n0) sum_j (phi_j - phi_i) r_ij / r^2 w_ij [unit of phi / m].
+Vector2 gradient(const Neighbourhood& nb, std::size_t i, const double* phi, double n0);
+
+// [M5] <div u>_i = (d/n0) sum_j (u_j - u_i) . r_ij / r^2 w_ij [1/s] for the vector field (u, v) [m/s].
+double divergence(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, double n0);
+
+// [M6] <lap phi>_i = (2d/(lambda n0)) sum_j (phi_j - phi_i) w_ij [unit of phi / m^2].
+double laplacian(const Neighbourhood& nb, std::size_t i, const double* phi, const LatticeConstants& lattice);
+
+// [M8] D_i = (grad u + grad u^T)/2 by the MPS gradient of each velocity component [1/s].
+terms::StrainRate strain_rate(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, double n0);
+
+// [M14] p'_i = sum_{j != i} p_j w_ij / sum_{j != i} w_ij [Pa] (Shepard, A4), not clamped (the yield stress clamps
+// it); 0 for a particle without neighbours.
+double smoothed_pressure(const Neighbourhood& nb, std::size_t i, const double* p);
+
+}  // namespace sph::mps
