@@ -1,0 +1,318 @@
+// The WC-MPS foundation (issue 12; docs/mps.md): the weight, n0 and lambda of the lattice, the operators with the
+// standard signs, Tait's equation of state on the number density, the free surface, and the regularised
+// Herschel-Bulkley viscosity in both forms of ambiguity A2. Each against a closed form; the reference numbers
+// (n0, lambda, n/n0 near an edge, EOS values) are the direct sums / formulas evaluated independently (in Python,
+// double precision) and quoted to the digits shown. Lattice: dx = 1 mm, r_e = 4 dx unless stated.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <stdexcept>
+#include <vector>
+
+#include "sph/engine/cell_sort.hpp"
+#include "sph/engine/neighbours.hpp"
+#include "sph/mps/fields.hpp"
+#include "sph/mps/operators.hpp"
+#include "sph/mps/rheology.hpp"
+#include "sph/mps/settings.hpp"
+#include "sph/mps/terms.hpp"
+#include "sphslope/units.hpp"
+
+using Catch::Matchers::Contains;
+namespace terms = sph::mps::terms;
+
+namespace {
+
+constexpr double dx = 1.0e-3;  // [m]
+constexpr double re = 4.0 * dx;  // [m]
+
+// A full square lattice of nx x ny particles at ((i + 1/2) dx, (j + 1/2) dx), sorted by cells of side r_e.
+struct Lattice {
+  sph::ParticleSet set;
+  sph::CellSortedSet sorted;
+  Lattice(int nx, int ny) {
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        set.add((i + 0.5) * dx, (j + 0.5) * dx, 1.5e-3, 1500.0, 0, sph::ParticleKind::soil);
+    sorted.reserve(set);
+    sorted.sort(set, re);
+  }
+  sph::mps::Neighbourhood neighbourhood() const { return {sorted, set, re}; }
+  // The index (after the sort) of the particle in lattice column i, row j.
+  std::size_t at(int i, int j) const {
+    for (std::size_t k = 0; k < set.size(); ++k)
+      if (std::abs(set.x[k] - (i + 0.5) * dx) < 1e-3 * dx && std::abs(set.y[k] - (j + 0.5) * dx) < 1e-3 * dx)
+        return k;
+    throw std::logic_error("no particle there");
+  }
+  template <class F>
+  std::vector<double> sample(F&& f) const {
+    std::vector<double> v(set.size());
+    for (std::size_t k = 0; k < set.size(); ++k) v[k] = f(set.x[k], set.y[k]);
+    return v;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("mps weight is (1 - r/re)^3 inside its radius and zero from re on", "[mps]") {
+  CHECK(terms::weight(0.0, re) == 1.0);
+  CHECK(terms::weight(0.25 * re, re) == Approx(0.421875).epsilon(1e-15));
+  CHECK(terms::weight(0.5 * re, re) == Approx(0.125).epsilon(1e-15));
+  CHECK(terms::weight(0.9 * re, re) == Approx(0.001).epsilon(1e-12));
+  CHECK(terms::weight(re, re) == 0.0);
+  CHECK(terms::weight(1.5 * re, re) == 0.0);
+  double previous = 2.0;
+  for (int k = 0; k < 100; ++k) {  // strictly decreasing on [0, re)
+    const double w = terms::weight(k * 0.01 * re, re);
+    CHECK(w < previous);
+    CHECK(w > 0.0);
+    previous = w;
+  }
+}
+
+TEST_CASE("mps n0 and lambda of the square lattice equal the direct sum at an interior particle", "[mps]") {
+  const sph::mps::LatticeConstants c = sph::mps::lattice_constants(dx, re);
+  // the seed's table (section 2.3) for r_e = 4 dx: n0 = 4.1983, lambda = 2.7345 dx^2 (direct sum: 4.1982958,
+  // 2.7344556 dx^2)
+  CHECK(c.n0 == Approx(4.198295818402637).epsilon(1e-12));
+  CHECK(c.lambda == Approx(2.734455584262944 * dx * dx).epsilon(1e-12));
+  // the neighbour iteration of the engine on a real lattice, particle (12, 12) of 25 x 25
+  const Lattice lat(25, 25);
+  const std::size_t i = lat.at(12, 12);
+  double sum_w = 0, sum_r2w = 0;
+  sph::for_each_neighbour(lat.sorted, lat.set, i, re, [&](std::size_t, double, double, double r2) {
+    sum_w += terms::weight(std::sqrt(r2), re);
+    sum_r2w += r2 * terms::weight(std::sqrt(r2), re);
+  });
+  CHECK(sum_w == Approx(c.n0).epsilon(1e-12));
+  CHECK(sum_r2w / sum_w == Approx(c.lambda).epsilon(1e-12));
+  CHECK(sph::mps::number_density(lat.neighbourhood(), i) == Approx(c.n0).epsilon(1e-12));
+  // the continuous lambda = r_e^2 / 7 is far from the discrete one (why eq. 12 is evaluated on the lattice)
+  CHECK(re * re / 7.0 < 0.86 * c.lambda);
+  // r_e = 3.1 dx, the seed's other row: n0 = 2.2414, lambda = 1.844 dx^2 (direct sum 2.2414106, 1.8440765 dx^2)
+  const sph::mps::LatticeConstants c31 = sph::mps::lattice_constants(dx, 3.1 * dx);
+  CHECK(c31.n0 == Approx(2.2414105615789373).epsilon(1e-12));
+  CHECK(c31.lambda == Approx(1.8440764682587183 * dx * dx).epsilon(1e-12));
+  CHECK_THROWS_AS(sph::mps::lattice_constants(dx, 0.5 * dx), std::invalid_argument);
+}
+
+TEST_CASE("mps gradient of a linear field is exact at interior lattice particles and has the standard sign",
+          "[mps]") {
+  const Lattice lat(25, 25);
+  const double n0 = sph::mps::lattice_constants(dx, re).n0;
+  // phi = 3 + 2000 x - 5000 y [Pa], x and y in m: grad phi = (2000, -5000) Pa/m
+  const std::vector<double> phi = lat.sample([](double x, double y) { return 3.0 + 2000.0 * x - 5000.0 * y; });
+  for (int j = 3; j <= 21; j += 3)
+    for (int k = 3; k <= 21; k += 3) {  // full support: at least 3 rows from every edge
+      const sph::mps::Vector2 g = sph::mps::gradient(lat.neighbourhood(), lat.at(k, j), phi.data(), n0);
+      CHECK(g.x == Approx(2000.0).epsilon(1e-11));  // the printed (phi_i - phi_j) would give -2000
+      CHECK(g.y == Approx(-5000.0).epsilon(1e-11));
+    }
+  // at the middle of the bottom edge the neighbours below are missing: sum y^2 w / r^2 over the upper half-plane
+  // is n0/4 instead of n0/2, so the MPS gradient gives exactly half the vertical slope
+  const sph::mps::Vector2 edge = sph::mps::gradient(lat.neighbourhood(), lat.at(12, 0), phi.data(), n0);
+  CHECK(edge.y == Approx(-2500.0).epsilon(1e-11));
+}
+
+TEST_CASE("mps divergence of a linear velocity field is exact at an interior lattice particle", "[mps]") {
+  const Lattice lat(25, 25);
+  const double n0 = sph::mps::lattice_constants(dx, re).n0;
+  // u = 0.3 + 4 x + 7 y, v = -0.1 + 9 x - 1.5 y [m/s]: div u = 4 - 1.5 = 2.5 1/s (the shear parts cancel)
+  const std::vector<double> u = lat.sample([](double x, double y) { return 0.3 + 4.0 * x + 7.0 * y; });
+  const std::vector<double> v = lat.sample([](double x, double y) { return -0.1 + 9.0 * x - 1.5 * y; });
+  const double div = sph::mps::divergence(lat.neighbourhood(), lat.at(12, 12), u.data(), v.data(), n0);
+  CHECK(div == Approx(2.5).epsilon(1e-11));
+}
+
+TEST_CASE("mps Laplacian of x^2 + y^2 is 4 at interior lattice particles with the discrete lambda", "[mps]") {
+  const Lattice lat(25, 25);
+  const sph::mps::LatticeConstants c = sph::mps::lattice_constants(dx, re);
+  const std::vector<double> r2 = lat.sample([](double x, double y) { return x * x + y * y; });  // [m^2]
+  const std::vector<double> x2 = lat.sample([](double x, double) { return x * x; });
+  int checked = 0;
+  for (int j = 3; j <= 21; ++j)
+    for (int k = 3; k <= 21; ++k) {  // every particle with a full support (361 of them)
+      const std::size_t i = lat.at(k, j);
+      CHECK(sph::mps::laplacian(lat.neighbourhood(), i, r2.data(), c) == Approx(4.0).epsilon(1e-9));
+      CHECK(sph::mps::laplacian(lat.neighbourhood(), i, x2.data(), c) == Approx(2.0).epsilon(1e-9));
+      ++checked;
+    }
+  CHECK(checked == 361);
+  // with the continuous lambda = r_e^2 / 7 the same sum gives 4 x 2.7345 / 2.2857 = 4.785
+  const sph::mps::LatticeConstants continuous{c.n0, re * re / 7.0};
+  const double lap_cont = sph::mps::laplacian(lat.neighbourhood(), lat.at(12, 12), r2.data(), continuous);
+  CHECK(lap_cont == Approx(4.0 * c.lambda / (re * re / 7.0)).epsilon(1e-9));
+  CHECK(lap_cont > 4.7);
+}
+
+TEST_CASE("mps strain rate of a simple shear has D_xy = gdot/2 and norm gdot/2", "[mps]") {
+  const Lattice lat(25, 25);
+  const double n0 = sph::mps::lattice_constants(dx, re).n0;
+  const double gdot = 3.0;  // [1/s]
+  const std::vector<double> u = lat.sample([&](double, double y) { return gdot * y; });
+  const std::vector<double> v(lat.set.size(), 0.0);
+  const terms::StrainRate d = sph::mps::strain_rate(lat.neighbourhood(), lat.at(12, 12), u.data(), v.data(), n0);
+  CHECK(std::abs(d.xx) < 1e-12);
+  CHECK(std::abs(d.yy) < 1e-12);
+  CHECK(d.xy == Approx(0.5 * gdot).epsilon(1e-11));
+  CHECK(terms::strain_rate_norm(d) == Approx(0.5 * gdot).epsilon(1e-11));
+  CHECK(terms::shear_rate(terms::strain_rate_norm(d)) == Approx(gdot).epsilon(1e-11));
+}
+
+TEST_CASE("mps Shepard-smoothed pressure keeps a constant field everywhere and a linear one inside", "[mps]") {
+  const Lattice lat(25, 25);
+  const std::vector<double> p_const(lat.set.size(), 700.0);
+  const std::vector<double> p_lin = lat.sample([](double, double y) { return 15000.0 * (0.025 - y); });
+  for (const std::size_t i : {lat.at(0, 0), lat.at(12, 0), lat.at(12, 12)})
+    CHECK(sph::mps::smoothed_pressure(lat.neighbourhood(), i, p_const.data()) == Approx(700.0).epsilon(1e-13));
+  const std::size_t i = lat.at(12, 12);
+  CHECK(sph::mps::smoothed_pressure(lat.neighbourhood(), i, p_lin.data()) == Approx(p_lin[i]).epsilon(1e-12));
+  // at the top edge only the particles below (higher p) count: the smoothed value is above the particle's own
+  const std::size_t top = lat.at(12, 24);
+  CHECK(sph::mps::smoothed_pressure(lat.neighbourhood(), top, p_lin.data()) > p_lin[top] + 10.0);
+}
+
+TEST_CASE("mps Tait pressure on the number density: zero at n0, the closed form when compressed", "[mps]") {
+  const double n0 = 4.198295818402637, rho0 = 1500.0, c0 = 20.0, gamma = 7.0;  // [kg/m^3], [m/s]
+  CHECK(terms::tait_pressure(n0, n0, rho0, c0, gamma) == 0.0);
+  // (1500 * 20^2 / 7) (1.01^7 - 1) = 6183.030180600861 Pa; the linear rho0 c0^2 * 0.01 would be 6000 Pa
+  CHECK(terms::tait_pressure(1.01 * n0, n0, rho0, c0, gamma) == Approx(6183.030180600861).epsilon(1e-12));
+  // expanded, above the free-surface threshold: (1500 * 400 / 7) (0.95^7 - 1) = -25856.803191964307 Pa
+  CHECK(terms::tait_pressure(0.95 * n0, n0, rho0, c0, gamma) == Approx(-25856.803191964307).epsilon(1e-12));
+  CHECK(terms::pressure(0.95 * n0, n0, rho0, c0, gamma, 0.92) == Approx(-25856.803191964307).epsilon(1e-12));
+  CHECK(terms::pressure(0.92 * n0, n0, rho0, c0, gamma, 0.92) == 0.0);  // n <= beta n0: free surface
+  CHECK(terms::density_from_number_density(rho0, 1.01 * n0, n0) == Approx(1515.0).epsilon(1e-14));
+}
+
+TEST_CASE("mps free surface flags the lattice edge rows and not the interior", "[mps]") {
+  const Lattice lat(25, 25);
+  const sph::mps::Settings s;  // beta = 0.92
+  const double n0 = sph::mps::lattice_constants(dx, re).n0;
+  auto ratio = [&](int i, int j) { return sph::mps::number_density(lat.neighbourhood(), lat.at(i, j)) / n0; };
+  // n/n0 by row from the bottom edge (direct half-plane sums): 0.633983, 0.908392, 0.991445, 1; corner 0.383983
+  CHECK(ratio(12, 0) == Approx(0.6339829360128365).epsilon(1e-12));
+  CHECK(ratio(12, 1) == Approx(0.9083920086067623).epsilon(1e-12));
+  CHECK(ratio(12, 2) == Approx(0.991445428420228).epsilon(1e-12));
+  CHECK(ratio(12, 3) == Approx(1.0).epsilon(1e-12));
+  CHECK(ratio(0, 0) == Approx(0.38398293601283656).epsilon(1e-12));
+  CHECK(terms::is_free_surface(ratio(12, 0) * n0, n0, s.surface_beta));
+  CHECK(terms::is_free_surface(ratio(12, 1) * n0, n0, s.surface_beta));
+  CHECK_FALSE(terms::is_free_surface(ratio(12, 2) * n0, n0, s.surface_beta));
+  CHECK_FALSE(terms::is_free_surface(ratio(12, 12) * n0, n0, s.surface_beta));
+  // the edge's Tait pressure would be strongly negative; the free surface sets it to 0
+  CHECK(terms::pressure(ratio(12, 0) * n0, n0, s.rest_density, s.sound_speed, s.tait_gamma, s.surface_beta) == 0.0);
+  std::vector<double> n(lat.set.size());
+  sph::mps::number_densities(lat.neighbourhood(), n.data());
+  CHECK(n[lat.at(24, 24)] == Approx(ratio(0, 0) * n0).epsilon(1e-12));  // the opposite corner, by symmetry
+}
+
+TEST_CASE("mps yield stress is c cos(phi) + p' sin(phi) with p' clamped at zero", "[mps]") {
+  const double phi = sphslope::radians(30.0);
+  CHECK(terms::yield_stress(0.0, phi, 1000.0) == Approx(500.0).epsilon(1e-14));
+  CHECK(terms::yield_stress(10.0, phi, 1000.0) == Approx(500.0 + 5.0 * std::sqrt(3.0)).epsilon(1e-14));
+  CHECK(terms::yield_stress(10.0, phi, -300.0) == Approx(5.0 * std::sqrt(3.0)).epsilon(1e-14));  // p' < 0 -> 0
+  sph::mps::HerschelBulkley m;  // phi = 22 deg, c = 0
+  CHECK(sph::mps::yield_stress(m, 500.0) == Approx(500.0 * std::sin(22.0 * sphslope::degree)).epsilon(1e-14));
+}
+
+TEST_CASE("mps regularised Herschel-Bulkley tends to the ideal law at large strain rate", "[mps]") {
+  const double tau_y = 500.0 * std::sin(sphslope::radians(22.0));  // 187.3 Pa
+  const double mu0 = 1.5, n_index = 0.25, m = 50.0;  // the dry collapse (seed 3.0)
+  for (const double gdot : {1.0, 10.0, 100.0}) {  // m gdot >= 50: exp(-m gdot) < 2e-22
+    const double ideal = terms::viscosity_ideal(tau_y, gdot, mu0, n_index);
+    CHECK(terms::viscosity_consistent(tau_y, 0.5 * gdot, mu0, n_index, m) == Approx(ideal).epsilon(1e-13));
+  }
+  // at m gdot = 1 the regularisation is far from the ideal law: tau_y (1 - 1/e) instead of tau_y
+  const double gdot = 1.0 / m;
+  const double ideal = terms::viscosity_ideal(tau_y, gdot, mu0, n_index);
+  const double reg = terms::viscosity_consistent(tau_y, 0.5 * gdot, mu0, n_index, m);
+  CHECK(reg == Approx(tau_y * (1.0 - std::exp(-1.0)) / gdot + mu0 * std::pow(gdot, n_index - 1.0)).epsilon(1e-13));
+  CHECK(reg < 0.7 * ideal);
+}
+
+TEST_CASE("mps effective viscosity stays at the cap at small strain rate and is uncapped above the crossover",
+          "[mps]") {
+  sph::mps::HerschelBulkley mat;  // mu0 = 1.5 Pa s^0.25, N = 0.25, m = 50 s, phi = 22 deg
+  const double cap = 200.0;  // [Pa s]
+  for (const auto form : {sph::mps::Regularisation::consistent, sph::mps::Regularisation::as_printed}) {
+    for (const double norm_d : {0.0, 1e-9, 1e-4})  // at rest the law is infinite (N < 1): the cap
+      CHECK(sph::mps::effective_viscosity(mat, 500.0, norm_d, form, cap) == cap);
+    CHECK(sph::mps::effective_viscosity(mat, 0.0, 0.0, form, cap) == cap);
+  }
+  // without a yield stress (p' = 0) the power law alone crosses the cap at gdot* = (mu0/cap)^(1/(1-N)) = 1.468e-3
+  const double gdot_star = std::pow(1.5 / cap, 1.0 / 0.75);
+  CHECK(gdot_star == Approx(1.4680753654383242e-3).epsilon(1e-12));
+  const auto consistent = sph::mps::Regularisation::consistent;
+  CHECK(sph::mps::effective_viscosity(mat, 0.0, 0.5 * 0.9 * gdot_star, consistent, cap) == cap);
+  const double above = sph::mps::effective_viscosity(mat, 0.0, 0.5 * 1.1 * gdot_star, consistent, cap);
+  CHECK(above == Approx(1.5 * std::pow(1.1 * gdot_star, -0.75)).epsilon(1e-13));
+  CHECK(above < cap);
+  // a fast shear at p' = 500 Pa: tau_y/gdot + mu0 gdot^(N-1) = 18.73 + 0.267 Pa s, below the cap
+  const double tau_y = sph::mps::yield_stress(mat, 500.0);
+  CHECK(sph::mps::effective_viscosity(mat, 500.0, 5.0, consistent, cap) ==
+        Approx(tau_y / 10.0 + 1.5 * std::pow(10.0, -0.75)).epsilon(1e-13));
+}
+
+TEST_CASE("mps the two forms of the regularisation differ as documented (ambiguity A2)", "[mps]") {
+  const double tau_y = 100.0, mu0 = 1.5, m = 50.0;  // [Pa], [Pa s^N], [s]
+  // N = 1 at zero rate: consistent -> mu0 + m tau_y (the paper's stated mu_max), as printed -> mu0 + m tau_y / 2
+  CHECK(terms::viscosity_consistent(tau_y, 0.0, mu0, 1.0, m) == Approx(5001.5).epsilon(1e-14));
+  CHECK(terms::viscosity_as_printed(tau_y, 0.0, mu0, 1.0, m) == Approx(2501.5).epsilon(1e-14));
+  CHECK(terms::viscosity_consistent(tau_y, 1e-12, mu0, 1.0, m) == Approx(5001.5).epsilon(1e-9));  // continuous
+  CHECK(terms::viscosity_as_printed(tau_y, 1e-12, mu0, 1.0, m) == Approx(2501.5).epsilon(1e-9));
+  // N = 0.25 at a large rate: the yield parts agree (tau_y / (2|D|)), the power-law parts differ by 2^(1-N)
+  const double norm_d = 10.0, n_index = 0.25;  // [1/s]
+  const double yield_part = tau_y / (2.0 * norm_d);
+  const double printed = terms::viscosity_as_printed(tau_y, norm_d, mu0, n_index, m) - yield_part;
+  const double consistent = terms::viscosity_consistent(tau_y, norm_d, mu0, n_index, m) - yield_part;
+  CHECK(printed / consistent == Approx(std::pow(2.0, 0.75)).epsilon(1e-12));  // 1.6818
+  CHECK(std::isinf(terms::viscosity_as_printed(tau_y, 0.0, mu0, n_index, m)));
+  CHECK(terms::capped_viscosity(std::numeric_limits<double>::infinity(), 200.0) == 200.0);
+}
+
+TEST_CASE("mps settings validate and name the setting that is wrong", "[mps]") {
+  sph::mps::Settings s;
+  CHECK_NOTHROW(s.validate());
+  CHECK(s.re_over_dx == 4.0);
+  CHECK(s.effective_radius() == Approx(4.0e-3).epsilon(1e-15));
+  CHECK(s.regularisation == sph::mps::Regularisation::consistent);
+  auto fails = [](auto change, const char* name) {
+    sph::mps::Settings bad;
+    change(bad);
+    CHECK_THROWS_WITH(bad.validate(), Contains(name) && Contains("allowed"));
+  };
+  fails([](sph::mps::Settings& b) { b.re_over_dx = 1.5; }, "re_over_dx");
+  fails([](sph::mps::Settings& b) { b.rest_density = 0.0; }, "rest_density");
+  fails([](sph::mps::Settings& b) { b.sound_speed = -1.0; }, "sound_speed");
+  fails([](sph::mps::Settings& b) { b.tait_gamma = 0.5; }, "tait_gamma");
+  fails([](sph::mps::Settings& b) { b.surface_beta = 0.5; }, "surface_beta");
+  fails([](sph::mps::Settings& b) { b.surface_beta = std::nan(""); }, "surface_beta");
+  fails([](sph::mps::Settings& b) { b.viscosity_cap = 0.0; }, "viscosity_cap");
+  sph::mps::Settings engine_bad;
+  engine_bad.particle_spacing = 0.0;
+  CHECK_THROWS_WITH(engine_bad.validate(), Contains("particle_spacing"));
+  CHECK(sph::mps::regularisation_from("as_printed") == sph::mps::Regularisation::as_printed);
+  CHECK(std::string(sph::mps::regularisation_key(sph::mps::regularisation_from("consistent"))) == "consistent");
+  CHECK_THROWS_WITH(sph::mps::regularisation_from("literal"), Contains("as_printed"));
+  sph::mps::HerschelBulkley mat;
+  CHECK_NOTHROW(mat.validate());
+  mat.flow_index = 0.0;
+  CHECK_THROWS_WITH(mat.validate(), Contains("flow_index"));
+}
+
+TEST_CASE("mps fields register once in the particle set", "[mps]") {
+  sph::ParticleSet set;
+  set.add(0.0, 0.0, 1.0, 1500.0, 0, sph::ParticleKind::soil);
+  const sph::mps::Fields a = sph::mps::Fields::register_in(set);
+  const sph::mps::Fields b = sph::mps::Fields::register_in(set);
+  CHECK(set.field_count() == 5);
+  CHECK(a.pressure == b.pressure);
+  CHECK(a.viscosity == b.viscosity);
+  CHECK(set.spec(a.pressure).checkpoint);
+  CHECK_FALSE(set.spec(a.number_density).checkpoint);
+  CHECK(set.field(a.free_surface).size() == 1);
+}
