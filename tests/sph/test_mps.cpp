@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <string>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "sph/engine/cell_sort.hpp"
@@ -35,8 +35,7 @@ struct Lattice {
   sph::CellSortedSet sorted;
   Lattice(int nx, int ny) {
     for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-        set.add((i + 0.5) * dx, (j + 0.5) * dx, 1.5e-3, 1500.0, 0, sph::ParticleKind::soil);
+      for (int i = 0; i < nx; ++i) set.add((i + 0.5) * dx, (j + 0.5) * dx, 1.5e-3, 1500.0, 0, sph::ParticleKind::soil);
     sorted.reserve(set);
     sorted.sort(set, re);
   }
@@ -44,8 +43,7 @@ struct Lattice {
   // The index (after the sort) of the particle in lattice column i, row j.
   std::size_t at(int i, int j) const {
     for (std::size_t k = 0; k < set.size(); ++k)
-      if (std::abs(set.x[k] - (i + 0.5) * dx) < 1e-3 * dx && std::abs(set.y[k] - (j + 0.5) * dx) < 1e-3 * dx)
-        return k;
+      if (std::abs(set.x[k] - (i + 0.5) * dx) < 1e-3 * dx && std::abs(set.y[k] - (j + 0.5) * dx) < 1e-3 * dx) return k;
     throw std::logic_error("no particle there");
   }
   template <class F>
@@ -100,8 +98,7 @@ TEST_CASE("mps n0 and lambda of the square lattice equal the direct sum at an in
   CHECK_THROWS_AS(sph::mps::lattice_constants(dx, 0.5 * dx), std::invalid_argument);
 }
 
-TEST_CASE("mps gradient of a linear field is exact at interior lattice particles and has the standard sign",
-          "[mps]") {
+TEST_CASE("mps gradient of a linear field is exact at interior lattice particles and has the standard sign", "[mps]") {
   const Lattice lat(25, 25);
   const double n0 = sph::mps::lattice_constants(dx, re).n0;
   // phi = 3 + 2000 x - 5000 y [Pa], x and y in m: grad phi = (2000, -5000) Pa/m

@@ -35,9 +35,8 @@ static void for_each_mps_neighbour(const Neighbourhood& nb, std::size_t i, F&& f
 
 double number_density(const Neighbourhood& nb, std::size_t i) {
   double n = 0;
-  for_each_mps_neighbour(nb, i, [&](std::size_t, double, double, double, double w) {
-    n += terms::number_density_share(w);
-  });
+  for_each_mps_neighbour(nb, i,
+                         [&](std::size_t, double, double, double, double w) { n += terms::number_density_share(w); });
   return n;
 }
 

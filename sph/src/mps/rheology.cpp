@@ -35,11 +35,10 @@ double yield_stress(const HerschelBulkley& material, double p_smoothed) {
 double effective_viscosity(const HerschelBulkley& material, double p_smoothed, double norm_d, Regularisation form,
                            double mu_cap) {
   const double tau_y = yield_stress(material, p_smoothed);
-  const double mu = form == Regularisation::as_printed
-                        ? terms::viscosity_as_printed(tau_y, norm_d, material.consistency, material.flow_index,
-                                                      material.growth)
-                        : terms::viscosity_consistent(tau_y, norm_d, material.consistency, material.flow_index,
-                                                      material.growth);
+  const double mu =
+      form == Regularisation::as_printed
+          ? terms::viscosity_as_printed(tau_y, norm_d, material.consistency, material.flow_index, material.growth)
+          : terms::viscosity_consistent(tau_y, norm_d, material.consistency, material.flow_index, material.growth);
   return terms::capped_viscosity(mu, mu_cap);
 }
 

@@ -42,8 +42,8 @@ void Settings::validate() const {
        "> 0 kg/m^3");
   need(std::isfinite(sound_speed) && sound_speed > 0, "sound_speed", sound_speed, "not a positive speed",
        "> 0 m/s, at least 10 x the largest flow speed");
-  need(std::isfinite(tait_gamma) && tait_gamma >= 1 && tait_gamma <= 10, "tait_gamma", tait_gamma,
-       "out of range", "1 to 10 (default 7)");
+  need(std::isfinite(tait_gamma) && tait_gamma >= 1 && tait_gamma <= 10, "tait_gamma", tait_gamma, "out of range",
+       "1 to 10 (default 7)");
   need(surface_beta >= min_surface_beta && surface_beta <= max_surface_beta, "surface_beta", surface_beta,
        "outside the paper's range", "0.80 to 0.99 (default 0.92)");
   need(std::isfinite(viscosity_cap) && viscosity_cap > 0, "viscosity_cap", viscosity_cap, "not a positive viscosity",

@@ -63,7 +63,9 @@ inline void add_strain_rate_share(StrainRate& s, double u_ij, double v_ij, doubl
 }
 
 // [M9] eq. 3 with A1: |D| = sqrt(II_D) = sqrt(D:D / 2) [1/s]; in simple shear at rate gdot, |D| = gdot / 2.
-inline double strain_rate_norm(const StrainRate& d) { return std::sqrt(0.5 * (d.xx * d.xx + d.yy * d.yy) + d.xy * d.xy); }
+inline double strain_rate_norm(const StrainRate& d) {
+  return std::sqrt(0.5 * (d.xx * d.xx + d.yy * d.yy) + d.xy * d.xy);
+}
 
 // [M10] A1: the engineering shear rate gdot = 2 |D| [1/s].
 inline double shear_rate(double norm_d) { return 2.0 * norm_d; }
