@@ -24,11 +24,11 @@ enum class Regularisation {
 
 struct Settings : EngineSettings {
   // r_e = 4.0 dx: the value of the paper's code lineage for weakly compressible 2-D runs (seed 2.3 and A12; the
-  // paper gives none). On the square lattice it gives n0 = 4.1983 and lambda = 2.7345 dx^2 and about 48 neighbours;
+  // paper gives none). On the square lattice it gives n0 = 4.1983 and lambda = 2.7345 dx^2 and 44 neighbours;
   // 3.1 dx (n0 = 2.2414) is the seed's alternative. Below 2 dx the first ring alone carries the operators.
   static constexpr double default_re_over_dx = 4.0;
   static constexpr double min_re_over_dx = 2.0;
-  static constexpr double max_re_over_dx = 6.0;  // beyond: > 110 neighbours per particle for no stated gain
+  static constexpr double max_re_over_dx = 6.0;  // beyond: > 108 neighbours per particle for no stated gain
   static constexpr double min_surface_beta = 0.80;  // the paper's range for beta (seed eq. 15)
   static constexpr double max_surface_beta = 0.99;
 
