@@ -81,6 +81,19 @@ terms::StrainRate strain_rate(const Neighbourhood& nb, std::size_t i, const doub
   return {c * s.xx, c * s.yy, c * s.xy};
 }
 
+Vector2 viscous_force(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, const double* mu,
+                      const LatticeConstants& lattice, InteractionViscosity interaction) {
+  const bool harmonic = interaction == InteractionViscosity::harmonic_mean;
+  Vector2 f;
+  for_each_mps_neighbour(nb, i, [&](std::size_t j, double, double, double, double w) {
+    const double mu_ij = harmonic ? terms::harmonic_mean_viscosity(mu[i], mu[j]) : mu[i];
+    f.x += terms::viscous_share(mu_ij, u[j] - u[i], w);
+    f.y += terms::viscous_share(mu_ij, v[j] - v[i], w);
+  });
+  const double c = terms::laplacian_prefactor(lattice.n0, lattice.lambda);
+  return {c * f.x, c * f.y};
+}
+
 double smoothed_pressure(const Neighbourhood& nb, std::size_t i, const double* p) {
   double sum_pw = 0, sum_w = 0;
   for_each_mps_neighbour(nb, i, [&](std::size_t j, double, double, double, double w) {

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sph/mps/terms.hpp"
+
 namespace sph::mps {
 
 Regularisation regularisation_from(const std::string& key) {
@@ -14,6 +16,25 @@ Regularisation regularisation_from(const std::string& key) {
 
 const char* regularisation_key(Regularisation r) {
   return r == Regularisation::as_printed ? "as_printed" : "consistent";
+}
+
+InteractionViscosity interaction_viscosity_from(const std::string& key) {
+  if (key == "harmonic_mean") return InteractionViscosity::harmonic_mean;
+  if (key == "own") return InteractionViscosity::own;
+  throw std::invalid_argument("mps interaction viscosity '" + key + "': expected \"harmonic_mean\" or \"own\"");
+}
+
+const char* interaction_viscosity_key(InteractionViscosity v) {
+  return v == InteractionViscosity::harmonic_mean ? "harmonic_mean" : "own";
+}
+
+std::string sound_speed_problem(double c0, double u_max) {
+  if (terms::sound_speed_sufficient(c0, u_max)) return {};
+  std::ostringstream s;
+  s << "mps: sound_speed = " << c0 << " m/s is below " << terms::sound_speed_factor << " x the largest flow speed ("
+    << u_max << " m/s): the density error exceeds about 1 %; allowed: at least " << terms::sound_speed_factor * u_max
+    << " m/s";
+  return s.str();
 }
 
 Settings::Settings() {
@@ -48,6 +69,7 @@ void Settings::validate() const {
        "outside the paper's range", "0.80 to 0.99 (default 0.92)");
   need(std::isfinite(viscosity_cap) && viscosity_cap > 0, "viscosity_cap", viscosity_cap, "not a positive viscosity",
        "> 0 Pa s (default 200)");
+  need(cfl <= 1.0, "cfl", cfl, "above the stability limit of eq. 30's C_r", "(0, 1] (default 0.2; seed 0.1-0.25)");
   need(end_time > 0, "end_time", end_time, "not positive", "> 0 s");
 }
 

@@ -8,6 +8,7 @@
 
 #include "sph/engine/cell_sort.hpp"
 #include "sph/engine/particle_set.hpp"
+#include "sph/mps/settings.hpp"
 #include "sph/mps/terms.hpp"
 
 namespace sph::mps {
@@ -51,6 +52,12 @@ double laplacian(const Neighbourhood& nb, std::size_t i, const double* phi, cons
 
 // [M8] D_i = (grad u + grad u^T)/2 by the MPS gradient of each velocity component [1/s].
 terms::StrainRate strain_rate(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, double n0);
+
+// [M20, M21] the direct stress divergence of seed eq. 22, <div tau>_i = (2d/(lambda n0)) sum_j mu_ij (u_j - u_i)
+// w_ij [N/m^3] for the velocity (u, v) [m/s] and the particle viscosities mu [Pa s], with mu_ij the harmonic mean
+// or mu_i (settings.interaction_viscosity). Divide by rho_i for the acceleration.
+Vector2 viscous_force(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, const double* mu,
+                      const LatticeConstants& lattice, InteractionViscosity interaction);
 
 // [M14] p'_i = sum_{j != i} p_j w_ij / sum_{j != i} w_ij [Pa] (Shepard, A4), not clamped (the yield stress clamps
 // it); 0 for a particle without neighbours.

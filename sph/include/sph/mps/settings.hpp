@@ -22,6 +22,12 @@ enum class Regularisation {
   consistent,
 };
 
+// The viscosity of a pair in the stress divergence (seed section 6-2, Figs 8-9).
+enum class InteractionViscosity {
+  harmonic_mean,  // "harmonic_mean" (default): mu_ij = 2 mu_i mu_j / (mu_i + mu_j), eq. 22
+  own,  // "own": mu_ij = mu_i (the paper's comparison; steeper deposits)
+};
+
 struct Settings : EngineSettings {
   // r_e = 4.0 dx: the value of the paper's code lineage for weakly compressible 2-D runs (seed 2.3 and A12; the
   // paper gives none). On the square lattice it gives n0 = 4.1983 and lambda = 2.7345 dx^2 and 44 neighbours;
@@ -45,6 +51,8 @@ struct Settings : EngineSettings {
   // code lineage's 200 Pa s; its sensitivity is to be studied (issue 12, the stability matrix)
   double viscosity_cap = 200.0;
   Regularisation regularisation = Regularisation::consistent;  // A2
+  InteractionViscosity interaction_viscosity = InteractionViscosity::harmonic_mean;
+  // The engine's `cfl` (default 0.2) is the C_r of eq. 30 (the seed: 0.1-0.25); allowed (0, 1] here.
 
   double effective_radius() const { return re_over_dx * particle_spacing; }  // r_e [m]
 
@@ -56,5 +64,12 @@ struct Settings : EngineSettings {
 // "as_printed" / "consistent". Throws std::invalid_argument on other names.
 Regularisation regularisation_from(const std::string& key);
 const char* regularisation_key(Regularisation r);
+// "harmonic_mean" / "own". Throws std::invalid_argument on other names.
+InteractionViscosity interaction_viscosity_from(const std::string& key);
+const char* interaction_viscosity_key(InteractionViscosity v);
+
+// The sound-speed rule c0 >= 10 |u|max (seed section 4-2): empty when it holds, else a message naming
+// sound_speed, the flow speed and the least c0 that satisfies it.
+std::string sound_speed_problem(double c0, double u_max);
 
 }  // namespace sph::mps

@@ -122,4 +122,29 @@ inline double viscosity_ideal(double tau_y, double gdot, double mu0, double n_in
 // [M19] seed A3: the viscosity cap, mu = min(mu, mu_cap) [Pa s] (mu_cap also where the law is infinite, |D| = 0).
 inline double capped_viscosity(double mu, double mu_cap) { return std::min(mu, mu_cap); }
 
+// [M20] section 6-2: the interaction viscosity of a pair, the harmonic mean mu_ij = 2 mu_i mu_j / (mu_i + mu_j)
+// (default; mu_ij <= 2 min(mu_i, mu_j), 0 if either is 0), or the particle's own mu_i (the paper's comparison,
+// Figs 8-9) [Pa s].
+inline double harmonic_mean_viscosity(double mu_i, double mu_j) {
+  const double sum = mu_i + mu_j;
+  return sum > 0 ? 2.0 * mu_i * mu_j / sum : 0.0;
+}
+
+// [M21] eq. 22, the direct stress divergence: <div tau>_i = (2d/(lambda n0)) sum_j mu_ij (u_j - u_i) w_ij
+// [N/m^3]; this is the pair's share mu_ij (u_j - u_i) w_ij of one velocity component (the paper's
+// (4D/(lambda n0)) sum mu_i mu_j/(mu_i + mu_j) (...) is the same with the harmonic mean).
+inline double viscous_share(double mu_ij, double u_ij, double w) { return mu_ij * u_ij * w; }
+
+// [M22] eq. 30 with A9 (|u|_max, not the printed |mu|_max): dt = C_r min(dl / (c0 + |u|max), rho dl^2 / (2 d
+// mu_max)) [s]; no viscous limit when mu_max <= 0.
+inline double time_step(double courant, double dl, double c0, double u_max, double rho, double mu_max) {
+  const double acoustic = dl / (c0 + u_max);
+  const double viscous = mu_max > 0 ? rho * dl * dl / (2.0 * dimensions * mu_max) : HUGE_VAL;
+  return courant * std::min(acoustic, viscous);
+}
+
+// [M23] section 4-2 (Dalrymple & Rogers 2006): the density varies by less than about 1 % when c0 >= 10 |u|max.
+inline constexpr double sound_speed_factor = 10.0;
+inline bool sound_speed_sufficient(double c0, double u_max) { return c0 >= sound_speed_factor * u_max; }
+
 }  // namespace sph::mps::terms
