@@ -271,6 +271,62 @@ TEST_CASE("mps the two forms of the regularisation differ as documented (ambigui
   CHECK(terms::capped_viscosity(std::numeric_limits<double>::infinity(), 200.0) == 200.0);
 }
 
+TEST_CASE("mps viscous force of eq. 22 with a uniform viscosity is mu times the Laplacian of the velocity", "[mps]") {
+  const Lattice lat(25, 25);
+  const sph::mps::LatticeConstants c = sph::mps::lattice_constants(dx, re);
+  // u = 50 (x^2 + y^2), v = -20 x^2 [m/s], x in m: lap u = 200, lap v = -40 [1/(m s)]; mu = 3 Pa s
+  const std::vector<double> u = lat.sample([](double x, double y) { return 50.0 * (x * x + y * y); });
+  const std::vector<double> v = lat.sample([](double x, double) { return -20.0 * x * x; });
+  const std::vector<double> mu(lat.set.size(), 3.0);
+  for (const auto mode : {sph::mps::InteractionViscosity::harmonic_mean, sph::mps::InteractionViscosity::own}) {
+    const sph::mps::Vector2 f =
+        sph::mps::viscous_force(lat.neighbourhood(), lat.at(12, 12), u.data(), v.data(), mu.data(), c, mode);
+    CHECK(f.x == Approx(600.0).epsilon(1e-9));  // [N/m^3]
+    CHECK(f.y == Approx(-120.0).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("mps harmonic-mean interaction viscosity keeps a near-rigid particle from driving its neighbours", "[mps]") {
+  CHECK(terms::harmonic_mean_viscosity(1.0, 1.0) == 1.0);
+  CHECK(terms::harmonic_mean_viscosity(1.0, 3.0) == Approx(1.5).epsilon(1e-15));
+  CHECK(terms::harmonic_mean_viscosity(0.0, 5.0) == 0.0);
+  CHECK(terms::harmonic_mean_viscosity(0.0, 0.0) == 0.0);
+  CHECK(terms::harmonic_mean_viscosity(200.0, 1e-3) < 2e-3);  // <= 2 min(mu_i, mu_j)
+  // a particle at the cap (200 Pa s) among water-like neighbours (1e-3 Pa s): the pair viscosity is
+  // 2 * 200 * 1e-3 / 200.001 for every pair, so the force is that times the Laplacian; with mu_ij = mu_i it is
+  // 200 times the Laplacian, 1e5 times larger
+  const Lattice lat(25, 25);
+  const sph::mps::LatticeConstants c = sph::mps::lattice_constants(dx, re);
+  const std::vector<double> u = lat.sample([](double x, double) { return 50.0 * x * x; });  // lap u = 100
+  const std::vector<double> v(lat.set.size(), 0.0);
+  std::vector<double> mu(lat.set.size(), 1e-3);
+  const std::size_t i = lat.at(12, 12);
+  mu[i] = 200.0;
+  const auto nb = lat.neighbourhood();
+  const double harmonic =
+      sph::mps::viscous_force(nb, i, u.data(), v.data(), mu.data(), c, sph::mps::InteractionViscosity::harmonic_mean).x;
+  const double own =
+      sph::mps::viscous_force(nb, i, u.data(), v.data(), mu.data(), c, sph::mps::InteractionViscosity::own).x;
+  CHECK(harmonic == Approx(100.0 * 2.0 * 200.0 * 1e-3 / 200.001).epsilon(1e-9));
+  CHECK(own == Approx(100.0 * 200.0).epsilon(1e-9));
+}
+
+TEST_CASE("mps time step of eq. 30 takes the smaller of the acoustic and viscous limits", "[mps]") {
+  const double cr = 0.2, dl = 1e-3, c0 = 20.0, u_max = 1.1, rho = 1500.0;  // [-], [m], [m/s], [m/s], [kg/m^3]
+  // viscous: rho dl^2 / (2 d mu_max) = 1500e-6 / 800 = 1.875e-6 s at the 200 Pa s cap (acoustic: 4.74e-5 s)
+  CHECK(terms::time_step(cr, dl, c0, u_max, rho, 200.0) == Approx(0.2 * 1.875e-6).epsilon(1e-14));
+  // water-like viscosity: the acoustic limit dl / (c0 + |u|max) = 1e-3 / 21.1 s governs
+  CHECK(terms::time_step(cr, dl, c0, u_max, rho, 1e-3) == Approx(0.2 * 1e-3 / 21.1).epsilon(1e-14));
+  CHECK(terms::time_step(cr, dl, c0, u_max, rho, 0.0) == Approx(0.2 * 1e-3 / 21.1).epsilon(1e-14));
+}
+
+TEST_CASE("mps sound speed must be at least 10 times the largest flow speed", "[mps]") {
+  CHECK(sph::mps::sound_speed_problem(20.0, 2.0).empty());
+  CHECK(sph::mps::sound_speed_problem(20.0, 1.1).empty());
+  const std::string message = sph::mps::sound_speed_problem(20.0, 2.5);
+  CHECK_THAT(message, Contains("sound_speed = 20") && Contains("2.5 m/s") && Contains("at least 25 m/s"));
+}
+
 TEST_CASE("mps settings validate and name the setting that is wrong", "[mps]") {
   sph::mps::Settings s;
   CHECK_NOTHROW(s.validate());
@@ -289,12 +345,17 @@ TEST_CASE("mps settings validate and name the setting that is wrong", "[mps]") {
   fails([](sph::mps::Settings& b) { b.surface_beta = 0.5; }, "surface_beta");
   fails([](sph::mps::Settings& b) { b.surface_beta = std::nan(""); }, "surface_beta");
   fails([](sph::mps::Settings& b) { b.viscosity_cap = 0.0; }, "viscosity_cap");
+  fails([](sph::mps::Settings& b) { b.cfl = 1.5; }, "cfl");
   sph::mps::Settings engine_bad;
   engine_bad.particle_spacing = 0.0;
   CHECK_THROWS_WITH(engine_bad.validate(), Contains("particle_spacing"));
   CHECK(sph::mps::regularisation_from("as_printed") == sph::mps::Regularisation::as_printed);
   CHECK(std::string(sph::mps::regularisation_key(sph::mps::regularisation_from("consistent"))) == "consistent");
   CHECK_THROWS_WITH(sph::mps::regularisation_from("literal"), Contains("as_printed"));
+  CHECK(sph::mps::interaction_viscosity_from("own") == sph::mps::InteractionViscosity::own);
+  CHECK(std::string(sph::mps::interaction_viscosity_key(sph::mps::InteractionViscosity::harmonic_mean)) ==
+        "harmonic_mean");
+  CHECK_THROWS_WITH(sph::mps::interaction_viscosity_from("arithmetic"), Contains("harmonic_mean"));
   sph::mps::HerschelBulkley mat;
   CHECK_NOTHROW(mat.validate());
   mat.flow_index = 0.0;
