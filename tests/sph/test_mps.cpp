@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <random>
@@ -17,6 +18,7 @@
 
 #include "sph/engine/cell_sort.hpp"
 #include "sph/engine/neighbours.hpp"
+#include "sph/mps/effective_pressure.hpp"
 #include "sph/mps/fields.hpp"
 #include "sph/mps/operators.hpp"
 #include "sph/mps/rheology.hpp"
@@ -341,6 +343,40 @@ TEST_CASE("mps sound speed must be at least 10 times the largest flow speed", "[
   CHECK(sph::mps::sound_speed_problem(20.0, 1.1).empty());
   const std::string message = sph::mps::sound_speed_problem(20.0, 2.5);
   CHECK_THAT(message, Contains("sound_speed = 20") && Contains("2.5 m/s") && Contains("at least 25 m/s"));
+}
+
+TEST_CASE("mps static effective pressure of eqs. 18-19 is rho_b g times the depth below the granular surface",
+          "[mps]") {
+  // a staircase heap: column k (x = (k + 1/2) dx) holds 20 - k particles, k = 0..9
+  sph::ParticleSet set;
+  for (int k = 0; k < 10; ++k)
+    for (int j = 0; j < 20 - k; ++j)
+      set.add((k + 0.5) * dx, (j + 0.5) * dx, 1.5e-3, 1500.0, 0, sph::ParticleKind::soil);
+  auto index = [&](int k, int j) {
+    for (std::size_t i = 0; i < set.size(); ++i)
+      if (std::abs(set.x[i] - (k + 0.5) * dx) < 1e-9 && std::abs(set.y[i] - (j + 0.5) * dx) < 1e-9) return i;
+    throw std::logic_error("no particle there");
+  };
+  const std::vector<std::uint8_t> all(set.size(), 1);
+  // a strip narrower than the spacing sees the particle's own column: h = (19 - k - j) dx
+  const std::vector<double> own = sph::mps::depth_below_surface(set, all, 0.5 * dx);
+  CHECK(own[index(0, 0)] == Approx(19 * dx).epsilon(1e-12));
+  CHECK(own[index(4, 3)] == Approx(12 * dx).epsilon(1e-12));
+  CHECK(own[index(9, 10)] == 0.0);  // the top of its column
+  // 1.5 dx reaches the next columns: the taller left neighbour sets the surface, h = (20 - k - j) dx for k >= 1
+  const std::vector<double> wide = sph::mps::depth_below_surface(set, all, 1.5 * dx);
+  CHECK(wide[index(0, 0)] == Approx(19 * dx).epsilon(1e-12));
+  CHECK(wide[index(4, 3)] == Approx(13 * dx).epsilon(1e-12));
+  CHECK(wide[index(9, 10)] == Approx(dx).epsilon(1e-12));
+  // only the rows below 8 define the granular surface (e.g. water above): h = (7 - j) dx, 0 above
+  std::vector<std::uint8_t> lower(set.size(), 0);
+  for (std::size_t i = 0; i < set.size(); ++i) lower[i] = set.y[i] < 8 * dx;
+  const std::vector<double> bed = sph::mps::depth_below_surface(set, lower, 0.5 * dx);
+  CHECK(bed[index(2, 0)] == Approx(7 * dx).epsilon(1e-12));
+  CHECK(bed[index(2, 12)] == 0.0);
+  // eq. 18 at the base of the first column: 1500 kg/m^3 * 9.81 m/s^2 * 0.019 m = 279.585 Pa
+  CHECK(sph::mps::hydrostatic_pressure(1500.0, 9.81, own[index(0, 0)]) == Approx(279.585).epsilon(1e-12));
+  CHECK_THROWS_AS(sph::mps::depth_below_surface(set, std::vector<std::uint8_t>(3, 1), dx), std::invalid_argument);
 }
 
 TEST_CASE("mps settings validate and name the setting that is wrong", "[mps]") {
