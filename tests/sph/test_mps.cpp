@@ -377,6 +377,9 @@ TEST_CASE("mps static effective pressure of eqs. 18-19 is rho_b g times the dept
   // eq. 18 at the base of the first column: 1500 kg/m^3 * 9.81 m/s^2 * 0.019 m = 279.585 Pa
   CHECK(sph::mps::hydrostatic_pressure(1500.0, 9.81, own[index(0, 0)]) == Approx(279.585).epsilon(1e-12));
   CHECK_THROWS_AS(sph::mps::depth_below_surface(set, std::vector<std::uint8_t>(3, 1), dx), std::invalid_argument);
+  sph::ParticleSet far = set;
+  far.x[0] = 1.0e5;  // 100 km away
+  CHECK_THROWS_WITH(sph::mps::depth_below_surface(far, all, dx), Contains("too many strips"));
 }
 
 TEST_CASE("mps settings validate and name the setting that is wrong", "[mps]") {

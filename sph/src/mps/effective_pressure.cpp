@@ -6,6 +6,10 @@
 
 namespace sph::mps {
 
+namespace {
+constexpr long max_strips = 10'000'000;  // 10 km of domain at 1 mm
+}  // namespace
+
 std::vector<double> depth_below_surface(const ParticleSet& set, const std::vector<std::uint8_t>& surface,
                                         double strip_half_width) {
   const std::size_t n = set.size();
@@ -15,8 +19,10 @@ std::vector<double> depth_below_surface(const ParticleSet& set, const std::vecto
   if (n == 0) return depth;
   const double x_min = *std::min_element(set.x.begin(), set.x.end());
   auto strip_of = [&](double x) { return static_cast<long>(std::floor((x - x_min) / strip_half_width)); };
-  std::vector<std::vector<std::size_t>> strips(
-      static_cast<std::size_t>(strip_of(*std::max_element(set.x.begin(), set.x.end()))) + 1);
+  const long strip_count = strip_of(*std::max_element(set.x.begin(), set.x.end())) + 1;
+  // a particle thrown far away would make a dense strip table huge: refuse rather than allocate gigabytes
+  if (strip_count > max_strips) throw std::invalid_argument("depth_below_surface: the particles span too many strips");
+  std::vector<std::vector<std::size_t>> strips(static_cast<std::size_t>(strip_count));
   for (std::size_t j = 0; j < n; ++j)
     if (surface[j]) strips[static_cast<std::size_t>(strip_of(set.x[j]))].push_back(j);
   const long last = static_cast<long>(strips.size()) - 1;
