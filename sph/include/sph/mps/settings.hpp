@@ -52,6 +52,8 @@ struct Settings : EngineSettings {
   double viscosity_cap = 200.0;
   Regularisation regularisation = Regularisation::consistent;  // A2
   InteractionViscosity interaction_viscosity = InteractionViscosity::harmonic_mean;
+  // alpha of eqs. 28-29 (A23): the share of the pressure force taken at the new time level, "typically 0.5"
+  double pressure_split = 0.5;
   // The engine's `cfl` (default 0.2) is the C_r of eq. 30 (the seed: 0.1-0.25); allowed (0, 1] here.
 
   double effective_radius() const { return re_over_dx * particle_spacing; }  // r_e [m]

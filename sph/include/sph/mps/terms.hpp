@@ -143,6 +143,23 @@ inline double time_step(double courant, double dl, double c0, double u_max, doub
   return courant * std::min(acoustic, viscous);
 }
 
+// [M26] eq. 28, the predictor (one velocity component): u* = u^m + (dt/rho_i) (f + <div tau>^m - (1 - alpha)
+// <grad p>^m) [m/s], with f the body force per unit volume rho_i g [N/m^3] and alpha the pressure split (the
+// relaxation factor of eqs. 28-29, named pressure_split in the settings: A23).
+inline double predicted_velocity(double u, double dt, double rho, double body_force, double viscous, double grad_p,
+                                 double pressure_split) {
+  return u + dt / rho * (body_force + viscous - (1.0 - pressure_split) * grad_p);
+}
+
+// [M27] eq. 29, the corrector: u' = -alpha (dt/rho_i) <grad p>^{m+1}, with p^{m+1} from the EOS at the predicted
+// positions r* = r^m + u* dt; then u^{m+1} = u* + u' (eq. 27) [m/s].
+inline double velocity_correction(double dt, double rho, double grad_p_new, double pressure_split) {
+  return -pressure_split * dt / rho * grad_p_new;
+}
+
+// [M28] A24: the new position from the old one and the new velocity, r^{m+1} = r^m + u^{m+1} dt [m] (not from r*).
+inline double new_position(double x_old, double u_new, double dt) { return x_old + u_new * dt; }
+
 // [M23] section 4-2 (Dalrymple & Rogers 2006): the density varies by less than about 1 % when c0 >= 10 |u|max.
 inline constexpr double sound_speed_factor = 10.0;
 inline bool sound_speed_sufficient(double c0, double u_max) { return c0 >= sound_speed_factor * u_max; }
