@@ -382,6 +382,29 @@ TEST_CASE("mps static effective pressure of eqs. 18-19 is rho_b g times the dept
   CHECK_THROWS_WITH(sph::mps::depth_below_surface(far, all, dx), Contains("too many strips"));
 }
 
+TEST_CASE("mps predictor and corrector split the pressure force by alpha and move from the old position", "[mps]") {
+  const double u = 0.4, dt = 1e-4, rho = 1500.0, f = -1500.0 * 9.81, visc = 300.0, g_old = -2.0e4, g_new = -1.0e4;
+  for (const double alpha : {0.0, 0.5, 1.0}) {
+    // unchanged pressure gradient: the two halves add to the full force whatever alpha
+    const double same = terms::predicted_velocity(u, dt, rho, f, visc, g_old, alpha) +
+                        terms::velocity_correction(dt, rho, g_old, alpha);
+    CHECK(same == Approx(u + dt / rho * (f + visc - g_old)).epsilon(1e-14));
+    // changed: (1 - alpha) of the old and alpha of the new gradient
+    const double split = terms::predicted_velocity(u, dt, rho, f, visc, g_old, alpha) +
+                         terms::velocity_correction(dt, rho, g_new, alpha);
+    CHECK(split == Approx(u + dt / rho * (f + visc - (1 - alpha) * g_old - alpha * g_new)).epsilon(1e-14));
+  }
+  CHECK(terms::velocity_correction(dt, rho, g_new, 0.0) == 0.0);
+  // A24: a free particle under gravity alone, k steps: u_k = k g dt, y_k = y_0 + g dt^2 k (k + 1) / 2
+  double y = 0.1, v = 0.0;
+  for (int k = 0; k < 100; ++k) {
+    v = terms::predicted_velocity(v, dt, rho, f, 0.0, 0.0, 0.5) + terms::velocity_correction(dt, rho, 0.0, 0.5);
+    y = terms::new_position(y, v, dt);
+  }
+  CHECK(v == Approx(-9.81 * 100 * dt).epsilon(1e-12));
+  CHECK(y == Approx(0.1 - 9.81 * dt * dt * 100 * 101 / 2).epsilon(1e-12));
+}
+
 TEST_CASE("mps settings validate and name the setting that is wrong", "[mps]") {
   sph::mps::Settings s;
   CHECK_NOTHROW(s.validate());
@@ -401,6 +424,7 @@ TEST_CASE("mps settings validate and name the setting that is wrong", "[mps]") {
   fails([](sph::mps::Settings& b) { b.surface_beta = std::nan(""); }, "surface_beta");
   fails([](sph::mps::Settings& b) { b.viscosity_cap = 0.0; }, "viscosity_cap");
   fails([](sph::mps::Settings& b) { b.cfl = 1.5; }, "cfl");
+  fails([](sph::mps::Settings& b) { b.pressure_split = 1.5; }, "pressure_split");
   sph::mps::Settings engine_bad;
   engine_bad.particle_spacing = 0.0;
   CHECK_THROWS_WITH(engine_bad.validate(), Contains("particle_spacing"));
