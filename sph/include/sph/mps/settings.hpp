@@ -54,6 +54,9 @@ struct Settings : EngineSettings {
   InteractionViscosity interaction_viscosity = InteractionViscosity::harmonic_mean;
   // alpha of eqs. 28-29 (A23): the share of the pressure force taken at the new time level, "typically 0.5"
   double pressure_split = 0.5;
+  // The pressure gradient of the stepper: false = the plain difference p_j - p_i of eq. 24 (as printed); true =
+  // p_j - min(p_i, p_j over the neighbours) (Koshizuka & Oka 1996: every pair repels; docs/mps.md decision S3)
+  bool pressure_gradient_minimum = true;
   // The engine's `cfl` (default 0.2) is the C_r of eq. 30 (the seed: 0.1-0.25); allowed (0, 1] here.
 
   double effective_radius() const { return re_over_dx * particle_spacing; }  // r_e [m]

@@ -1,0 +1,56 @@
+#pragma once
+// A WC-MPS model (issue 12; docs/mps.md): the particle set (moving particles of kind 0, fixed wall particles of
+// kind 1, the outer wall layers marked as dummy particles), its run state, the settings, the materials and the MPS
+// state block; and the builders that fill it. Single phase: every particle has the settings' rest density rho0.
+// SI units, 2-D.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "sph/engine/particle_set.hpp"
+#include "sph/engine/stepper.hpp"
+#include "sph/mps/fields.hpp"
+#include "sph/mps/rheology.hpp"
+#include "sph/mps/settings.hpp"
+
+namespace sph::mps {
+
+// What a particle's viscosity follows.
+struct Material {
+  enum class Type { water, granular };
+  Type type = Type::water;
+  double viscosity = 1.0e-3;  // [Pa s] constant viscosity of the water type (water at 20 C)
+  HerschelBulkley granular;  // the regularised Herschel-Bulkley law of the granular type (rheology.hpp)
+
+  static Material water(double mu = 1.0e-3);
+  static Material granular_material(const HerschelBulkley& hb = {});
+  // Throws std::invalid_argument naming the parameter when a value is out of its range.
+  void validate() const;
+};
+
+struct Model {
+  // Validates the settings and the materials (at least one). Throws std::invalid_argument.
+  Model(const Settings& s, std::vector<Material> m);
+  Settings settings;
+  std::vector<Material> materials;
+  ParticleSet particles;
+  RunState state;
+  Fields fields;
+  FieldId dummy;  // 1 for the dummy wall particles (number density only), else 0 (checkpointed)
+
+  Arrays arrays() { return Arrays(particles, fields); }
+  double moving_mass() const;  // [kg/m]
+  double particle_mass() const { return settings.rest_density * settings.particle_spacing * settings.particle_spacing; }
+};
+
+// Moving particles on the cell-centred lattice (anchor at the origin) inside [x_min, x_max] x [y_min, y_max], at
+// rest, mass rho0 dx^2, of material `material`. Returns the count.
+std::size_t add_block(Model& model, double x_min, double y_min, double x_max, double y_max, std::uint16_t material);
+
+// Fixed wall particles around the box [x_min, x_max] x [y_min, y_min + height] (bottom and both sides): ceil(r_e/dx)
+// layers (seed 2.7: the dummy layers cover r_e). The layer next to the box is made of wall particles (EOS pressure
+// on their own number density); the outer layers are dummy particles (number density and viscous term only,
+// pressure 0, out of the pressure gradient). Returns the count of all of them.
+std::size_t add_box(Model& model, double x_min, double x_max, double y_min, double height, std::uint16_t material);
+
+}  // namespace sph::mps

@@ -1,0 +1,58 @@
+#pragma once
+// One time step of the WC-MPS (seed 2.11, eqs. 27-30), on the engine's Stepper interface:
+//   a  sort by cells of side r_e at r^m
+//   b  p' = Shepard-smoothed p^m (eq. 20, clamped >= 0), the strain rate D (eq. 17)
+//   c  mu_i: the material's constant viscosity (water) or the capped regularised Herschel-Bulkley law (granular)
+//   d  <div tau>^m (eq. 22) and <grad p>^m (eq. 24)
+//   e  u* = u^m + (dt/rho0)(rho0 g + <div tau>^m - (1 - alpha) <grad p>^m) (eq. 28); r* = r^m + u* dt
+//   f  sort at r*; n*; p^{m+1} = Tait(n*), 0 at the free surface n* <= beta n0 (eqs. 13, 15)
+//   g  u^{m+1} = u* - alpha (dt/rho0) <grad p>^{m+1} (eqs. 27, 29)
+//   h  r^{m+1} = r^m + u^{m+1} dt (A24)
+// Wall particles (kind wall) are fixed, at zero velocity (no-slip); the layer next to the flow carries the EOS
+// pressure of its own number density, the outer (dummy) layers only complete the number density and the viscous
+// sums (pressure 0, out of the pressure gradient). docs/mps.md gives the decisions.
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "sph/engine/stepper.hpp"
+#include "sph/mps/model.hpp"
+#include "sph/mps/operators.hpp"
+
+namespace sph::mps {
+
+class Step : public Stepper {
+ public:
+  explicit Step(Model& model);
+  ~Step() override;
+  Step(const Step&) = delete;
+  Step& operator=(const Step&) = delete;
+
+  void initialise() override;
+  // eq. 30: C_r min(dx/(c0 + |u|max), rho0 dx^2/(2 d mu_max)), |u|max and mu_max over the moving particles.
+  double stable_time_step() const override;
+  void advance(double dt) override;
+  Energies energies() const override;
+  Health check_health() const override;
+
+  const LatticeConstants& lattice() const { return lattice_; }
+
+  struct Impl;
+
+ private:
+  Neighbourhood neighbourhood() const;
+  void sort();
+  void viscosities();
+  void predict(double dt);
+  void equation_of_state();
+  void correct(double dt);
+  Vector2 pressure_gradient(std::size_t i, const double* p) const;
+  double gravity_x() const;
+  double gravity_y() const;
+
+  Model& model_;
+  LatticeConstants lattice_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sph::mps

@@ -1,0 +1,82 @@
+#include "sph/mps/model.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "sph/engine/fill.hpp"
+
+namespace sph::mps {
+
+Material Material::water(double mu) {
+  Material m;
+  m.type = Type::water;
+  m.viscosity = mu;
+  return m;
+}
+
+Material Material::granular_material(const HerschelBulkley& hb) {
+  Material m;
+  m.type = Type::granular;
+  m.granular = hb;
+  return m;
+}
+
+void Material::validate() const {
+  if (type == Type::granular) {
+    granular.validate();
+    return;
+  }
+  if (!(viscosity >= 0) || !std::isfinite(viscosity))
+    throw std::invalid_argument("mps material: viscosity = " + std::to_string(viscosity) +
+                                " Pa s is not allowed; allowed: a finite value >= 0");
+}
+
+Model::Model(const Settings& s, std::vector<Material> m)
+    : settings(s), materials(std::move(m)), fields(Fields::register_in(particles)) {
+  settings.validate();
+  if (materials.empty()) throw std::invalid_argument("mps model: materials is empty; allowed: at least one");
+  for (const Material& mat : materials) mat.validate();
+  dummy = particles.add_field({"dummy", true, true});
+}
+
+double Model::moving_mass() const {
+  double m = 0;
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    if (particles.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil)) m += particles.mass[i];
+  return m;
+}
+
+std::size_t add_block(Model& model, double x_min, double y_min, double x_max, double y_max, std::uint16_t material) {
+  if (material >= model.materials.size()) throw std::invalid_argument("mps add_block: no such material");
+  const double dx = model.settings.particle_spacing;
+  const auto points = lattice_points_in_region(x_min, y_min, x_max, y_max, dx, [](double, double) { return true; });
+  model.particles.reserve(model.particles.size() + points.size());
+  for (const Point& p : points)
+    model.particles.add(p.x, p.y, model.particle_mass(), model.settings.rest_density, material, ParticleKind::soil);
+  return points.size();
+}
+
+std::size_t add_box(Model& model, double x_min, double x_max, double y_min, double height, std::uint16_t material) {
+  if (material >= model.materials.size()) throw std::invalid_argument("mps add_box: no such material");
+  const double dx = model.settings.particle_spacing;
+  BoxWalls box;
+  box.x_min = x_min;
+  box.x_max = x_max;
+  box.y_min = y_min;
+  box.height = height;
+  box.layers = 0;  // ceil(2h/dx) with h = r_e/2: ceil(r_e/dx) layers
+  const std::size_t first = model.particles.size();
+  const std::size_t count = add_box_walls(model.particles, box, dx, 0.5 * model.settings.effective_radius(),
+                                          material, model.settings.rest_density);
+  ParticleSet& p = model.particles;
+  std::vector<double>& dummy = p.field(model.dummy);
+  for (std::size_t i = first; i < p.size(); ++i) {
+    const bool outer = p.y[i] < y_min - dx || p.x[i] < x_min - dx || p.x[i] > x_max + dx;
+    dummy[i] = outer ? 1.0 : 0.0;
+  }
+  return count;
+}
+
+}  // namespace sph::mps

@@ -1,0 +1,236 @@
+#include "sph/mps/stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "sph/engine/cell_sort.hpp"
+#include "sph/engine/neighbours.hpp"
+#include "sph/mps/terms.hpp"
+
+namespace sph::mps {
+
+namespace {
+constexpr std::uint8_t kMoving = static_cast<std::uint8_t>(ParticleKind::soil);
+}  // namespace
+
+struct Step::Impl {
+  CellSortedSet sorted;
+  FieldId x_start = 0, y_start = 0;  // r^m during a step [m] (workspace, reordered with the set)
+  std::vector<double> fx, fy;  // the non-pressure forces of the predictor [N/m^3]
+};
+
+Step::Step(Model& model) : model_(model), impl_(std::make_unique<Impl>()) {
+  model.settings.validate();
+  lattice_ = lattice_constants(model.settings.particle_spacing, model.settings.effective_radius());
+  impl_->x_start = model.particles.add_field({"mps_x_start", false, false});
+  impl_->y_start = model.particles.add_field({"mps_y_start", false, false});
+}
+
+Step::~Step() = default;
+
+double Step::gravity_x() const { return model_.settings.gravity_factor(model_.state.time) * model_.settings.gravity_x; }
+double Step::gravity_y() const { return model_.settings.gravity_factor(model_.state.time) * model_.settings.gravity_y; }
+
+Neighbourhood Step::neighbourhood() const {
+  return {impl_->sorted, model_.particles, model_.settings.effective_radius()};
+}
+
+void Step::sort() { impl_->sorted.sort(model_.particles, model_.settings.effective_radius()); }
+
+void Step::initialise() {
+  ParticleSet& p = model_.particles;
+  impl_->sorted.reserve(p);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] != kMoving) p.vx[i] = p.vy[i] = 0.0;  // walls are fixed
+  sort();
+  viscosities();  // mu of the current state, for the first time step
+  model_.state.rates_valid = true;  // the carried state is p^m (checkpointed) and the positions and velocities
+}
+
+// Steps b and c at r^m: p' (Shepard, clamped >= 0) from p^m, then each particle's viscosity by its material.
+void Step::viscosities() {
+  ParticleSet& p = model_.particles;
+  const Arrays a = model_.arrays();
+  const Settings& st = model_.settings;
+  const Neighbourhood nb = neighbourhood();
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    a.smoothed_pressure[i] = std::max(smoothed_pressure(nb, i, a.pressure), 0.0);
+    const Material& mat = model_.materials[std::min<std::size_t>(p.material[i], model_.materials.size() - 1)];
+    if (mat.type == Material::Type::water) {
+      a.viscosity[i] = mat.viscosity;
+      continue;
+    }
+    const double norm_d = terms::strain_rate_norm(strain_rate(nb, i, p.vx.data(), p.vy.data(), lattice_.n0));
+    a.viscosity[i] =
+        effective_viscosity(mat.granular, a.smoothed_pressure[i], norm_d, st.regularisation, st.viscosity_cap);
+  }
+}
+
+// [M4] eq. 24 over the particles that carry pressure (moving and wall particles; dummy particles are left out).
+Vector2 Step::pressure_gradient(std::size_t i, const double* p) const {
+  const Neighbourhood nb = neighbourhood();
+  const double* dummy = model_.particles.field(model_.dummy).data();
+  Vector2 g;
+  double base = p[i];
+  if (model_.settings.pressure_gradient_minimum)
+    for_each_neighbour(nb.sorted, nb.set, i, nb.re, [&](std::size_t j, double, double, double) {
+      if (dummy[j] == 0.0) base = std::min(base, p[j]);
+    });
+  for_each_neighbour(nb.sorted, nb.set, i, nb.re, [&](std::size_t j, double dx, double dy, double r2) {
+    if (dummy[j] != 0.0) return;
+    const double f = terms::gradient_factor(p[j] - base, terms::weight(std::sqrt(r2), nb.re), r2);
+    g.x -= f * dx;  // x_ij = x_j - x_i = -dx
+    g.y -= f * dy;
+  });
+  const double c = terms::gradient_prefactor(lattice_.n0);
+  return {c * g.x, c * g.y};
+}
+
+// Steps d and e: u* (eq. 28) and r* = r^m + u* dt for the moving particles; r^m kept for step h.
+void Step::predict(double dt) {
+  ParticleSet& p = model_.particles;
+  const Arrays a = model_.arrays();
+  const Settings& st = model_.settings;
+  const Neighbourhood nb = neighbourhood();
+  const double rho = st.rest_density, alpha = st.pressure_split;
+  const double bx = rho * gravity_x(), by = rho * gravity_y();
+  double* xs = p.field(impl_->x_start).data();
+  double* ys = p.field(impl_->y_start).data();
+  impl_->fx.assign(p.size(), 0.0);
+  impl_->fy.assign(p.size(), 0.0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != kMoving) continue;
+    const Vector2 v =
+        viscous_force(nb, i, p.vx.data(), p.vy.data(), a.viscosity, lattice_, st.interaction_viscosity);
+    const Vector2 g = pressure_gradient(i, a.pressure);
+    impl_->fx[i] = terms::predicted_velocity(p.vx[i], dt, rho, bx, v.x, g.x, alpha);
+    impl_->fy[i] = terms::predicted_velocity(p.vy[i], dt, rho, by, v.y, g.y, alpha);
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    xs[i] = p.x[i];
+    ys[i] = p.y[i];
+    if (p.kind[i] != kMoving) continue;
+    p.vx[i] = impl_->fx[i];
+    p.vy[i] = impl_->fy[i];
+    p.x[i] += p.vx[i] * dt;
+    p.y[i] += p.vy[i] * dt;
+  }
+}
+
+// Step f at r*: n*, p^{m+1} from Tait's EOS with the free-surface rule (moving and wall particles), clipped at 0,
+// 0 for dummy particles; the density rho0 n*/n0 for the frames.
+void Step::equation_of_state() {
+  ParticleSet& p = model_.particles;
+  const Arrays a = model_.arrays();
+  const Settings& st = model_.settings;
+  const Neighbourhood nb = neighbourhood();
+  const double* dummy = p.field(model_.dummy).data();
+  const double n0 = lattice_.n0;
+  number_densities(nb, a.number_density);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double n = a.number_density[i];
+    const bool surface = terms::is_free_surface(n, n0, st.surface_beta);
+    a.free_surface[i] = surface ? 1.0 : 0.0;
+    // negative EOS pressure is clipped to 0 (the code lineage's choice; docs/mps.md decision S2)
+    const double eos = terms::pressure(n, n0, st.rest_density, st.sound_speed, st.tait_gamma, st.surface_beta);
+    a.pressure[i] = dummy[i] != 0.0 ? 0.0 : std::max(eos, 0.0);
+    p.rho[i] = terms::density_from_number_density(st.rest_density, n, n0);
+  }
+}
+
+// Steps g and h: u^{m+1} = u* + u' (eqs. 27, 29) with the gradient of p^{m+1} at r*, r^{m+1} = r^m + u^{m+1} dt.
+void Step::correct(double dt) {
+  ParticleSet& p = model_.particles;
+  const Arrays a = model_.arrays();
+  const Settings& st = model_.settings;
+  const double* xs = p.field(impl_->x_start).data();
+  const double* ys = p.field(impl_->y_start).data();
+  impl_->fx.assign(p.size(), 0.0);
+  impl_->fy.assign(p.size(), 0.0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != kMoving) continue;
+    const Vector2 g = pressure_gradient(i, a.pressure);
+    impl_->fx[i] = terms::velocity_correction(dt, st.rest_density, g.x, st.pressure_split);
+    impl_->fy[i] = terms::velocity_correction(dt, st.rest_density, g.y, st.pressure_split);
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != kMoving) {
+      p.x[i] = xs[i];
+      p.y[i] = ys[i];
+      continue;
+    }
+    p.vx[i] += impl_->fx[i];
+    p.vy[i] += impl_->fy[i];
+    p.x[i] = terms::new_position(xs[i], p.vx[i], dt);
+    p.y[i] = terms::new_position(ys[i], p.vy[i], dt);
+  }
+}
+
+void Step::advance(double dt) {
+  sort();
+  viscosities();
+  predict(dt);
+  sort();
+  equation_of_state();
+  correct(dt);
+  model_.state.time += dt;
+  model_.state.step += 1;
+}
+
+double Step::stable_time_step() const {
+  const ParticleSet& p = model_.particles;
+  const Settings& st = model_.settings;
+  const double* mu = p.field(model_.fields.viscosity).data();
+  double u2 = 0, mu_max = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != kMoving) continue;
+    u2 = std::max(u2, p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+    mu_max = std::max(mu_max, mu[i]);
+  }
+  return terms::time_step(st.cfl, st.particle_spacing, st.sound_speed, std::sqrt(u2), st.rest_density, mu_max);
+}
+
+Energies Step::energies() const {
+  const ParticleSet& p = model_.particles;
+  const Settings& st = model_.settings;
+  Energies e;
+  double u2 = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != kMoving) continue;
+    const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
+    e.kinetic += 0.5 * p.mass[i] * v2;
+    e.potential -= p.mass[i] * (st.gravity_x * p.x[i] + st.gravity_y * p.y[i]);
+    u2 = std::max(u2, v2);
+  }
+  e.max_speed = std::sqrt(u2);
+  return e;
+}
+
+Health Step::check_health() const {
+  const ParticleSet& p = model_.particles;
+  const auto& f = model_.fields;
+  const double* pr = p.field(f.pressure).data();
+  const double* n = p.field(f.number_density).data();
+  const double* mu = p.field(f.viscosity).data();
+  Health h;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const char* bad = nullptr;
+    if (!std::isfinite(p.x[i]) || !std::isfinite(p.y[i])) bad = "position";
+    else if (!std::isfinite(p.vx[i]) || !std::isfinite(p.vy[i])) bad = "velocity";
+    else if (!std::isfinite(pr[i])) bad = "pressure";
+    else if (!std::isfinite(n[i])) bad = "number_density";
+    else if (!std::isfinite(mu[i])) bad = "viscosity";
+    if (!bad) continue;
+    std::ostringstream os;
+    os << "particle " << p.id[i] << ": field " << bad << " is not finite at step " << model_.state.step;
+    h.ok = false;
+    h.diagnostic = os.str();
+    return h;
+  }
+  return h;
+}
+
+}  // namespace sph::mps
