@@ -1,0 +1,134 @@
+// The WC-MPS stepper on the engine's run loop (issue 12; docs/mps.md section 6): a water column at rest in a box
+// must carry the hydrostatic pressure and stay at rest. SI units.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "sph/mps/model.hpp"
+#include "sph/mps/run.hpp"
+#include "sph/mps/stepper.hpp"
+
+namespace {
+
+constexpr double g = 9.81;  // [m/s^2]
+
+struct ColumnResult {
+  double pressure_ratio = 0;  // mean over the measured particles of p / (rho0 g d), time-averaged
+  double lowest_ratio = 0, highest_ratio = 0;  // the extremes of that mean over the samples [-]
+  double max_speed = 0;  // largest speed over the last `window` seconds [m/s]
+  double fastest_x = 0, fastest_y = 0;  // where the largest speed was [m]
+  std::size_t samples = 0;
+  sph::RunSummary summary;
+};
+
+// Water (1000 kg/m^3, 1e-3 Pa s) filling [0, width] x [0, depth] in a box of walls, gravity ramped over `ramp`
+// seconds, run to `end`; measured over the particles 0.25 to 0.75 depth below the surface, in the last `window`.
+ColumnResult water_column(double width, double depth, double dx, double ramp, double end, double window) {
+  sph::mps::Settings st;
+  st.particle_spacing = dx;
+  st.rest_density = 1000.0;
+  st.sound_speed = 20.0;
+  st.gravity_x = 0.0;
+  st.gravity_y = -g;
+  st.gravity_mode = sph::GravityMode::ramped;
+  st.gravity_ramp_time = ramp;
+  st.end_time = end;
+  st.output_interval = 0.0;
+  st.checkpoint_interval_wall_s = 0.0;
+  sph::mps::Model model(st, {sph::mps::Material::water()});
+  sph::mps::add_block(model, 0.0, 0.0, width, depth, 0);
+  sph::mps::add_box(model, 0.0, width, 0.0, 1.5 * depth, 0);
+  ColumnResult r;
+  double ratio_sum = 0;
+  auto watch = [&](const sph::mps::Step&, const sph::RunState& state) {
+    if (state.time < end - window) return;
+    const sph::ParticleSet& p = model.particles;
+    const double* pr = p.field(model.fields.pressure).data();
+    double sum = 0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.kind[i] != 0) continue;
+      const double speed = std::hypot(p.vx[i], p.vy[i]);
+      if (speed > r.max_speed) {
+        r.max_speed = speed;
+        r.fastest_x = p.x[i];
+        r.fastest_y = p.y[i];
+      }
+      const double d = depth - p.y[i];
+      if (d < 0.25 * depth || d > 0.75 * depth) continue;
+      sum += pr[i] / (st.rest_density * g * d);
+      ++count;
+    }
+    const double ratio = sum / static_cast<double>(count);
+    ratio_sum += ratio;
+    r.lowest_ratio = r.samples == 0 ? ratio : std::min(r.lowest_ratio, ratio);
+    r.highest_ratio = std::max(r.highest_ratio, ratio);
+    ++r.samples;
+  };
+  sph::RunOptions options;
+  options.output_dir.clear();
+  r.summary = sph::mps::run(model, options, {}, watch);
+  r.pressure_ratio = r.samples > 0 ? ratio_sum / static_cast<double>(r.samples) : 0.0;
+  return r;
+}
+
+}  // namespace
+
+// Measured (Release, dx = 10 mm, r_e = 4 dx, c0 = 20 m/s, alpha = 0.5, C_r = 0.2, the p_min gradient, gravity
+// ramped over 0.2 s, run to 0.4 s, 4026 steps, about 7 s wall): the mean of p / (rho0 g d) over the particles 5 to
+// 15 cm deep, averaged over the last 0.1 s (1011 steps), is 0.946; the column still rings acoustically (that mean
+// ranges over 0.745 to 1.145 between steps); the largest speed in the last 0.1 s is 0.247 m/s = 0.18 sqrt(g H), at
+// a surface particle next to the left wall (the contact line). With the plain difference gradient of eq. 24 the
+// run blows up at t = 0.25 s; without clipping the negative EOS pressure at step 94.
+TEST_CASE("MPS water column at rest carries the hydrostatic pressure", "[mps]") {
+  const double depth = 0.2;  // [m]
+  const ColumnResult r = water_column(0.2, depth, 0.01, 0.2, 0.4, 0.1);
+  std::printf("mps water column: p/(rho g d) = %.4f (range %.4f to %.4f), max speed %.4g m/s = %.4g sqrt(gH), %zu "
+              "samples, %llu steps, %.2f s wall, %s %s\n",
+              r.pressure_ratio, r.lowest_ratio, r.highest_ratio, r.max_speed, r.max_speed / std::sqrt(g * depth),
+              r.samples, static_cast<unsigned long long>(r.summary.total_steps), r.summary.wall_seconds,
+              r.summary.stopped_because.c_str(), r.summary.diagnostic.c_str());
+  REQUIRE(r.summary.reason == sph::StopReason::end_time);
+  CHECK(r.pressure_ratio == Approx(1.0).epsilon(0.08));  // hydrostatic within 8 % (measured -5.4 %)
+  CHECK(r.max_speed < 0.25 * std::sqrt(g * depth));  // measured 0.18 sqrt(g H)
+}
+
+TEST_CASE("MPS dry granular collapse runs to 0.5 s with finite values", "[mps]") {
+  // The seed's dry collapse (3.0-3.1): a column l0 = 0.1 m long, h0 = 0.06 m high at the left wall of a tank
+  // 0.3 m long, released at t = 0 (no gate), the default material (mu0 = 1.5 Pa s^N, N = 0.25, m = 50 s,
+  // phi = 22 deg, c = 0), rho0 = 1500 kg/m^3, c0 = 20 m/s, cap 200 Pa s; coarse: dx = 10 mm (60 grains).
+  // Measured (Release): 13334 steps (the viscous limit of eq. 30 at the cap, 3.75e-5 s), about 6 s wall; the top
+  // at 0.5 s is 0.031 m. The run loop's health guard stops the run on a non-finite value (then reason != end_time).
+  sph::mps::Settings st;
+  st.particle_spacing = 0.01;
+  st.end_time = 0.5;
+  st.output_interval = 0.0;
+  st.checkpoint_interval_wall_s = 0.0;
+  sph::mps::Model model(st, {sph::mps::Material::granular_material()});
+  const std::size_t grains = sph::mps::add_block(model, 0.0, 0.0, 0.1, 0.06, 0);
+  sph::mps::add_box(model, 0.0, 0.3, 0.0, 0.12, 0);
+  sph::RunOptions options;
+  const sph::RunSummary s = sph::mps::run(model, options);
+  double front = 0, top = 0, bottom = 1;
+  std::size_t outside = 0;  // grains outside the tank [0, 0.3] x [0, 0.12] m
+  for (std::size_t i = 0; i < model.particles.size(); ++i)
+    if (model.particles.kind[i] == 0) {
+      const double x = model.particles.x[i], y = model.particles.y[i];
+      front = std::max(front, x);
+      top = std::max(top, y);
+      bottom = std::min(bottom, y);
+      if (x < 0 || x > 0.3 || y < 0 || y > 0.12) ++outside;
+    }
+  std::printf("mps dry collapse: %zu grains, %llu steps, %.2f s wall, %s %s; front %.4f m, top %.4f m, bottom %.4f m, %zu outside\n", grains,
+              static_cast<unsigned long long>(s.total_steps), s.wall_seconds, s.stopped_because.c_str(),
+              s.diagnostic.c_str(), front, top, bottom, outside);
+  REQUIRE(s.reason == sph::StopReason::end_time);
+  CHECK(s.simulated_time >= 0.5);
+  // Not checked (docs/mps.md, "Not yet"): that the grains stay in the tank. Measured: 5 of the 60 grains fall
+  // through the floor where the deposit thins to one or two rows (there the grains and the wall particles under
+  // them are free-surface particles at pressure 0, so nothing holds the grains up).
+  CHECK(top < 0.06);  // the column slumped below its initial 0.06 m (measured 0.031 m)
+}
