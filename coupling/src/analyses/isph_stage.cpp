@@ -32,12 +32,7 @@ sph::fluid::Model build_isph_model(const IsphAnalysis& a) {
   return model;
 }
 
-double fluid_mass(const sph::ParticleSet& p) {
-  double m = 0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == kFluid) m += p.mass[i];
-  return m;
-}
+double fluid_mass(const sph::ParticleSet& p) { return p.total_mass(sph::ParticleKind::soil); }  // kind 0: fluid
 
 // Samples the gauges and the front at t = 0, at the first step at or after each multiple of monitor_interval, and
 // at the end of the run.

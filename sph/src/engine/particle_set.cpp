@@ -37,6 +37,13 @@ std::size_t ParticleSet::count(ParticleKind k) const {
   return static_cast<std::size_t>(std::count(kind.begin(), kind.end(), static_cast<std::uint8_t>(k)));
 }
 
+double ParticleSet::total_mass(ParticleKind k) const {
+  double m = 0;
+  for (std::size_t i = 0; i < size(); ++i)
+    if (kind[i] == static_cast<std::uint8_t>(k)) m += mass[i];
+  return m;
+}
+
 FieldId ParticleSet::add_field(const FieldSpec& spec) {
   if (std::find(std::begin(core_names), std::end(core_names), spec.name) != std::end(core_names))
     throw std::invalid_argument("particle field '" + spec.name + "' clashes with a core field");

@@ -323,4 +323,25 @@ RunSummary run_loop(RunTarget& target, const RunOptions& options, const RunCallb
   return loop.run();
 }
 
+double moving_energy_floor(const ParticleSet& p, const EngineSettings& st) {
+  double ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil)) {
+      ymin = std::min(ymin, p.y[i]);
+      ymax = std::max(ymax, p.y[i]);
+    }
+  const double g = std::hypot(st.gravity_x, st.gravity_y);
+  return 0.01 * p.total_mass(ParticleKind::soil) * g * std::max(ymax - ymin, st.particle_spacing);
+}
+
+RunTarget run_target(ParticleSet& particles, RunState& state, Stepper& stepper, const EngineSettings& st) {
+  RunTarget target(particles, state, stepper);
+  target.end_time = st.end_time;
+  target.output_interval = st.output_interval;
+  target.checkpoint_interval_wall_s = st.checkpoint_interval_wall_s;
+  target.blow_up_energy_factor = st.blow_up_energy_factor;
+  target.energy_floor = moving_energy_floor(particles, st);
+  return target;
+}
+
 }  // namespace sph

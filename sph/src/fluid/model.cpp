@@ -6,13 +6,6 @@ namespace sph::fluid {
 
 Model::Model(const Settings& s) : settings(s), fields(Fields::register_in(particles)) { settings.validate(); }
 
-double Model::fluid_mass() const {
-  double m = 0;
-  for (std::size_t i = 0; i < particles.size(); ++i)
-    if (particles.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil)) m += particles.mass[i];
-  return m;
-}
-
 std::size_t add_fluid_block(Model& model, double x_min, double y_min, double x_max, double y_max) {
   const Settings& st = model.settings;
   const double dx = st.particle_spacing;

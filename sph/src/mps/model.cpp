@@ -41,13 +41,6 @@ Model::Model(const Settings& s, std::vector<Material> m)
   dummy = particles.add_field({"dummy", true, true});
 }
 
-double Model::moving_mass() const {
-  double m = 0;
-  for (std::size_t i = 0; i < particles.size(); ++i)
-    if (particles.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil)) m += particles.mass[i];
-  return m;
-}
-
 std::size_t add_block(Model& model, double x_min, double y_min, double x_max, double y_max, std::uint16_t material) {
   if (material >= model.materials.size()) throw std::invalid_argument("mps add_block: no such material");
   const double dx = model.settings.particle_spacing;

@@ -39,6 +39,7 @@ class ParticleSet {
 
   std::size_t size() const { return x.size(); }
   std::size_t count(ParticleKind k) const;
+  double total_mass(ParticleKind k) const;  // [kg/m] the summed mass of the particles of kind k
 
   // Appends one particle at rest; every registered field starts at 0. Returns its index.
   std::size_t add(double px, double py, double particle_mass, double density, std::uint16_t material_id,

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sph/engine/settings.hpp"
 #include "sph/engine/stepper.hpp"
 
 namespace sph {
@@ -90,5 +91,29 @@ struct RunTarget {
 };
 
 RunSummary run_loop(RunTarget& target, const RunOptions& options, const RunCallbacks& callbacks = {});
+
+// Floor for the kinetic-energy runaway test: 1 % of (weight of the moving particles (kind 0) x their height range,
+// at least one particle spacing) [J/m].
+double moving_energy_floor(const ParticleSet& particles, const EngineSettings& settings);
+
+// The run target of a physics on the engine: end time, output and checkpoint intervals and the blow-up factor from
+// its settings, the energy floor of its moving particles; the caller sets write_checkpoint.
+RunTarget run_target(ParticleSet& particles, RunState& state, Stepper& stepper, const EngineSettings& settings);
+
+// Passes a physics' stepper to a watcher after every step (never stops the run).
+template <class Step>
+class WatchObserver : public Observer {
+ public:
+  using Watcher = std::function<void(const Step&, const RunState&)>;
+  WatchObserver(const Step& step, const Watcher& watcher) : step_(step), watcher_(watcher) {}
+  std::string after_step(const ParticleSet&, const RunState& state, const Energies&) override {
+    watcher_(step_, state);
+    return {};
+  }
+
+ private:
+  const Step& step_;
+  const Watcher& watcher_;
+};
 
 }  // namespace sph

@@ -20,7 +20,6 @@ struct Model {
 
   Arrays arrays() { return Arrays(particles, fields); }
   ConstArrays arrays() const { return ConstArrays(particles, fields); }
-  double fluid_mass() const;  // [kg/m]
 };
 
 // Fluid particles on the lattice (cell-centred, anchor at the origin) inside [x_min, x_max] x [y_min, y_max], at

@@ -39,7 +39,6 @@ struct Model {
   FieldId dummy;  // 1 for the dummy wall particles (number density only), else 0 (checkpointed)
 
   Arrays arrays() { return Arrays(particles, fields); }
-  double moving_mass() const;  // [kg/m]
   double particle_mass() const { return settings.rest_density * settings.particle_spacing * settings.particle_spacing; }
 };
 
