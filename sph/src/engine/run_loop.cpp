@@ -334,6 +334,20 @@ double moving_energy_floor(const ParticleSet& p, const EngineSettings& st) {
   return 0.01 * p.total_mass(ParticleKind::soil) * g * std::max(ymax - ymin, st.particle_spacing);
 }
 
+Energies moving_energies(const ParticleSet& p, const EngineSettings& st) {
+  Energies e;
+  double v2_max = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != static_cast<std::uint8_t>(ParticleKind::soil)) continue;
+    const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
+    e.kinetic += 0.5 * p.mass[i] * v2;
+    e.potential -= p.mass[i] * (st.gravity_x * p.x[i] + st.gravity_y * p.y[i]);
+    v2_max = std::max(v2_max, v2);
+  }
+  e.max_speed = std::sqrt(v2_max);
+  return e;
+}
+
 RunTarget run_target(ParticleSet& particles, RunState& state, Stepper& stepper, const EngineSettings& st) {
   RunTarget target(particles, state, stepper);
   target.end_time = st.end_time;

@@ -7,6 +7,7 @@
 
 #include "pair_list.hpp"
 #include "sph/engine/cell_sort.hpp"
+#include "sph/engine/run_loop.hpp"
 #include "terms.hpp"
 
 namespace sph::fluid {
@@ -411,21 +412,7 @@ void Step::finish_positions(double dt) {
   diag_.mean_density_error = nf > 0 ? err_sum / static_cast<double>(nf) : 0.0;
 }
 
-Energies Step::energies() const {
-  const ParticleSet& p = model_.particles;
-  const Settings& st = model_.settings;
-  Energies e;
-  double vmax2 = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != kFluid) continue;
-    const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
-    e.kinetic += 0.5 * p.mass[i] * v2;
-    e.potential -= p.mass[i] * (st.gravity_x * p.x[i] + st.gravity_y * p.y[i]);
-    vmax2 = std::max(vmax2, v2);
-  }
-  e.max_speed = std::sqrt(vmax2);
-  return e;
-}
+Energies Step::energies() const { return moving_energies(model_.particles, model_.settings); }
 
 Health Step::check_health() const {
   const ParticleSet& p = model_.particles;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sph/engine/cell_sort.hpp"
+#include "sph/engine/run_loop.hpp"
 #include "sph/engine/neighbours.hpp"
 #include "sph/mps/terms.hpp"
 
@@ -193,21 +194,7 @@ double Step::stable_time_step() const {
   return terms::time_step(st.cfl, st.particle_spacing, st.sound_speed, std::sqrt(u2), st.rest_density, mu_max);
 }
 
-Energies Step::energies() const {
-  const ParticleSet& p = model_.particles;
-  const Settings& st = model_.settings;
-  Energies e;
-  double u2 = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != kMoving) continue;
-    const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
-    e.kinetic += 0.5 * p.mass[i] * v2;
-    e.potential -= p.mass[i] * (st.gravity_x * p.x[i] + st.gravity_y * p.y[i]);
-    u2 = std::max(u2, v2);
-  }
-  e.max_speed = std::sqrt(u2);
-  return e;
-}
+Energies Step::energies() const { return moving_energies(model_.particles, model_.settings); }
 
 Health Step::check_health() const {
   const ParticleSet& p = model_.particles;

@@ -96,6 +96,10 @@ RunSummary run_loop(RunTarget& target, const RunOptions& options, const RunCallb
 // at least one particle spacing) [J/m].
 double moving_energy_floor(const ParticleSet& particles, const EngineSettings& settings);
 
+// Kinetic and potential energy (gravity of `settings`) and the largest speed of the moving particles (kind 0), in
+// index order on one thread; no plastic dissipation (physics without a plastic material).
+Energies moving_energies(const ParticleSet& particles, const EngineSettings& settings);
+
 // The run target of a physics on the engine: end time, output and checkpoint intervals and the blow-up factor from
 // its settings, the energy floor of its moving particles; the caller sets write_checkpoint.
 RunTarget run_target(ParticleSet& particles, RunState& state, Stepper& stepper, const EngineSettings& settings);
