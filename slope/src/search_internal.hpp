@@ -65,6 +65,7 @@ class SearchEngine {
   double relief() const { return relief_; }
   double width() const { return width_; }
   long evaluations() const { return evaluations_; }
+  Method method(std::size_t method_index) const { return methods_[method_index]; }
 
   // Slices the circle and checks the user limits. With project_to_base, a circle below the rigid base is moved
   // up onto it (R = yc - bottom_y) first.
@@ -107,6 +108,27 @@ class SearchEngine {
         return Admit::outside_limits;
       }
     }
+    return admit_table();
+  }
+
+  // Slices a polyline surface (its own admissibility: ends on the ground, below it, above the base, concave) and
+  // checks the entry/exit limits and the minimum depth, as for a circle.
+  Admit admit(const SlipPolyline& surface) {
+    if (!slicer_.slice_polyline(surface, options_.slicing.slices, table_).empty()) {
+      ++polyline_rejections_;
+      return Admit::rejected;
+    }
+    return admit_table();
+  }
+
+  // Rejections of polylines (admit(SlipPolyline)); they have their own reasons, not counted by kind.
+  long polyline_rejections() const { return polyline_rejections_; }
+
+ private:
+  // The limits that apply to every kind of surface, on the current table: entry and exit ranges, minimum depth.
+  Admit admit_table() {
+    const SearchLimits& lim = options_.limits;
+    const double tol = 1e-9 * (1.0 + width_);
     if (lim.entry_x) {
       const Range re = ordered(*lim.entry_x);
       if (table_.entry.x < re.min - tol || table_.entry.x > re.max + tol) {
@@ -128,6 +150,7 @@ class SearchEngine {
     return Admit::ok;
   }
 
+ public:
   // One method on the current table; NaN on failure.
   double evaluate(std::size_t method_index, double guess = 0.0) {
     const Method method = methods_[method_index];
@@ -217,7 +240,7 @@ class SearchEngine {
   double relief_ = 0.0, width_ = 0.0, minimum_depth_ = 0.0;
   long evaluations_ = 0;
   std::array<long, rejection_kinds> rejections_{};
-  long outside_limits_ = 0, too_shallow_ = 0;
+  long outside_limits_ = 0, too_shallow_ = 0, polyline_rejections_ = 0;
   std::vector<std::array<long, failure_kinds>> failures_;
   std::vector<std::array<std::string, failure_kinds>> failure_text_;
   std::array<Outcome, method_count> solutions_{};  // per method-table row, this trial's solutions

@@ -1,6 +1,7 @@
 #pragma once
-// Critical circular slip-surface search: automatic entry-exit / grid search over the whole section, then
-// Nelder-Mead refinement, per method.
+// Critical slip-surface searches, per method: circular (automatic entry-exit / grid search over the whole section,
+// then Nelder-Mead refinement) and non-circular (vertex optimisation of polylines starting from the critical
+// circles).
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,5 +67,39 @@ struct SearchResult {
 
 SearchResult search_critical(const Section& section, const std::vector<Method>& methods,
                              const SearchOptions& options);
+
+// Non-circular search (search_noncircular.cpp): a pattern search over the vertices of a polyline, started from
+// each method's critical circle inscribed as `initial_segments` chords; the number of segments doubles after each
+// converged stage up to `segments`. Bishop takes moments about its critical circle's centre; the Ordinary method
+// (defined for circles) is not searched and keeps its critical circle. The surfaces obey SearchOptions' entry/exit limits and minimum depth and
+// slice_polyline's admissibility (concave upward, no convex kink; above the rigid base).
+struct NonCircularOptions {
+  int initial_segments = 8;
+  int segments = 32;  // segments of the final polyline (a power-of-two multiple of initial_segments)
+  // Vertex moves stop below this fraction of the critical circle's entry-exit chord (m / m).
+  double tolerance = 2e-4;
+};
+
+struct NonCircularSurface {
+  Method method = Method::bishop;
+  // The critical surface: the optimised polyline, or, when no polyline beats the method's critical circle, that
+  // circle itself (from_circle): by construction never a higher factor of safety than the circular search.
+  std::optional<SlipMass> mass;
+  FsResult result;  // with forces
+  bool from_circle = false;
+  bool searched = false;  // false for the Ordinary method and for a method without a critical circle
+  std::optional<double> circle_factor_of_safety;    // the method's critical circle
+  std::optional<double> polyline_factor_of_safety;  // the best polyline found, whether or not it beat the circle
+  long trial_surfaces = 0;                          // polylines evaluated for this method
+};
+
+struct NonCircularResult {
+  std::vector<NonCircularSurface> methods;  // in the order of the circular search's methods
+  long trial_surfaces = 0;                  // all polylines evaluated, all methods
+  double seconds = 0.0;                     // wall time of the non-circular search alone
+};
+
+NonCircularResult search_noncircular(const Section& section, const SearchResult& circular,
+                                     const SearchOptions& options, const NonCircularOptions& noncircular = {});
 
 }  // namespace slope
