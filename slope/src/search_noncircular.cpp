@@ -7,7 +7,8 @@
 // vertex up, down, left and right, then the whole inner surface up and down), so that a search is reproducible,
 // and a kept move is repeated with doubled length while it keeps improving (Hooke & Jeeves 1961, "Direct search"
 // solution of numerical and statistical problems", J. ACM 8(2):212-229). Per method:
-//   1. the method's critical circle from the circular search, inscribed as `initial_segments` chords of equal angle;
+//   1. the method's critical circle from the circular search, inscribed as `initial_segments` chords of equal angle
+//      (doubled, up to 256, while that polygon is not an admissible start);
 //   2. the pattern search at that number of segments, from a move of 1/20 of the circle's entry-exit chord down to
 //      `tolerance` of it;
 //   3. every segment halved (a vertex at each midpoint) and step 2 again from a quarter of the previous first move,
@@ -173,6 +174,11 @@ VertexSearch optimise_from_circle(SearchEngine& engine, std::size_t k, const Sli
                                   const NonCircularOptions& options) {
   int segments = std::max(2, options.initial_segments);
   VertexSearch search(engine, k, inscribed(circle, segments), moment_point(circle, engine.method(k)));
+  // a thin or sharply curved mass: the coarse polygon may be shallower than the minimum depth or not admissible
+  while (!std::isfinite(search.best()) && segments < 256) {
+    segments *= 2;
+    search.restart(inscribed(circle, segments));
+  }
   const double chord = chord_length(search.points());
   double first_move = chord / 20.0;
   const double min_move = options.tolerance * chord;

@@ -57,6 +57,12 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
   }
   out.lem_surfaces = analyse_given_surfaces(section, analysis);
   out.report["lem"] = lem_report(section, analysis, result, out.lem_surfaces);
+  if (analysis.noncircular && result.error.empty()) {
+    const StageClock::time_point noncircular_start = StageClock::now();
+    out.lem_noncircular = slope::search_noncircular(section, result, analysis.search, *analysis.noncircular);
+    out.report["lem"]["noncircular"] = noncircular_report(section, *analysis.noncircular, *out.lem_noncircular);
+    out.report["timing_s"]["lem_noncircular"] = seconds_since(noncircular_start);
+  }
   if (outcome.status == ExitStatus::ok) {
     bool any = false;
     for (const slope::CriticalSurface& critical : result.methods) {

@@ -95,6 +95,7 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
         result.scene->analyses.lem ? *result.scene->analyses.lem : coupling::default_lem_analysis();
     std::cout << "limit equilibrium: " << result.scene->name << " (" << scene_file.string() << ")\n"
               << coupling::lem_table(analysis, *result.lem);
+    if (result.lem_noncircular) std::cout << coupling::noncircular_table(*result.lem_noncircular);
     if (!result.lem_surfaces.empty()) std::cout << coupling::given_surfaces_table(result.lem_surfaces);
   }
   if (result.report.is_object() && result.report.contains("srm")) print_srm(result.report["srm"]);

@@ -64,6 +64,7 @@ std::string format(const char* pattern, double a, double b = 0.0) {
 }  // namespace
 
 Polyline lem_surface_polyline(const slope::SlipMass& mass, int segments) {
+  if (!mass.surface.empty()) return mass.surface;  // a polyline surface: its own vertices
   const double from = std::min(mass.entry.x, mass.exit.x), to = std::max(mass.entry.x, mass.exit.x);
   return circle_arc(mass.circle, from, to, segments);
 }

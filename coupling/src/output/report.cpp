@@ -163,6 +163,30 @@ nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& anal
   return lem;
 }
 
+nlohmann::json noncircular_report(const slope::Section& section, const slope::NonCircularOptions& options,
+                                  const slope::NonCircularResult& result) {
+  nlohmann::json methods = nlohmann::json::object();
+  for (const slope::NonCircularSurface& surface : result.methods) {
+    nlohmann::json m = method_report(section, slope::CriticalSurface{surface.method, surface.mass, surface.result});
+    m["searched"] = surface.searched;
+    m["from_circle"] = surface.from_circle;
+    m["circle_factor_of_safety"] = optional_number(surface.circle_factor_of_safety);
+    m["polyline_factor_of_safety"] = optional_number(surface.polyline_factor_of_safety);
+    if (!surface.searched && surface.method == slope::Method::ordinary)
+      m["note"] = "not searched: the Ordinary method is defined for circular surfaces; this is its critical circle";
+    else if (surface.from_circle)
+      m["note"] = "no polyline below the critical circle was found; this is the critical circle";
+    m["trial_surfaces"] = surface.trial_surfaces;
+    methods[std::string(slope::method_key(surface.method))] = std::move(m);
+  }
+  return {{"settings", {{"initial_segments", options.initial_segments},
+                        {"segments", options.segments},
+                        {"tolerance", options.tolerance}}},
+          {"trial_surfaces", result.trial_surfaces},
+          {"seconds", result.seconds},
+          {"methods", std::move(methods)}};
+}
+
 std::string report_text(const nlohmann::json& report) {
   return report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }

@@ -32,6 +32,15 @@ void write_figures(const Scene& scene, const WorkflowResult& out, const std::opt
       data.lem_surfaces.push_back({label, lem_surface_polyline(*critical.mass)});
     }
   }
+  if (out.lem_noncircular) {
+    for (const auto& s : out.lem_noncircular->methods) {
+      if (!s.mass || !s.result.factor_of_safety || s.from_circle || !s.searched) continue;
+      char label[96];
+      std::snprintf(label, sizeof label, "%s non-circular FS = %.3f", std::string(slope::method_key(s.method)).c_str(),
+                    *s.result.factor_of_safety);
+      data.lem_surfaces.push_back({label, s.mass->surface});
+    }
+  }
   if (failure) {
     data.final_ground = failure->final_ground;
     if (failure->band.points.size() >= 2) {

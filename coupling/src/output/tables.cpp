@@ -48,6 +48,27 @@ std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& re
   return trimmed;
 }
 
+std::string noncircular_table(const slope::NonCircularResult& result) {
+  std::string text = "non-circular search (polylines from the critical circles):\n";
+  char line[512];
+  for (const slope::NonCircularSurface& s : result.methods) {
+    const std::string key(slope::method_key(s.method));
+    if (!s.result.factor_of_safety || !s.mass) {
+      std::snprintf(line, sizeof line, "  %-27s %7s  failed: ", key.c_str(), "-");
+      text += line + s.result.error + "\n";
+      continue;
+    }
+    const char* what = !s.searched ? "its critical circle (not searched: defined for circles)"
+                       : s.from_circle ? "its critical circle (no lower polyline found)"
+                                       : "polyline";
+    std::snprintf(line, sizeof line, "  %-27s %7.3f  %s, entry (%.2f, %.2f), exit (%.2f, %.2f)\n", key.c_str(),
+                  *s.result.factor_of_safety, what, s.mass->entry.x, s.mass->entry.y, s.mass->exit.x, s.mass->exit.y);
+    text += line;
+  }
+  std::snprintf(line, sizeof line, "  %ld trial surfaces in %.3f s\n", result.trial_surfaces, result.seconds);
+  return text + line;
+}
+
 std::string given_surfaces_table(const std::vector<GivenSurfaceResult>& surfaces) {
   std::string text;
   char line[512];

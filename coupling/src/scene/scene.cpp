@@ -139,6 +139,19 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
     }
     search->finish();
   }
+  if (auto noncircular = lem->object("noncircular_search", Need::optional, "an object (may be empty: {})")) {
+    result.noncircular = slope::NonCircularOptions{};
+    if (const auto segments = noncircular->integer("segments", Need::optional, Bounds::closed(8, 128))) {
+      const long s = *segments;
+      if (s % 8 != 0 || (s / 8 & (s / 8 - 1)) != 0)
+        diagnostics.error(noncircular->path_of("segments"),
+                          std::to_string(s) + " is not allowed: the search doubles the segments from 8, so use 8, 16, "
+                                              "32, 64 or 128");
+      else
+        result.noncircular->segments = static_cast<int>(s);
+    }
+    noncircular->finish();
+  }
   read_given_surfaces(*lem, scene.section ? &scene.section->section : nullptr, result.search.slicing,
                       result.surfaces);
   lem->finish();

@@ -50,6 +50,7 @@ struct WorkflowResult {
   std::vector<std::string> rejections;            // not accepted: one line per failed acceptance criterion
   nlohmann::json report;                          // null when the input was invalid or in check mode
   std::optional<slope::SearchResult> lem;         // the limit-equilibrium result, for the table
+  std::optional<slope::NonCircularResult> lem_noncircular;  // analyses.lem.noncircular_search, when asked for
   std::vector<GivenSurfaceResult> lem_surfaces;   // the given slip surfaces (analyses.lem.surfaces), for the table
   std::optional<std::filesystem::path> report_file;  // where report.json was written
   std::optional<ParticleSnapshot> sph_final_state;   // soil particles at the end of the SPH analysis

@@ -30,6 +30,12 @@ nlohmann::json method_report(const slope::Section& section, const slope::Critica
 nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& analysis,
                           const slope::SearchResult& result, const std::vector<GivenSurfaceResult>& surfaces = {});
 
+// The "lem.noncircular" block: settings {initial_segments, segments, tolerance}, trial_surfaces, seconds, and
+// methods keyed by method key, each as method_report plus searched, from_circle, circle_factor_of_safety,
+// polyline_factor_of_safety, trial_surfaces and a note when the result is the critical circle.
+nlohmann::json noncircular_report(const slope::Section& section, const slope::NonCircularOptions& options,
+                                  const slope::NonCircularResult& result);
+
 // Pretty-printed JSON text of a report, ending in a newline.
 std::string report_text(const nlohmann::json& report);
 

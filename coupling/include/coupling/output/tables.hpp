@@ -13,6 +13,9 @@ namespace coupling {
 // Fixed-width table of the critical surface per method (FS, centre, radius, entry, exit) and the search totals.
 std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& result);
 
+// The non-circular search (analyses.lem.noncircular_search): per method its FS, what the surface is, entry and exit.
+std::string noncircular_table(const slope::NonCircularResult& result);
+
 // One line per given slip surface (analyses.lem.surfaces) and method: FS, or why there is none.
 std::string given_surfaces_table(const std::vector<GivenSurfaceResult>& surfaces);
 

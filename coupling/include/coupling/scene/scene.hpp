@@ -51,6 +51,8 @@ struct LemAnalysis {
   slope::SearchOptions search;          // slicing.slices default 50, refine default true, limits optional
   bool has_search_limits = false;       // the scene gave analyses.lem.search limits (or a minimum depth)
   bool methods_given = false;           // the scene listed analyses.lem.methods (else the default list)
+  // analyses.lem.noncircular_search: the non-circular search after the circular one (absent: not run)
+  std::optional<slope::NonCircularOptions> noncircular;
 };
 
 // The analyses the scene asks for, each read once into its typed settings (defaults applied).
