@@ -1,7 +1,8 @@
 // bench-lem: limit-equilibrium throughput on one core.
 //   trial circles per second (slicing + factor of safety together, 50 slices) for Bishop, Spencer and
 //   Morgenstern-Price on the homogeneous Griffiths & Lane (1999) slope, and the wall time of the default critical
-//   search with refinement. A benchmark program, not a test: it prints figures (docs/performance.md).
+//   search with refinement; trial polylines per second for Spencer, and the wall time of the non-circular search.
+//   A benchmark program, not a test: it prints figures (docs/performance.md).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -78,6 +79,63 @@ void search_time(const char* name, const std::vector<slope::Method>& methods, co
   std::printf("\n");
 }
 
+// Polylines of 33 vertices inscribed in the trial circles, their depth below the entry-exit chord scaled by a
+// random 0.8-1.0 (still concave; kept only when admissible and solved by Spencer): slicing + factor of safety per
+// second.
+void polyline_throughput(const slope::Section& section, const std::vector<slope::Circle>& circles) {
+  std::mt19937 rng(54321);
+  std::uniform_real_distribution<double> scale(0.8, 1.0);
+  std::vector<slope::SlipPolyline> surfaces;
+  for (const slope::Circle& c : circles) {
+    auto p = slope::circle_as_polyline(section, c, 32);
+    if (!p) continue;
+    const slope::Point a = p->points.front(), b = p->points.back();
+    const double f = scale(rng);
+    for (std::size_t i = 1; i + 1 < p->points.size(); ++i) {
+      const double on_chord = a.y + (b.y - a.y) * (p->points[i].x - a.x) / (b.x - a.x);
+      p->points[i].y = on_chord - f * (on_chord - p->points[i].y);
+    }
+    p->moment_point.reset();
+    const auto mass = slope::slice_polyline(section, *p, slope::SliceOptions{50});
+    if (mass && slope::factor_of_safety(*mass, slope::Method::spencer).factor_of_safety) surfaces.push_back(*p);
+  }
+  long evaluated = 0, slices = 0;
+  double checksum = 0.0, seconds = 0.0;
+  const auto start = Clock::now();
+  do {
+    for (const slope::SlipPolyline& p : surfaces) {
+      const auto mass = slope::slice_polyline(section, p, slope::SliceOptions{50});
+      if (!mass) continue;
+      if (auto fs = slope::factor_of_safety(*mass, slope::Method::spencer).factor_of_safety) checksum += *fs;
+      slices += static_cast<long>(mass->slices.size());
+      ++evaluated;
+    }
+    seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  } while (seconds < 1.5);
+  std::printf("%-28s %10.0f trial polylines/s (%.1f slices per polyline, %zu polylines, mean FS %.4f; public "
+              "slice_polyline + factor_of_safety, allocating)\n",
+              "Spencer, 32-segment polyline", evaluated / seconds, static_cast<double>(slices) / evaluated,
+              surfaces.size(), checksum / evaluated);
+}
+
+void noncircular_time(const char* name, const std::vector<slope::Method>& methods, const slope::Section& section) {
+  const slope::SearchResult circular = slope::search_critical(section, methods, slope::SearchOptions{});
+  std::vector<double> times;
+  slope::NonCircularResult last;
+  for (int run = 0; run < 5; ++run) {
+    const auto start = Clock::now();
+    last = slope::search_noncircular(section, circular, slope::SearchOptions{});
+    times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  std::sort(times.begin(), times.end());
+  std::printf("%-28s median %.4f s (min %.4f s) over 5 runs after the circular search, %ld trial polylines;", name,
+              times[times.size() / 2], times.front(), last.trial_surfaces);
+  for (const slope::NonCircularSurface& c : last.methods)
+    std::printf(" %s %.4f", std::string(slope::method_key(c.method)).c_str(),
+                c.result.factor_of_safety.value_or(std::nan("")));
+  std::printf("\n");
+}
+
 }  // namespace
 
 int main() {
@@ -92,5 +150,8 @@ int main() {
   throughput("Janbu simplified", slope::Method::janbu, section, circles);
   search_time("default search, Bishop", {slope::Method::bishop}, section);
   search_time("default search, all methods", slope::all_methods(), section);
+  polyline_throughput(section, circles);
+  noncircular_time("non-circular, Spencer", {slope::Method::spencer}, section);
+  noncircular_time("non-circular, all methods", slope::all_methods(), section);
   return 0;
 }
