@@ -211,7 +211,7 @@ std::string Slicer::slice_polyline(const SlipPolyline& in, int target_slices, Sl
     arc_y_[j] = surface_y(s, bounds_[j]);
     ground_y_[j] = ps.ground_line().y(bounds_[j]);
   }
-  fill_from_bounds(dir, table);
+  fill_from_bounds(dir, table, nullptr);
   table.circular = false;
   table.circle = Circle{moment_point.x, moment_point.y, 0.0};
   table.chord_depth = chord_depth(s);

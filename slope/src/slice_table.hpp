@@ -109,7 +109,8 @@ class Slicer {
  private:
   void fill_slices(const Circle& circle, int dir, SliceTable& table);
   // Slices between bounds_, from the base heights arc_y_ and ground heights ground_y_ at the bounds.
-  void fill_from_bounds(int dir, SliceTable& table);
+  // circle: the arc of a circular surface (nullptr for a polyline), to settle a base chord lying on a layer line.
+  void fill_from_bounds(int dir, SliceTable& table, const Circle* circle);
   void slice_water(int i, double sdir, SliceTable& table) const;
   // Slice boundaries bounds_ from the mass's ends and the sorted breaks_ inside it (xr appended here).
   int place_bounds(double xl, double xr, int target_slices);

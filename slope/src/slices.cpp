@@ -384,13 +384,13 @@ void Slicer::fill_slices(const Circle& circle, int dir, SliceTable& table) {
   table.circle = circle;
   table.surface.clear();
   table.crack_depth = table.crack_force = table.crack_force_y = table.chord_depth = 0.0;
-  fill_from_bounds(dir, table);
+  fill_from_bounds(dir, table, &circle);
   table.compute_loads();
 }
 
 // 5. The slices between bounds_ with the base heights arc_y_ and the ground heights ground_y_ at the bounds: their
 // geometry, weights and loads (compute_loads() is left to the caller).
-void Slicer::fill_from_bounds(int dir, SliceTable& table) {
+void Slicer::fill_from_bounds(int dir, SliceTable& table, const Circle* circle) {
   const PreparedSection& ps = prepared_;
   const IndexedPolyline& ground = ps.ground_line();
   const int n = static_cast<int>(bounds_.size()) - 1;
@@ -431,17 +431,25 @@ void Slicer::fill_from_bounds(int dir, SliceTable& table) {
 
     // Layers from their mean heights over the slice: line k's material fills [Y(k+1), Y(k)], the last one down to
     // bottom_y; the layer the chord lies in is cut at the chord. The chord crosses no line inside a slice (the
-    // crossings are boundaries), so these areas are exact.
+    // crossings are boundaries), so these areas are exact. The base lies in the layer the chord lies in; a chord
+    // lying on a line (both its ends are crossings of that line) takes the side the arc's middle lies on, which the
+    // arc cannot leave within the slice.
     line_y_[0] = ytm;
     for (std::size_t k = 1; k < n_lines; ++k) line_y_[k] = std::min(ps.lines[k].mean(x0, x1), line_y_[k - 1]);
     line_y_[n_lines] = std::min(ps.bottom_y, line_y_[n_lines - 1]);
     double weight = 0.0;
     std::size_t base_line = n_lines - 1;
+    const double on_line = 1e-9 * (1.0 + std::fabs(ybm));
     for (std::size_t k = 0; k < n_lines; ++k) {
       const double top = line_y_[k];
       const double bottom = std::max(line_y_[k + 1], ybm);
       if (top > bottom) weight += ps.line_unit_weight[k] * (top - bottom);
-      if (line_y_[k + 1] < ybm) {
+      double y_base = ybm;
+      if (circle != nullptr && std::fabs(line_y_[k + 1] - ybm) <= on_line) {
+        const double d = xm - circle->xc;
+        y_base = circle->yc - std::sqrt(std::max(0.0, circle->radius * circle->radius - d * d));
+      }
+      if (line_y_[k + 1] < y_base) {
         base_line = k;
         break;
       }
