@@ -95,6 +95,7 @@ TEST_CASE("thesis slope 2, coarse: the SPH failure surface runs from behind the 
   scene["analyses"]["sph"]["particle_spacing_m"] = 0.5;
   scene["analyses"]["sph"]["end_time_s"] = 3.0;
   scene["analyses"]["lem"]["methods"] = {"bishop", "spencer"};
+  scene["analyses"]["lem"]["noncircular_search"] = nlohmann::json::object();
   scene["analyses"]["compare"] = nlohmann::json::object();
   write_json(dir / "scene.json", scene);
 
@@ -124,6 +125,17 @@ TEST_CASE("thesis slope 2, coarse: the SPH failure surface runs from behind the 
   CHECK(bishop["factor_of_safety_on_sph_surface"].is_number());
   CHECK(report["comparison"]["methods"]["spencer"]["factor_of_safety_on_sph_surface"].is_number());
   CHECK(surface["as_lem_surface"]["tension_crack_depth_m"].get<double>() > 0.0);
+  // ... and against the non-circular critical surfaces (measured: Bishop 0.912, mean distance 0.46 m, overlap 73 %)
+  for (const char* method : {"bishop", "spencer"}) {
+    INFO(method);
+    const auto& polyline = report["comparison"]["methods"][method]["noncircular"];
+    CHECK(polyline["factor_of_safety"].get<double>() <
+          report["comparison"]["methods"][method]["lem_factor_of_safety"].get<double>());
+    CHECK(polyline["from_circle"] == false);
+    CHECK(polyline["mean_normal_distance_m"].get<double>() < 1.0);
+    CHECK(polyline["intersection_over_union"].get<double>() > 0.5);
+  }
+  CHECK(report["comparison"]["verdict"].get<std::string>().find("non-circular critical surface") != std::string::npos);
 
   for (const char* figure : {"figures/section.svg", "figures/fs_map.svg", "frames.pvd", "energy.csv"})
     CHECK(fs::file_size(dir / "out" / figure) > 100);

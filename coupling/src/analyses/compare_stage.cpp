@@ -23,7 +23,8 @@ StageOutcome run_compare_stage(const Scene& scene, StageContext& context) {
   const ComparisonOptions& options = *scene.analyses.compare;
   const slope::Section& section = scene.section->section;
   failure = extract_sph_failure(*final_state, section.profile_lines.front().points, options);
-  ComparisonResult comparison = compare_with_lem(section, *failure, *out.lem, options);
+  ComparisonResult comparison = compare_with_lem(section, *failure, *out.lem, options,
+                                                 out.lem_noncircular ? &*out.lem_noncircular : nullptr);
   // Loads SPH left out on request (analyses.sph.ignore_loads): the two surfaces answer different problems.
   for (const SectionLoad& load : loads_sph_leaves_out(scene))
     comparison.verdict += " Caution: the SPH run leaves out " + load.name + " (" + load.path +

@@ -177,36 +177,63 @@ std::string verdict_text(const std::string& key, const slope::CriticalSurface& c
   return verdict.str();
 }
 
-// The comparison with one method's critical surface; `verdict` is set when this method tells it.
-MethodComparison compare_method(const slope::CriticalSurface& critical, const SphFailure& sph,
-                                const SphCircleMass& sph_mass, const SphSurfaceForLem& sph_surface,
-                                const Polyline& ground, const Polyline& sph_polygon, bool tells_verdict,
-                                std::optional<std::string>& verdict) {
+// Where one LE mass lies against the SPH band: offsets, distances, areas, overlap.
+struct Placement {
+  Polyline lem_line;
+  SurfaceDistances distances;
+  MassOverlap overlap;
+};
+
+Placement place(const slope::SlipMass& mass, const SphFailure& sph, const Polyline& ground,
+                const Polyline& sph_polygon, SurfaceGeometry& g) {
+  Placement p;
+  p.lem_line = lem_surface_polyline(mass);
+  p.distances = compare_surfaces(sph.band.points, p.lem_line);
+  if (sph.entry) {
+    g.entry_offset_m = slope::Point{sph.entry->x - mass.entry.x, sph.entry->y - mass.entry.y};
+    g.exit_offset_m = slope::Point{sph.exit->x - mass.exit.x, sph.exit->y - mass.exit.y};
+  }
+  g.common_from_x_m = p.distances.common_from_x;
+  g.common_to_x_m = p.distances.common_to_x;
+  g.mean_normal_distance_m = p.distances.mean_normal_distance;
+  g.max_normal_distance_m = p.distances.max_normal_distance;
+  g.area_between_m2 = p.distances.area_between;
+  p.overlap = mass_overlap(sph_polygon, sliding_mass_polygon(ground, p.lem_line));
+  g.sph_sliding_mass_area_m2 = p.overlap.area_a;
+  g.lem_sliding_mass_area_m2 = p.overlap.area_b;
+  g.intersection_area_m2 = p.overlap.intersection_area;
+  g.intersection_over_union = p.overlap.intersection_over_union;
+  return p;
+}
+
+// The comparison with one method's critical surface (and its non-circular one, when given); `verdict` is set when
+// this method tells it.
+MethodComparison compare_method(const slope::CriticalSurface& critical, const slope::NonCircularSurface* noncircular,
+                                const SphFailure& sph, const SphCircleMass& sph_mass,
+                                const SphSurfaceForLem& sph_surface, const Polyline& ground,
+                                const Polyline& sph_polygon, bool tells_verdict, std::optional<std::string>& verdict) {
   const std::string key(slope::method_key(critical.method));
   MethodComparison m;
   m.method = key;
   compare_factors(critical, sph, sph_mass, sph_surface, m);
   if (!critical.mass || sph.band.points.size() < 2) return m;
-  const auto& mass = *critical.mass;
-  const Polyline lem_line = lem_surface_polyline(mass);
-  const auto distances = compare_surfaces(sph.band.points, lem_line);
   m.has_geometry = true;
-  if (sph.entry) {
-    m.entry_offset_m = slope::Point{sph.entry->x - mass.entry.x, sph.entry->y - mass.entry.y};
-    m.exit_offset_m = slope::Point{sph.exit->x - mass.exit.x, sph.exit->y - mass.exit.y};
+  const Placement circle = place(*critical.mass, sph, ground, sph_polygon, m);
+  std::optional<std::string> on_polyline;
+  if (noncircular != nullptr && noncircular->mass && noncircular->result.factor_of_safety) {
+    NonCircularComparison n;
+    n.factor_of_safety = *noncircular->result.factor_of_safety;
+    n.from_circle = noncircular->from_circle;
+    const Placement polyline = place(*noncircular->mass, sph, ground, sph_polygon, n);
+    if (!n.from_circle)
+      on_polyline = " Against its non-circular critical surface (FS = " + format("%.3f", n.factor_of_safety) +
+                    "): mean normal distance " + format("%.2f m", polyline.distances.mean_normal_distance) +
+                    ", overlap " + format("%.0f %%", 100.0 * polyline.overlap.intersection_over_union) + ".";
+    m.noncircular = n;
   }
-  m.common_from_x_m = distances.common_from_x;
-  m.common_to_x_m = distances.common_to_x;
-  m.mean_normal_distance_m = distances.mean_normal_distance;
-  m.max_normal_distance_m = distances.max_normal_distance;
-  m.area_between_m2 = distances.area_between;
-  const Polyline lem_polygon = sliding_mass_polygon(ground, lem_line);
-  const auto overlap = mass_overlap(sph_polygon, lem_polygon);
-  m.sph_sliding_mass_area_m2 = overlap.area_a;
-  m.lem_sliding_mass_area_m2 = overlap.area_b;
-  m.intersection_area_m2 = overlap.intersection_area;
-  m.intersection_over_union = overlap.intersection_over_union;
-  if (!verdict && tells_verdict && sph.entry) verdict = verdict_text(key, critical, sph, lem_line, distances, overlap);
+  if (!verdict && tells_verdict && sph.entry)
+    verdict = verdict_text(key, critical, sph, circle.lem_line, circle.distances, circle.overlap) +
+              on_polyline.value_or("");
   return m;
 }
 
@@ -254,7 +281,7 @@ const MethodComparison* ComparisonResult::find(const std::string& method) const 
 }
 
 ComparisonResult compare_with_lem(const slope::Section& section, const SphFailure& sph, const slope::SearchResult& lem,
-                                  const ComparisonOptions& options) {
+                                  const ComparisonOptions& options, const slope::NonCircularResult* noncircular) {
   ComparisonResult result;
   result.sph = sph;
   result.initial_configuration = options.band.initial_configuration;
@@ -279,8 +306,12 @@ ComparisonResult compare_with_lem(const slope::Section& section, const SphFailur
   for (const auto& critical : lem.methods) {
     // The verdict is told against Bishop's circle when Bishop was asked for, else the first method with a surface.
     const bool tells_verdict = critical.method == slope::Method::bishop || !has_bishop;
-    result.methods.push_back(
-        compare_method(critical, sph, sph_mass, sph_surface, ground, sph_polygon, tells_verdict, verdict));
+    const slope::NonCircularSurface* polyline = nullptr;
+    if (noncircular != nullptr)
+      for (const slope::NonCircularSurface& s : noncircular->methods)
+        if (s.method == critical.method) polyline = &s;
+    result.methods.push_back(compare_method(critical, polyline, sph, sph_mass, sph_surface, ground, sph_polygon,
+                                            tells_verdict, verdict));
   }
   result.verdict = verdict ? *verdict : verdict_without_surfaces(sph, result.methods);
   if (verdict) result.verdict += like_for_like_text(result);

@@ -46,14 +46,7 @@ nlohmann::json sph_surface_json(const ComparisonResult& c) {
   return surface;
 }
 
-nlohmann::json method_json(const MethodComparison& m) {
-  nlohmann::json out;
-  out["lem_factor_of_safety"] = optional_number(m.lem_factor_of_safety);
-  out["factor_of_safety_on_sph_circle"] = optional_number(m.factor_of_safety_on_sph_circle);
-  if (m.on_sph_circle_error) out["factor_of_safety_on_sph_circle_error"] = *m.on_sph_circle_error;
-  out["factor_of_safety_on_sph_surface"] = optional_number(m.factor_of_safety_on_sph_surface);
-  if (m.on_sph_surface_error) out["factor_of_safety_on_sph_surface_error"] = *m.on_sph_surface_error;
-  if (!m.has_geometry) return out;
+void geometry_json(const SurfaceGeometry& m, nlohmann::json& out) {
   if (m.entry_offset_m) out["entry_offset_m"] = point_json(*m.entry_offset_m);
   if (m.exit_offset_m) out["exit_offset_m"] = point_json(*m.exit_offset_m);
   out["common_span_x_m"] = {m.common_from_x_m, m.common_to_x_m};
@@ -64,6 +57,23 @@ nlohmann::json method_json(const MethodComparison& m) {
   out["lem_sliding_mass_area_m2"] = m.lem_sliding_mass_area_m2;
   out["intersection_area_m2"] = m.intersection_area_m2;
   out["intersection_over_union"] = m.intersection_over_union;
+}
+
+nlohmann::json method_json(const MethodComparison& m) {
+  nlohmann::json out;
+  out["lem_factor_of_safety"] = optional_number(m.lem_factor_of_safety);
+  out["factor_of_safety_on_sph_circle"] = optional_number(m.factor_of_safety_on_sph_circle);
+  if (m.on_sph_circle_error) out["factor_of_safety_on_sph_circle_error"] = *m.on_sph_circle_error;
+  out["factor_of_safety_on_sph_surface"] = optional_number(m.factor_of_safety_on_sph_surface);
+  if (m.on_sph_surface_error) out["factor_of_safety_on_sph_surface_error"] = *m.on_sph_surface_error;
+  if (!m.has_geometry) return out;
+  geometry_json(m, out);
+  if (m.noncircular) {
+    nlohmann::json n = {{"factor_of_safety", m.noncircular->factor_of_safety},
+                        {"from_circle", m.noncircular->from_circle}};
+    geometry_json(*m.noncircular, n);
+    out["noncircular"] = std::move(n);
+  }
   return out;
 }
 

@@ -31,20 +31,32 @@ struct SphFailure {
 SphFailure extract_sph_failure(const ParticleSnapshot& particles, const Polyline& initial_ground,
                                const ComparisonOptions& options);
 
-// One LE method's critical surface against the SPH failure surface.
-struct MethodComparison {
+// Where an LE surface lies against the SPH failure surface (set when both surfaces exist).
+struct SurfaceGeometry {
+  std::optional<slope::Point> entry_offset_m, exit_offset_m;  // SPH - LEM (when the SPH band has ends)
+  double common_from_x_m = 0, common_to_x_m = 0;
+  double mean_normal_distance_m = 0, max_normal_distance_m = 0, area_between_m2 = 0;
+  double sph_sliding_mass_area_m2 = 0, lem_sliding_mass_area_m2 = 0, intersection_area_m2 = 0;
+  double intersection_over_union = 0;
+};
+
+// The method's non-circular critical surface (analyses.lem.noncircular_search) against the SPH surface.
+struct NonCircularComparison : SurfaceGeometry {
+  double factor_of_safety = 0;
+  bool from_circle = false;  // no polyline beat the circle: the geometry is the circle's
+};
+
+// One LE method's critical surface against the SPH failure surface: the circle's geometry (the SurfaceGeometry
+// fields), and that of the non-circular critical surface when it was searched for.
+struct MethodComparison : SurfaceGeometry {
   std::string method;                                     // method key
   std::optional<double> lem_factor_of_safety;             // its minimum FS (none: the method failed)
   std::optional<double> factor_of_safety_on_sph_circle;   // its FS on the SPH fitted circle
   std::optional<std::string> on_sph_circle_error;         // why that FS is missing
   std::optional<double> factor_of_safety_on_sph_surface;  // its FS on the SPH band line itself (sph_surface_lem.hpp)
   std::optional<std::string> on_sph_surface_error;        // why that FS is missing
-  bool has_geometry = false;                              // the figures below are set (both surfaces exist)
-  std::optional<slope::Point> entry_offset_m, exit_offset_m;  // SPH - LEM (when the SPH band has ends)
-  double common_from_x_m = 0, common_to_x_m = 0;
-  double mean_normal_distance_m = 0, max_normal_distance_m = 0, area_between_m2 = 0;
-  double sph_sliding_mass_area_m2 = 0, lem_sliding_mass_area_m2 = 0, intersection_area_m2 = 0;
-  double intersection_over_union = 0;
+  bool has_geometry = false;                              // the SurfaceGeometry fields are set
+  std::optional<NonCircularComparison> noncircular;       // with the non-circular search and an SPH band
 };
 
 // The SPH failure surface against every LEM method's critical surface; coupling/output/comparison_report writes
@@ -69,8 +81,11 @@ struct ComparisonResult {
 // Entry/exit offsets, mean/max normal distance, area between, sliding-mass areas and intersection over union for
 // every LEM method with a critical surface, the method's FS on the SPH fitted circle next to its minimum FS, and a
 // verdict against Bishop's circle (else the first method's).
+// With `noncircular` (the non-circular search's result), each method is also set against its non-circular critical
+// surface, and the verdict gains a sentence on it.
 ComparisonResult compare_with_lem(const slope::Section& section, const SphFailure& sph, const slope::SearchResult& lem,
-                                  const ComparisonOptions& options);
+                                  const ComparisonOptions& options,
+                                  const slope::NonCircularResult* noncircular = nullptr);
 
 // The slip surface of a critical LEM mass as a polyline from entry to exit.
 Polyline lem_surface_polyline(const slope::SlipMass& mass, int segments = 200);
