@@ -192,6 +192,37 @@ VertexSearch optimise_from_circle(SearchEngine& engine, std::size_t k, const Sli
   return search;
 }
 
+// Step 5 for one method: its best polyline through the public path, or its critical circle when the polyline does
+// not beat it (or the method was not searched).
+NonCircularSurface final_surface(const Section& section, const CriticalSurface& circle, const VertexSearch* search,
+                                 const SliceOptions& slicing) {
+  NonCircularSurface out;
+  out.method = circle.method;
+  out.circle_factor_of_safety = circle.result.factor_of_safety;
+  out.searched = search != nullptr;
+  if (search != nullptr) {
+    out.trial_surfaces = search->trials();
+    SlipPolyline surface;
+    surface.points = search->points();
+    surface.moment_point = search->moment_point();
+    std::optional<SlipMass> mass = slice_polyline(section, surface, slicing);
+    if (mass) {
+      FsResult fs = factor_of_safety(*mass, circle.method, true);
+      out.polyline_factor_of_safety = fs.factor_of_safety;
+      if (fs.factor_of_safety && *fs.factor_of_safety < *circle.result.factor_of_safety) {
+        out.mass = std::move(mass);
+        out.result = std::move(fs);
+      }
+    }
+  }
+  if (!out.mass) {
+    out.from_circle = circle.mass.has_value();
+    out.mass = circle.mass;
+    out.result = circle.result;
+  }
+  return out;
+}
+
 }  // namespace
 }  // namespace slope::detail
 
@@ -218,31 +249,8 @@ NonCircularResult search_noncircular(const Section& section, const SearchResult&
   }
   // 5. the result per method, through the public path
   for (std::size_t k = 0; k < methods.size(); ++k) {
-    const CriticalSurface& circle = circular.methods[k];
-    NonCircularSurface out;
-    out.method = methods[k];
-    out.circle_factor_of_safety = circle.result.factor_of_safety;
-    out.searched = searches[k].has_value();
-    if (searches[k]) {
-      out.trial_surfaces = searches[k]->trials();
-      SlipPolyline surface;
-      surface.points = searches[k]->points();
-      surface.moment_point = searches[k]->moment_point();
-      std::optional<SlipMass> mass = slice_polyline(section, surface, options.slicing);
-      if (mass) {
-        FsResult fs = factor_of_safety(*mass, methods[k], true);
-        out.polyline_factor_of_safety = fs.factor_of_safety;
-        if (fs.factor_of_safety && *fs.factor_of_safety < *circle.result.factor_of_safety) {
-          out.mass = std::move(mass);
-          out.result = std::move(fs);
-        }
-      }
-    }
-    if (!out.mass) {
-      out.from_circle = circle.mass.has_value();
-      out.mass = circle.mass;
-      out.result = circle.result;
-    }
+    NonCircularSurface out = detail::final_surface(section, circular.methods[k],
+                                                   searches[k] ? &*searches[k] : nullptr, options.slicing);
     result.trial_surfaces += out.trial_surfaces;
     result.methods.push_back(std::move(out));
   }
