@@ -114,15 +114,9 @@ class SearchEngine {
   // Slices a polyline surface (its own admissibility: ends on the ground, below it, above the base, concave) and
   // checks the entry/exit limits and the minimum depth, as for a circle.
   Admit admit(const SlipPolyline& surface) {
-    if (!slicer_.slice_polyline(surface, options_.slicing.slices, table_).empty()) {
-      ++polyline_rejections_;
-      return Admit::rejected;
-    }
+    if (!slicer_.slice_polyline(surface, options_.slicing.slices, table_).empty()) return Admit::rejected;
     return admit_table();
   }
-
-  // Rejections of polylines (admit(SlipPolyline)); they have their own reasons, not counted by kind.
-  long polyline_rejections() const { return polyline_rejections_; }
 
  private:
   // The limits that apply to every kind of surface, on the current table: entry and exit ranges, minimum depth.
@@ -240,7 +234,7 @@ class SearchEngine {
   double relief_ = 0.0, width_ = 0.0, minimum_depth_ = 0.0;
   long evaluations_ = 0;
   std::array<long, rejection_kinds> rejections_{};
-  long outside_limits_ = 0, too_shallow_ = 0, polyline_rejections_ = 0;
+  long outside_limits_ = 0, too_shallow_ = 0;
   std::vector<std::array<long, failure_kinds>> failures_;
   std::vector<std::array<std::string, failure_kinds>> failure_text_;
   std::array<Outcome, method_count> solutions_{};  // per method-table row, this trial's solutions
