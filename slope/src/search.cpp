@@ -5,6 +5,7 @@
 //    the other methods' critical circles; the critical surface is recomputed through the public path.
 #include "slope/search.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "search_internal.hpp"
@@ -50,13 +51,19 @@ SearchResult search_critical(const Section& section, const std::vector<Method>& 
   std::vector<detail::Trial> trials;
   std::vector<double> fs;  // trials x methods
   std::vector<double> row(n_methods);
+  std::size_t map_column = 0;
+  if (options.fs_map_method) {
+    const auto it = std::find(methods.begin(), methods.end(), *options.fs_map_method);
+    if (it != methods.end()) map_column = static_cast<std::size_t>(it - methods.begin());
+  }
   for (Circle circle : candidates) {
     if (engine.admit(circle, false, false) != detail::SearchEngine::Admit::ok) continue;
     engine.evaluate_all(row.data());
     const detail::SliceTable& t = engine.table();
     trials.push_back(detail::Trial{circle, t.entry, t.exit});
     fs.insert(fs.end(), row.begin(), row.end());
-    if (std::isfinite(row[0])) result.fs_map.push_back(FsMapEntry{circle, t.entry, t.exit, row[0]});
+    if (std::isfinite(row[map_column]))
+      result.fs_map.push_back(FsMapEntry{circle, t.entry, t.exit, row[map_column]});
   }
   if (trials.empty()) {
     std::ostringstream out;

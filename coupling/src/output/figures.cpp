@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "coupling/output/svg.hpp"
+#include "slope/safety_map.hpp"
 
 namespace coupling {
 
@@ -99,64 +100,82 @@ std::string section_figure_svg(const SectionFigureData& data) {
   return canvas.str();
 }
 
-std::string fs_map_svg(const slope::Section& section, const std::vector<slope::FsMapEntry>& fs_map,
-                       const std::optional<slope::Circle>& critical, const std::string& title) {
+std::vector<double> fs_band_edges(double lowest, double top) {
+  if (!(top > lowest)) top = lowest + 0.1;
+  const double step = nice_step(top - lowest, 10);
+  std::vector<double> edges;
+  for (double v = std::floor(lowest / step + 1e-9) * step; edges.empty() || edges.back() < top - 1e-9 * step;
+       v += step)
+    edges.push_back(std::round(v / step) * step);
+  return edges;
+}
+
+namespace {
+
+// Cells of the safety map as rectangles, one per run of equal band along a row; `band` maps a factor to its
+// band (-1: above the scale).
+void draw_safety_map(SvgCanvas& canvas, const slope::SafetyMap& map, const std::vector<double>& edges,
+                     const std::vector<std::string>& colours, const std::string& above) {
+  auto band = [&](double fs) {
+    for (std::size_t k = 0; k + 1 < edges.size(); ++k)
+      if (fs < edges[k + 1]) return static_cast<int>(k);
+    return -1;
+  };
+  const double h = map.cell * canvas.scale();
+  for (int iy = 0; iy < map.ny; ++iy) {
+    int ix = 0;
+    while (ix < map.nx) {
+      if (!std::isfinite(map.at(ix, iy))) {
+        ++ix;
+        continue;
+      }
+      const int b = band(map.at(ix, iy));
+      int end = ix + 1;
+      while (end < map.nx && std::isfinite(map.at(end, iy)) && band(map.at(end, iy)) == b) ++end;
+      const double x = canvas.px(map.x0 + ix * map.cell), y = canvas.py(map.y0 + (iy + 1) * map.cell);
+      canvas.rect_px(x, y, (end - ix) * h + 0.4, h + 0.4, b < 0 ? above : colours[static_cast<std::size_t>(b)]);
+      ix = end;
+    }
+  }
+}
+
+}  // namespace
+
+std::string fs_map_svg(const FsMapFigureData& data) {
+  const slope::Section& section = *data.section;
+  const slope::SafetyMap map = slope::safety_map(section, *data.trials, 160);
   Bounds bounds;
   for (const auto& line : section.profile_lines) bounds.add(line.points);
   bounds.add(section.x_min(), section.bottom_y);
-  // Centres of nearly flat circles lie far above the section; the map shows the window around the section
-  // (a quarter of its width on each side, three quarters above) and says how many centres it leaves out.
-  const double span = bounds.x_max - bounds.x_min;
-  const double window_x_min = bounds.x_min - 0.25 * span, window_x_max = bounds.x_max + 0.25 * span;
-  const double window_y_min = bounds.y_min, window_y_max = bounds.y_max + 0.75 * span;
-  std::vector<const slope::FsMapEntry*> shown;
-  for (const auto& entry : fs_map)
-    if (entry.circle.xc >= window_x_min && entry.circle.xc <= window_x_max && entry.circle.yc >= window_y_min &&
-        entry.circle.yc <= window_y_max)
-      shown.push_back(&entry);
-  double fs_min = std::numeric_limits<double>::infinity(), fs_max = 0.0;
-  for (const auto& entry : fs_map) {
-    fs_min = std::min(fs_min, entry.factor_of_safety);
-    fs_max = std::max(fs_max, entry.factor_of_safety);
-  }
-  for (const auto* entry : shown) {
-    bounds.add(entry->circle.xc, entry->circle.yc);
-  }
-  if (critical) bounds.add(critical->xc, critical->yc);
-  bounds.pad(0.03);
-  // Colour up to twice the minimum: the interesting range; higher values saturate.
-  const double fs_top = std::isfinite(fs_min) ? std::min(fs_max, 2.0 * fs_min) : 1.0;
-  if (!std::isfinite(fs_min)) fs_min = 0.0;
+  bounds.pad(0.02);
+  const double lowest = std::isfinite(map.lowest()) ? map.lowest() : 1.0;
+  const std::vector<double> edges = fs_band_edges(lowest, data.scale_max ? *data.scale_max : 1.5 * lowest);
+  std::vector<std::string> colours;
+  for (std::size_t k = 0; k + 1 < edges.size(); ++k)
+    colours.push_back(to_hex(safety_colour_map((k + 0.5) / static_cast<double>(edges.size() - 1))));
+  const std::string above = "#d9d9d9";
 
   SvgCanvas canvas(bounds.x_min, bounds.x_max, bounds.y_min, bounds.y_max);
-  const std::size_t hidden = fs_map.size() - shown.size();
-  canvas.title(title + " - " + std::to_string(fs_map.size()) + " trial circles" +
-               (hidden > 0 ? ", " + std::to_string(hidden) + " centres far above the section not shown" : ""));
+  canvas.title(data.title);
   draw_section(canvas, section);
-  // Highest factors first so the low (critical) ones are drawn on top.
-  std::vector<const slope::FsMapEntry*> order = shown;
-  std::sort(order.begin(), order.end(),
-            [](const auto* a, const auto* b) { return a->factor_of_safety > b->factor_of_safety; });
-  for (const auto* entry : order) {
-    const double t = fs_top > fs_min ? (entry->factor_of_safety - fs_min) / (fs_top - fs_min) : 0.0;
-    canvas.dot(entry->circle.xc, entry->circle.yc, 2.5, to_hex(colour_map(1.0 - t)));
-  }
+  draw_safety_map(canvas, map, edges, colours, above);
+  for (std::size_t k = 0; k < section.profile_lines.size(); ++k)
+    canvas.polyline(section.profile_lines[k].points, "#333", k == 0 ? 1.8 : 1.0, k == 0 ? "" : "5,3");
   std::vector<std::tuple<std::string, std::string, std::string>> legend;
-  if (critical) {
-    Polyline arc;
-    const double x_from = critical->xc - critical->radius, x_to = critical->xc + critical->radius;
-    for (const auto& p : circle_arc(*critical, x_from, x_to, 400))
-      if (p.y <= section.ground_y(p.x)) arc.push_back(p);
-    canvas.polyline(arc, "#d62728", 2.0);
-    canvas.dot(critical->xc, critical->yc, 4.0, "#d62728");
-    char label[64];
-    std::snprintf(label, sizeof label, "critical circle (FS = %.3f)", fs_min);
-    legend.emplace_back("#d62728", "", label);
+  if (data.critical_circle) {
+    canvas.polyline(data.critical_circle->points, "#ffffff", 4.5);
+    canvas.polyline(data.critical_circle->points, "#000000", 2.2);
+    legend.emplace_back("#000000", "", data.critical_circle->label);
   }
-  legend.emplace_back("#333", "", "ground surface");
+  if (data.critical_noncircular) {
+    canvas.polyline(data.critical_noncircular->points, "#ffffff", 4.5);
+    canvas.polyline(data.critical_noncircular->points, "#7b3294", 2.2, "8,4");
+    legend.emplace_back("#7b3294", "8,4", data.critical_noncircular->label);
+  }
+  legend.emplace_back("#333", "", "ground surface; dashed: layer boundaries");
+  legend.emplace_back("#e8e2d4", "", "soil that no trial circle crosses");
   canvas.legend(legend);
-  // The colour bar runs from high FS (dark) to low FS (yellow): reverse its labels.
-  canvas.colour_bar(fs_top, fs_min, "factor of safety (-), centres");
+  canvas.band_bar(edges, colours, above, "FS (-)");
   canvas.axes();
   return canvas.str();
 }

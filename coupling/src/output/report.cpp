@@ -147,7 +147,8 @@ nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& anal
   }
   lem["search"] = {{"trial_surfaces", result.trial_surfaces},
                    {"seconds", result.seconds},
-                   {"fs_map_method", analysis.methods.empty() ? "" : std::string(slope::method_key(analysis.methods[0]))},
+                   {"fs_map_method", analysis.search.fs_map_method ? std::string(slope::method_key(*analysis.search.fs_map_method))
+                                                                     : std::string()},
                    {"fs_map", std::move(map)}};
   if (!result.error.empty()) lem["search"]["error"] = result.error;
   if (!surfaces.empty()) {

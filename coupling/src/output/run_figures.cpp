@@ -9,6 +9,35 @@
 
 namespace coupling {
 
+namespace {
+
+// The safety map of the search for the scene's map method, with that method's critical surfaces.
+FsMapFigureData fs_map_data(const LemAnalysis& analysis, const WorkflowResult& out, const slope::Section& section) {
+  FsMapFigureData data;
+  data.section = &section;
+  data.trials = &out.lem->fs_map;
+  data.scale_max = analysis.fs_map_scale_max;
+  const slope::Method method = analysis.search.fs_map_method.value_or(slope::Method::bishop);
+  const std::string key(slope::method_key(method));
+  char label[128];
+  for (const auto& critical : out.lem->methods)
+    if (critical.method == method && critical.mass && critical.result.factor_of_safety) {
+      std::snprintf(label, sizeof label, "critical circle, FS = %.3f", *critical.result.factor_of_safety);
+      data.critical_circle = NamedSurface{label, lem_surface_polyline(*critical.mass)};
+    }
+  if (out.lem_noncircular)
+    for (const auto& s : out.lem_noncircular->methods)
+      if (s.method == method && s.searched && !s.from_circle && s.mass && s.result.factor_of_safety) {
+        std::snprintf(label, sizeof label, "critical non-circular surface, FS = %.3f", *s.result.factor_of_safety);
+        data.critical_noncircular = NamedSurface{label, s.mass->surface};
+      }
+  data.title = "Safety map of the search (" + key + "): lowest FS of the " + std::to_string(out.lem->fs_map.size()) +
+               " trial circles through each point";
+  return data;
+}
+
+}  // namespace
+
 // figures/section.svg (and figures/fs_map.svg after a limit-equilibrium search) in the output folder.
 void write_figures(const Scene& scene, const WorkflowResult& out, const std::optional<ParticleSnapshot>& final_state,
                    const std::optional<SphFailure>& failure, const std::filesystem::path& dir,
@@ -56,17 +85,8 @@ void write_figures(const Scene& scene, const WorkflowResult& out, const std::opt
   sph::write_file_atomically(figures / "section.svg", section_figure_svg(data));
   written.push_back("figures/section.svg");
 
-  if (out.lem && section && !out.lem->fs_map.empty()) {
-    std::optional<slope::Circle> critical;
-    for (const auto& c : out.lem->methods)
-      if (c.mass && c.result.factor_of_safety) {
-        critical = c.mass->circle;
-        break;
-      }
-    const std::string method =
-        out.lem->methods.empty() ? std::string() : std::string(slope::method_key(out.lem->methods.front().method));
-    sph::write_file_atomically(figures / "fs_map.svg",
-                 fs_map_svg(*section, out.lem->fs_map, critical, "Factor-of-safety map of the search (" + method + ")"));
+  if (out.lem && section && !out.lem->fs_map.empty() && scene.analyses.lem) {
+    sph::write_file_atomically(figures / "fs_map.svg", fs_map_svg(fs_map_data(*scene.analyses.lem, out, *section)));
     written.push_back("figures/fs_map.svg");
   }
   report["figures"] = written;

@@ -31,6 +31,17 @@ Rgb colour_map(double t) {
   return {mix(0), mix(1), mix(2)};
 }
 
+Rgb safety_colour_map(double t) {
+  static constexpr std::array<std::array<int, 3>, 6> stops{
+      {{165, 0, 38}, {244, 109, 67}, {253, 224, 144}, {224, 243, 248}, {116, 173, 209}, {49, 54, 149}}};
+  if (!std::isfinite(t)) t = 0.0;
+  t = std::clamp(t, 0.0, 1.0) * (stops.size() - 1);
+  const auto k = std::min<std::size_t>(static_cast<std::size_t>(t), stops.size() - 2);
+  const double f = t - static_cast<double>(k);
+  auto mix = [&](int c) { return static_cast<int>(std::lround(stops[k][c] + f * (stops[k + 1][c] - stops[k][c]))); };
+  return {mix(0), mix(1), mix(2)};
+}
+
 std::string xml_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
@@ -45,8 +56,6 @@ std::string xml_escape(const std::string& s) {
   return out;
 }
 
-namespace {
-
 double nice_step(double span, int target_ticks) {
   const double raw = span / std::max(1, target_ticks);
   const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
@@ -54,6 +63,8 @@ double nice_step(double span, int target_ticks) {
     if (m * magnitude >= raw) return m * magnitude;
   return 10.0 * magnitude;
 }
+
+namespace {
 
 std::string number(double v) {
   char buffer[32];
@@ -146,6 +157,27 @@ void SvgCanvas::colour_bar(double value_min, double value_max, const std::string
   }
   body_ << "<text x=\"" << number(x + 9) << "\" y=\"" << number(y_top - 10)
         << "\" font-size=\"12\" text-anchor=\"middle\">" << xml_escape(label) << "</text>\n";
+}
+
+void SvgCanvas::band_bar(const std::vector<double>& edges, const std::vector<std::string>& colours,
+                         const std::string& above_colour, const std::string& label) {
+  if (colours.empty() || edges.size() != colours.size() + 1) return;
+  const double x = px(x_max_) + 30, y_top = py(y_max_) + 14, height = std::max(150.0, py(y_min_) - y_top);
+  const double box = height / static_cast<double>(colours.size() + 1);
+  rect_px(x, y_top, 18, box - 3, above_colour, "#555");
+  char buffer[48];
+  std::snprintf(buffer, sizeof buffer, "> %.3g", edges.back());
+  text(x + 24, y_top + 0.5 * box + 2, buffer, 11);
+  for (std::size_t k = 0; k < colours.size(); ++k) {
+    const double y = y_top + box * static_cast<double>(colours.size() - k);
+    rect_px(x, y, 18, box + 0.5, colours[k]);
+  }
+  rect_px(x, y_top + box, 18, height - box, "none", "#555");
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    std::snprintf(buffer, sizeof buffer, "%.3g", edges[k]);
+    text(x + 24, y_top + box * static_cast<double>(edges.size() - k) + 4, buffer, 11);
+  }
+  text(x + 9, y_top - 4, label, 12, "middle");
 }
 
 void SvgCanvas::legend(const std::vector<std::tuple<std::string, std::string, std::string>>& entries) {

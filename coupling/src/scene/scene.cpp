@@ -96,6 +96,29 @@ std::string join(const std::vector<std::string>& words) {
   return out;
 }
 
+// analyses.lem.fs_map {"method", "colour_scale_max"}: which method the safety map of the search shows (one of
+// those analysed; default Bishop when analysed, else the first) and the top of its colour scale.
+void read_fs_map(JsonReader& lem, LemAnalysis& result, Diagnostics& diagnostics) {
+  std::vector<std::string> analysed;
+  for (slope::Method method : result.methods) analysed.emplace_back(slope::method_key(method));
+  const bool has_bishop =
+      std::find(result.methods.begin(), result.methods.end(), slope::Method::bishop) != result.methods.end();
+  if (!result.methods.empty()) result.search.fs_map_method = has_bishop ? slope::Method::bishop : result.methods[0];
+  auto map = lem.object("fs_map", Need::optional, "an object: {\"method\": \"bishop\", \"colour_scale_max\": 2.0}");
+  if (!map) return;
+  if (const auto key = map->string("method", Need::optional)) {
+    const auto method = slope::method_from_key(*key);
+    if (!method || std::find(result.methods.begin(), result.methods.end(), *method) == result.methods.end())
+      diagnostics.error(map->path_of("method"), "\"" + *key + "\" is not one of the methods analysed (allowed: " +
+                                                     join(analysed) + ")");
+    else
+      result.search.fs_map_method = *method;
+  }
+  if (const auto top = map->number("colour_scale_max", Need::optional, Bounds::positive()))
+    result.fs_map_scale_max = *top;
+  map->finish();
+}
+
 void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics& diagnostics) {
   auto lem = analyses.object("lem", Need::optional, "an object (may be empty: {})");
   if (!lem) return;
@@ -152,6 +175,7 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
     }
     noncircular->finish();
   }
+  read_fs_map(*lem, result, diagnostics);
   read_given_surfaces(*lem, scene.section ? &scene.section->section : nullptr, result.search.slicing,
                       result.surfaces);
   lem->finish();

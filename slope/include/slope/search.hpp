@@ -41,6 +41,9 @@ struct SearchOptions {
   // vertex that shapes the ground, at most as many); a user entry/exit range gets 17/41 of them. More points: a
   // finer and slower coarse search.
   int entry_exit_samples = 41;
+  // The method whose coarse-search factors go to SearchResult::fs_map (must be one of those asked for; empty: the
+  // first one asked for).
+  std::optional<Method> fs_map_method;
 };
 
 // One trial surface of the coarse search, for the factor-of-safety map.
@@ -59,7 +62,7 @@ struct CriticalSurface {
 
 struct SearchResult {
   std::vector<CriticalSurface> methods;  // in the order asked for
-  std::vector<FsMapEntry> fs_map;        // coarse-search trials that converged (first method asked for)
+  std::vector<FsMapEntry> fs_map;        // coarse-search trials that converged (SearchOptions::fs_map_method)
   long trial_surfaces = 0;               // all factor-of-safety evaluations, all methods
   double seconds = 0.0;                  // wall time of the whole search
   std::string error;                     // non-empty when the limits admit no valid circle at all

@@ -28,8 +28,23 @@ struct SectionFigureData {
 
 std::string section_figure_svg(const SectionFigureData& data);
 
-// Trial-circle centres coloured by factor of safety, with the section and the critical circle.
-std::string fs_map_svg(const slope::Section& section, const std::vector<slope::FsMapEntry>& fs_map,
-                       const std::optional<slope::Circle>& critical, const std::string& title);
+// The safety map of the search (slope/safety_map.hpp) for one method: each cell of the section coloured by the
+// lowest factor of safety of the trial circles through it, in bands of a colour scale clipped to
+// [lowest, scale_max] (cells above it in one pale colour), with that method's critical circular and non-circular
+// surfaces drawn on it.
+struct FsMapFigureData {
+  std::string title;
+  const slope::Section* section = nullptr;
+  const std::vector<slope::FsMapEntry>* trials = nullptr;
+  std::optional<double> scale_max;                   // top of the colour scale (absent: 1.5 x the lowest factor)
+  std::optional<NamedSurface> critical_circle;       // the method's critical circle
+  std::optional<NamedSurface> critical_noncircular;  // and its non-circular critical surface
+};
+
+std::string fs_map_svg(const FsMapFigureData& data);
+
+// Band edges of the safety map's colour scale: "nice" steps (0.05, 0.1, 0.2, ...) from at or below `lowest` to at or
+// above `top`, about ten bands; a value of 1.0 inside the range always falls on an edge.
+std::vector<double> fs_band_edges(double lowest, double top);
 
 }  // namespace coupling

@@ -17,6 +17,10 @@ std::string to_hex(Rgb colour);
 std::string xml_escape(const std::string& text);
 // Perceptually ordered colour map (dark blue → green → yellow) for t in [0, 1].
 Rgb colour_map(double t);
+// Diverging map for factors of safety: dark red (t = 0, critical) through pale yellow to dark blue (t = 1, safe).
+Rgb safety_colour_map(double t);
+// "Nice" tick step (1, 2, 2.5, 5 x 10^k) giving about `target_ticks` steps over `span`.
+double nice_step(double span, int target_ticks);
 
 class SvgCanvas {
  public:
@@ -39,6 +43,10 @@ class SvgCanvas {
   void axes(const std::string& x_label = "x (m)", const std::string& y_label = "y (m)");
   // Vertical colour bar at the right margin, labelled with its quantity and unit.
   void colour_bar(double value_min, double value_max, const std::string& label);
+  // Discrete colour bar at the right margin: band k (colours[k]) spans edges[k]..edges[k + 1], lowest at the
+  // bottom; above it one box in `above_colour` for values over the last edge; labelled with quantity and unit.
+  void band_bar(const std::vector<double>& edges, const std::vector<std::string>& colours,
+                const std::string& above_colour, const std::string& label);
   // Legend entries (colour, dash, label), laid out in columns below the plot.
   void legend(const std::vector<std::tuple<std::string, std::string, std::string>>& entries);
   void title(const std::string& content);

@@ -53,6 +53,9 @@ struct LemAnalysis {
   bool methods_given = false;           // the scene listed analyses.lem.methods (else the default list)
   // analyses.lem.noncircular_search: the non-circular search after the circular one (absent: not run)
   std::optional<slope::NonCircularOptions> noncircular;
+  // analyses.lem.fs_map: the safety map's method goes to search.fs_map_method (default Bishop when it is analysed,
+  // else the first method); the top of its colour scale (absent: 1.5 x the lowest factor on the map).
+  std::optional<double> fs_map_scale_max;
 };
 
 // The analyses the scene asks for, each read once into its typed settings (defaults applied).
