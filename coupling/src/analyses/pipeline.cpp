@@ -8,6 +8,7 @@
 #include "coupling/analyses/sph_model.hpp"
 #include "coupling/analyses/stage.hpp"
 #include "coupling/output/report.hpp"
+#include "coupling/output/report_html.hpp"
 #include "coupling/output/run_figures.hpp"
 #include "sph/engine/atomic_file.hpp"
 
@@ -68,10 +69,12 @@ void write_run_figures(const Scene& scene, StageContext& context, std::vector<st
   }
 }
 
-void write_report(const std::filesystem::path& dir, WorkflowResult& out) {
+void write_report(const Scene& scene, const std::filesystem::path& dir, WorkflowResult& out) {
   try {
     std::filesystem::create_directories(dir);
     const std::filesystem::path file = dir / "report.json";
+    out.report["report_html"] = "report.html";
+    sph::write_file_atomically(dir / "report.html", report_html(scene, out.report, dir));
     sph::write_file_atomically(file, report_text(out.report));
     out.report_file = file;
   } catch (const std::exception& error) {
@@ -93,7 +96,7 @@ void finish_run(const Scene& scene, StageContext& context, std::vector<std::stri
   out.report["errors"] = failures;
   out.errors = failures;
   out.report["timing_s"]["total"] = seconds_since(start);
-  if (options.output_dir) write_report(*options.output_dir, out);
+  if (options.output_dir) write_report(scene, *options.output_dir, out);
   out.sph_final_state = std::move(context.final_state);
 }
 

@@ -189,7 +189,11 @@ void SvgCanvas::title(const std::string& content) { text(left_, 24, content, 15)
 std::string SvgCanvas::str() const {
   std::ostringstream out;
   const double width = left_ + plot_w_ + right_;
-  constexpr double row_height = 20.0, column_width = 330.0;
+  constexpr double row_height = 20.0;
+  // Columns as wide as the longest label needs (about 6.8 px a character at 12 px), at least 200 px.
+  std::size_t longest = 0;
+  for (const auto& entry : legend_) longest = std::max(longest, std::get<2>(entry).size());
+  const double column_width = std::max(200.0, 58.0 + 6.8 * static_cast<double>(longest));
   const auto columns = static_cast<std::size_t>(std::max(1.0, std::floor(plot_w_ / column_width)));
   const std::size_t rows = (legend_.size() + columns - 1) / columns;
   const double legend_top = top_ + plot_h_ + bottom_;

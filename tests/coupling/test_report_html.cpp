@@ -1,0 +1,92 @@
+// report.html: the page's content follows report.json (every factor in the table, the verdict, the warnings) and
+// stands alone (figures inlined). Its one-page layout is checked in Chromium by scripts/check-report-html.
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "coupling/analyses/pipeline.hpp"
+#include "coupling/output/report_html.hpp"
+#include "coupling/scene/scene.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::size_t count(const std::string& text, const std::string& word) {
+  std::size_t n = 0;
+  for (auto at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
+  return n;
+}
+
+std::string three_decimals(const json& value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f", value.get<double>());
+  return buffer;
+}
+
+}  // namespace
+
+TEST_CASE("report.html of a limit-equilibrium run: every factor of the report, both figures inlined",
+          "[report_html][lem]") {
+  json scene = json::parse(std::ifstream(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / "acads_ex3_weak_layer.json"));
+  scene["name"] = "Weak layer <ACADS 3> & its \"specified\" surface";
+  const coupling::Scene parsed = coupling::parse_scene(scene.dump(), "acads3.json");
+  const fs::path dir = fs::temp_directory_path() / "sphslope_report_html";
+  fs::remove_all(dir);
+  coupling::WorkflowOptions options;
+  options.mode = coupling::Mode::lem;
+  options.output_dir = dir;
+  const coupling::WorkflowResult out = coupling::run_scene(parsed, options);
+  REQUIRE(out.status == coupling::ExitStatus::ok);
+  CHECK(out.report["report_html"] == "report.html");
+  const std::string html = read_text(dir / "report.html");
+  CHECK(html.rfind("<!DOCTYPE html>", 0) == 0);
+  CHECK_THAT(html, Catch::Contains("Weak layer &lt;ACADS 3&gt; &amp; its &quot;specified&quot; surface"));
+  CHECK_THAT(html, Catch::Contains("class=\"status ok\""));
+  const json& lem = out.report["lem"];
+  for (const auto& [key, method] : lem["methods"].items()) {
+    INFO(key);
+    CHECK_THAT(html, Catch::Contains("<td class=\"l\">" + key + "</td>"));
+    CHECK_THAT(html, Catch::Contains(three_decimals(method["factor_of_safety"])));
+    CHECK_THAT(html, Catch::Contains(three_decimals(lem["noncircular"]["methods"][key]["factor_of_safety"])));
+    CHECK_THAT(html, Catch::Contains(three_decimals(lem["surfaces"][0]["methods"][key]["factor_of_safety"])));
+  }
+  // the lowest of each column is marked: Janbu simplified on the specified surface (1.197, ACADS 3(b))
+  CHECK_THAT(html, Catch::Contains("class=\"low\">" + three_decimals(lem["surfaces"][0]["methods"]["janbu"]["factor_of_safety"])));
+  CHECK(count(html, "<svg") == 2);  // section and safety map, inlined
+  CHECK(count(html, "<?xml") == 0);
+  CHECK_THAT(html, Catch::Contains("Warnings and errors</h2>\n<p>None.</p>"));
+  CHECK_THAT(html, !Catch::Contains("nan") && !Catch::Contains("null"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("report.html lists errors and warnings once each, marks a failed run, names a missing figure",
+          "[report_html]") {
+  const coupling::Scene scene = coupling::parse_scene(
+      read_text(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / "griffiths_lane_1999.json"), "gl.json");
+  json report = {{"status", "failed"},
+                 {"analyses", {"lem", "sph"}},
+                 {"errors", {"sph: the run stopped: non-positive density"}},
+                 {"sph", {{"warnings", {"gravity applied suddenly", "gravity applied suddenly"}}}},
+                 {"figures", {"figures/missing.svg"}},
+                 {"timing_s", {{"total", 1.5}}}};
+  const std::string html = coupling::report_html(scene, report, fs::temp_directory_path() / "no_such_run_folder");
+  CHECK_THAT(html, Catch::Contains("class=\"status failed\""));
+  CHECK_THAT(html, Catch::Contains("<li>sph: the run stopped: non-positive density</li>"));
+  CHECK(count(html, "gravity applied suddenly") == 1);
+  CHECK_THAT(html, Catch::Contains("figures/missing.svg could not be read"));
+  CHECK_THAT(html, !Catch::Contains("Limit equilibrium: factor of safety"));  // no lem block, no table
+  CHECK_THAT(html, Catch::Contains("<td class=\"l\">soil</td><td>20.00</td><td>10.0</td><td>20.0</td>"));
+}
