@@ -10,6 +10,7 @@
 #include "coupling/analyses/pipeline.hpp"
 #include "coupling/output/figures.hpp"
 #include "coupling/scene/scene.hpp"
+#include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -18,13 +19,6 @@ namespace {
 
 json weak_layer_scene() {
   return json::parse(std::ifstream(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / "acads_ex3_weak_layer.json"));
-}
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 }  // namespace
@@ -73,12 +67,9 @@ TEST_CASE("analyses.lem.fs_map: method defaults to Bishop, refused when not anal
   scene["analyses"]["lem"]["methods"] = {"bishop", "spencer"};
   scene["analyses"]["lem"]["fs_map"] = {{"method", "spencer"}, {"colour_scale_max", 2.0}};
   const coupling::Scene parsed = coupling::parse_scene(scene.dump());
-  const fs::path dir = fs::temp_directory_path() / "sphslope_fs_map_figure";
-  fs::remove_all(dir);
-  coupling::WorkflowOptions options;
-  options.mode = coupling::Mode::lem;
-  options.output_dir = dir;
-  const coupling::WorkflowResult out = coupling::run_scene(parsed, options);
+  const TemporaryFolder folder("fs-map");
+  const fs::path& dir = folder.path;
+  const coupling::WorkflowResult out = run_lem_into(parsed, dir);
   REQUIRE(out.status == coupling::ExitStatus::ok);
   CHECK(out.report["lem"]["search"]["fs_map_method"] == "spencer");
   const std::string svg = read_text(dir / "figures" / "fs_map.svg");
@@ -90,5 +81,4 @@ TEST_CASE("analyses.lem.fs_map: method defaults to Bishop, refused when not anal
                 out.report["lem"]["noncircular"]["methods"]["spencer"]["factor_of_safety"].get<double>());
   CHECK_THAT(svg, Catch::Contains(circle) && Catch::Contains(polyline));
   CHECK_THAT(svg, Catch::Contains("&gt; 2<"));  // the scale stops at the given 2.0
-  fs::remove_all(dir);
 }

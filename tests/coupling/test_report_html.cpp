@@ -11,18 +11,12 @@
 #include "coupling/analyses/pipeline.hpp"
 #include "coupling/output/report_html.hpp"
 #include "coupling/scene/scene.hpp"
+#include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::size_t count(const std::string& text, const std::string& word) {
   std::size_t n = 0;
@@ -43,12 +37,9 @@ TEST_CASE("report.html of a limit-equilibrium run: every factor of the report, b
   json scene = json::parse(std::ifstream(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / "acads_ex3_weak_layer.json"));
   scene["name"] = "Weak layer <ACADS 3> & its \"specified\" surface";
   const coupling::Scene parsed = coupling::parse_scene(scene.dump(), "acads3.json");
-  const fs::path dir = fs::temp_directory_path() / "sphslope_report_html";
-  fs::remove_all(dir);
-  coupling::WorkflowOptions options;
-  options.mode = coupling::Mode::lem;
-  options.output_dir = dir;
-  const coupling::WorkflowResult out = coupling::run_scene(parsed, options);
+  const TemporaryFolder folder("report-html");
+  const fs::path& dir = folder.path;
+  const coupling::WorkflowResult out = run_lem_into(parsed, dir);
   REQUIRE(out.status == coupling::ExitStatus::ok);
   CHECK(out.report["report_html"] == "report.html");
   const std::string html = read_text(dir / "report.html");
@@ -69,7 +60,6 @@ TEST_CASE("report.html of a limit-equilibrium run: every factor of the report, b
   CHECK(count(html, "<?xml") == 0);
   CHECK_THAT(html, Catch::Contains("Warnings and errors</h2>\n<p>None.</p>"));
   CHECK_THAT(html, !Catch::Contains("nan") && !Catch::Contains("null"));
-  fs::remove_all(dir);
 }
 
 TEST_CASE("report.html lists errors and warnings once each, marks a failed run, names a missing figure",

@@ -6,11 +6,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
 #include <nlohmann/json.hpp>
+
+#include "coupling/analyses/pipeline.hpp"
 
 // A fresh, empty temporary folder, removed when the test ends.
 struct TemporaryFolder {
@@ -50,4 +53,18 @@ inline ProgramRun run_sphslope(const std::string& arguments) {
   const int raw = ::pclose(pipe);
   result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   return result;
+}
+
+inline std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in.good()) throw std::runtime_error("cannot read " + file.string());  // fails the test
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Limit equilibrium only (as `sphslope lem -o dir`), writing report.json, report.html and the figures into dir.
+inline coupling::WorkflowResult run_lem_into(const coupling::Scene& scene, const std::filesystem::path& dir) {
+  coupling::WorkflowOptions options;
+  options.mode = coupling::Mode::lem;
+  options.output_dir = dir;
+  return coupling::run_scene(scene, options);
 }

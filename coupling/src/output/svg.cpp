@@ -15,31 +15,32 @@ std::string to_hex(Rgb c) {
   return buffer;
 }
 
-Rgb colour_map(double t) {
-  // Control points sampled from a viridis-like ramp.
-  static constexpr std::array<std::array<int, 3>, 6> stops{{{68, 1, 84},
-                                                            {65, 68, 135},
-                                                            {42, 120, 142},
-                                                            {34, 168, 132},
-                                                            {122, 209, 81},
-                                                            {253, 231, 37}}};
+namespace {
+
+// Linear interpolation between evenly spaced colour stops, t in [0, 1] (clamped; NaN counts as 0).
+template <std::size_t N>
+Rgb interpolate(const std::array<std::array<int, 3>, N>& stops, double t) {
   if (!std::isfinite(t)) t = 0.0;
-  t = std::clamp(t, 0.0, 1.0) * (stops.size() - 1);
-  const auto k = std::min<std::size_t>(static_cast<std::size_t>(t), stops.size() - 2);
+  t = std::clamp(t, 0.0, 1.0) * (N - 1);
+  const auto k = std::min<std::size_t>(static_cast<std::size_t>(t), N - 2);
   const double f = t - static_cast<double>(k);
   auto mix = [&](int c) { return static_cast<int>(std::lround(stops[k][c] + f * (stops[k + 1][c] - stops[k][c]))); };
   return {mix(0), mix(1), mix(2)};
 }
 
+}  // namespace
+
+Rgb colour_map(double t) {
+  // Control points sampled from a viridis-like ramp.
+  static constexpr std::array<std::array<int, 3>, 6> stops{
+      {{68, 1, 84}, {65, 68, 135}, {42, 120, 142}, {34, 168, 132}, {122, 209, 81}, {253, 231, 37}}};
+  return interpolate(stops, t);
+}
+
 Rgb safety_colour_map(double t) {
   static constexpr std::array<std::array<int, 3>, 6> stops{
       {{165, 0, 38}, {244, 109, 67}, {253, 224, 144}, {224, 243, 248}, {116, 173, 209}, {49, 54, 149}}};
-  if (!std::isfinite(t)) t = 0.0;
-  t = std::clamp(t, 0.0, 1.0) * (stops.size() - 1);
-  const auto k = std::min<std::size_t>(static_cast<std::size_t>(t), stops.size() - 2);
-  const double f = t - static_cast<double>(k);
-  auto mix = [&](int c) { return static_cast<int>(std::lround(stops[k][c] + f * (stops[k + 1][c] - stops[k][c]))); };
-  return {mix(0), mix(1), mix(2)};
+  return interpolate(stops, t);
 }
 
 std::string xml_escape(const std::string& s) {
