@@ -181,6 +181,60 @@ TEST_CASE("an SPH run killed mid-way and resumed ends in the same state as an un
   fs::remove_all(dir);
 }
 
+// Issue 14: the strength reduction resumes. Griffiths & Lane at 1 m (220 soil particles, 4 trials, ~15 s), killed
+// with SIGKILL in its second trial (the first one journalled, the second checkpointed); --resume answers the first
+// trial from srm_trials.json, continues the second from its checkpoint, and every trial and FS_SPH come out exactly
+// as in the uninterrupted run. A journal written for other settings is refused.
+TEST_CASE("a strength reduction killed mid-trial and resumed gives the same trials and FS", "[srm][resume][cli]") {
+  const fs::path dir = fresh_dir("srm_resume");
+  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/griffiths_lane_1999_srm.json");
+  scene["analyses"]["sph"]["particle_spacing_m"] = 1.0;
+  scene["analyses"]["sph"]["checkpoint_interval_s"] = 0.05;
+  scene["analyses"]["srm"] = {{"tolerance", 0.2}};
+  scene["analyses"]["lem"] = {{"methods", {"bishop"}}};
+  write_json(dir / "scene.json", scene);
+  const std::string scene_file = (dir / "scene.json").string();
+  REQUIRE(run_program("run \"" + scene_file + "\" -o \"" + (dir / "whole").string() + "\"") == 0);
+
+  const fs::path killed = dir / "killed";
+  const pid_t pid = spawn_program({"run", scene_file, "-o", killed.string()});
+  REQUIRE(pid > 0);
+  auto journalled = [&] {
+    try {
+      return fs::exists(killed / "srm_trial_checkpoint.bin") &&
+             read_json(killed / "srm_trials.json")["trials"].size() >= 1;
+    } catch (const std::exception&) {
+      return false;  // not written yet
+    }
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(300);
+  while (!journalled() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  REQUIRE(WIFSIGNALED(status));
+  REQUIRE_FALSE(fs::exists(killed / "report.json"));
+  const nlohmann::json journal = read_json(killed / "srm_trials.json");
+  REQUIRE(journal["in_progress_factor"].is_number());
+
+  REQUIRE(run_program("run \"" + scene_file + "\" -o \"" + killed.string() + "\" --resume") == 0);
+  const nlohmann::json whole = read_json(dir / "whole/report.json")["srm"];
+  const nlohmann::json resumed = read_json(killed / "report.json")["srm"];
+  CHECK(resumed["factor_of_safety"] == whole["factor_of_safety"]);
+  REQUIRE(resumed["trials"].size() == whole["trials"].size());
+  for (std::size_t k = 0; k < whole["trials"].size(); ++k) {
+    INFO("trial " << k);
+    for (const char* key : {"factor", "failed", "max_displacement_m", "simulated_time_s", "stopped_because"})
+      CHECK(resumed["trials"][k][key] == whole["trials"][k][key]);
+  }
+
+  scene["analyses"]["srm"]["tolerance"] = 0.1;  // another bisection: the journal must not be reused
+  write_json(dir / "other.json", scene);
+  CHECK(run_program("run \"" + (dir / "other.json").string() + "\" -o \"" + killed.string() + "\" --resume") == 2);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("an SPH run killed at any moment leaves a checkpoint that loads", "[sph][resume][cli]") {
   // Checkpoints every millisecond of wall time (about every step), SIGKILL at moments spread over ~1 s of
   // stepping: each time, the checkpoint on disk must be a whole one (its checksum and sizes are checked by

@@ -30,7 +30,8 @@ StageOutcome run_srm_stage(const Scene& scene, StageContext& context) {
       }
   try {
     const SrmOptions& srm = *scene.analyses.srm;
-    const SrmResult result = run_strength_reduction(scene, srm, bishop, lem_fs, options.log);
+    const SrmResult result =
+        run_strength_reduction(scene, srm, bishop, lem_fs, options.log, SrmFiles{options.output_dir, options.resume});
     out.report["srm"] = srm_report(result);
     if (!result.ok) {
       outcome.status = ExitStatus::failed;

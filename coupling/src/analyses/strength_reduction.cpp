@@ -10,7 +10,9 @@
 
 #include "coupling/analyses/sph_model.hpp"
 #include "coupling/analyses/sph_stage.hpp"
+#include "sph/soil/checkpoint.hpp"
 #include "sph/soil/run.hpp"
+#include "srm_journal.hpp"
 #include "sphslope/units.hpp"
 
 namespace coupling {
@@ -139,14 +141,15 @@ double max_soil_displacement(const sph::ParticleSet& p) {
 }
 
 // The failure test of a trial, as an observer of the run: stops it once any soil particle has moved more than the
-// limit from where it started. Checked after every tenth step (steps 9, 19, 29, ...): the maximum over the soil
-// particles costs as much as a tenth of a step, and a slope that has failed keeps moving.
+// limit from where it started. Checked after every tenth step (steps 9, 19, 29, ... of the run's own count, so a
+// resumed trial checks at the same steps): the maximum over the soil particles costs as much as a tenth of a step,
+// and a slope that has failed keeps moving.
 class DisplacementLimit : public sph::Observer {
  public:
   explicit DisplacementLimit(double limit_m) : limit_m_(limit_m) {}
 
-  std::string after_step(const sph::ParticleSet& particles, const sph::RunState&, const sph::Energies&) override {
-    if (++steps_ % 10 != 9) return {};
+  std::string after_step(const sph::ParticleSet& particles, const sph::RunState& state, const sph::Energies&) override {
+    if (state.step % 10 != 9) return {};
     exceeded_ = max_soil_displacement(particles) > limit_m_;
     return exceeded_ ? "displacement_limit" : std::string();
   }
@@ -154,7 +157,6 @@ class DisplacementLimit : public sph::Observer {
 
  private:
   double limit_m_;
-  std::uint64_t steps_ = 0;
   bool exceeded_ = false;
 };
 
@@ -187,8 +189,8 @@ void log_trial(const SrmTrial& trial, double factor, std::ostream* log) {
 // The failure oracle of the bisection: one damped SPH run of the slope with every strength divided by F.
 class TrialRunner {
  public:
-  TrialRunner(const sph::Model& pristine, const SrmPlan& plan, std::ostream* log)
-      : pristine_(pristine), plan_(plan), log_(log) {
+  TrialRunner(const sph::Model& pristine, const SrmPlan& plan, std::ostream* log, SrmJournal* journal)
+      : pristine_(pristine), plan_(plan), log_(log), journal_(journal) {
     for (const auto& m : pristine.materials) {
       cohesion_.push_back(m.cohesion);
       friction_.push_back(m.friction_angle_deg);
@@ -197,7 +199,20 @@ class TrialRunner {
   }
 
   SrmTrial operator()(double factor) const {
+    if (journal_)
+      if (std::optional<SrmTrial> done = journal_->finished(factor)) {
+        if (log_) *log_ << "srm: F = " << format_number(factor) << ": from " << "srm_trials.json (finished before)\n";
+        return *done;
+      }
     sph::Model model = reduced_model(factor);
+    if (journal_) {
+      if (journal_->can_continue(factor)) {
+        sph::read_checkpoint(journal_->checkpoint().string(), model);
+        if (log_)
+          *log_ << "srm: F = " << format_number(factor) << ": continuing at t = " << model.state.time << " s\n";
+      }
+      journal_->start(factor);
+    }
     bool interrupted = false;
     DisplacementLimit displacement(plan_.failure_displacement);
     sph::RunCallbacks callbacks;
@@ -206,7 +221,8 @@ class TrialRunner {
     const sph::RunSummary summary = sph::run(model, run_options(), callbacks);
     if (interrupted)
       throw std::runtime_error("interrupted during the trial at F = " + format_number(factor) +
-                               " (strength reduction cannot be resumed; run it again)");
+                               (journal_ ? "; its state is saved: continue with --resume (same scene, same -o DIR)"
+                                         : " (without an output folder nothing is saved; run it again)"));
     const bool displaced = displacement.exceeded();
     SrmTrial trial;
     trial.factor = factor;
@@ -215,6 +231,7 @@ class TrialRunner {
     trial.wall_seconds = summary.wall_seconds;
     trial.stopped_because = displaced ? "displacement_limit" : summary.stopped_because;
     judge_trial(summary, displaced, plan_.failure_displacement, trial);
+    if (journal_) journal_->finish(trial);
     log_trial(trial, factor, log_);
     return trial;
   }
@@ -234,7 +251,8 @@ class TrialRunner {
     sph::RunOptions options;
     options.quasi_static_speed = plan_.rest_speed;
     options.quasi_static_min_time = plan_.min_time;
-    options.checkpoint_on_stop = false;
+    if (journal_) options.checkpoint_path = journal_->checkpoint().string();
+    options.checkpoint_on_stop = journal_ != nullptr;
     options.progress_interval_wall_s = 1e9;
     return options;
   }
@@ -242,6 +260,7 @@ class TrialRunner {
   const sph::Model& pristine_;
   const SrmPlan& plan_;
   std::ostream* log_;
+  SrmJournal* journal_;  // null: no output folder
   std::vector<double> cohesion_, friction_, dilatancy_;
 };
 
@@ -260,6 +279,21 @@ SrmBracket initial_bracket(const SrmOptions& options, std::optional<double> lem_
   return bracket;
 }
 
+// What the trials depend on: a journal written for other values cannot be resumed.
+nlohmann::json journal_fingerprint(const sph::Model& pristine, const SrmPlan& plan, const SrmBracket& bracket,
+                                   const SrmOptions& options) {
+  nlohmann::json strengths = nlohmann::json::array();
+  for (const auto& m : pristine.materials)
+    strengths.push_back({m.cohesion, m.friction_angle_deg, m.dilatancy_angle_deg});
+  return {{"particle_spacing_m", pristine.settings.particle_spacing},
+          {"particles", pristine.particles.size()},
+          {"plan", {plan.damping, plan.max_time, plan.failure_displacement, plan.rest_speed, plan.min_time}},
+          {"bracket", {bracket.lo, bracket.hi}},
+          {"tolerance", options.tolerance},
+          {"max_trials", options.max_trials},
+          {"strengths", std::move(strengths)}};
+}
+
 // The loads SPH left out (only those listed in analyses.sph.ignore_loads).
 std::vector<std::string> left_out_load_warnings(const Scene& scene) {
   std::vector<std::string> warnings;
@@ -272,7 +306,8 @@ std::vector<std::string> left_out_load_warnings(const Scene& scene) {
 }  // namespace
 
 SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, std::optional<double> lem_bishop_fs,
-                                 const std::map<std::string, double>& lem_fs_by_method, std::ostream* log) {
+                                 const std::map<std::string, double>& lem_fs_by_method, std::ostream* log,
+                                 const SrmFiles& files) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   if (!scene.section || !scene.analyses.sph) throw SceneError({"analyses.srm: needs a slope section and analyses.sph"});
@@ -284,7 +319,7 @@ SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, 
   pristine.settings.damping = plan.damping;
   pristine.settings.end_time = plan.max_time;
   pristine.settings.output_interval = 0.0;
-  pristine.settings.checkpoint_interval_wall_s = 0.0;
+  if (!files.dir) pristine.settings.checkpoint_interval_wall_s = 0.0;  // else the scene's, for the trial in progress
 
   const SrmBracket bracket = initial_bracket(options, lem_bishop_fs);
   if (log)
@@ -293,8 +328,14 @@ SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, 
          << " s, failure at displacement > " << plan.failure_displacement << " m, bracket [" << bracket.lo << ", "
          << bracket.hi << "] (" << bracket.source << ")\n";
 
+  std::optional<SrmJournal> journal;
+  if (files.dir) {
+    journal.emplace(*files.dir, journal_fingerprint(pristine, plan, bracket, options), files.resume);
+    if (log && files.resume)
+      *log << "srm: resuming: " << journal->finished_count() << " trial(s) finished before\n";
+  }
   SrmResult result;
-  const TrialRunner oracle(pristine, plan, log);
+  const TrialRunner oracle(pristine, plan, log, journal ? &*journal : nullptr);
   result.bisection = bisect_factor(oracle, bracket.lo, bracket.hi, options.tolerance, options.max_trials);
   const BisectionResult& b = result.bisection;
   result.ok = b.bracketed && b.error.empty();

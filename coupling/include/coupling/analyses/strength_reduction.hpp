@@ -4,6 +4,7 @@
 // damping to a quasi-static state, and a displacement criterion decides whether it failed; F is bisected between a
 // stable and a failing value.
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <iosfwd>
 #include <map>
@@ -72,10 +73,20 @@ struct SrmResult {
   double seconds = 0.0;
 };
 
+// Where a strength reduction keeps what `--resume` needs (srm_trials.json, srm_trial_checkpoint.bin), and whether
+// this run continues from them. No folder: nothing is written and nothing can be resumed.
+struct SrmFiles {
+  std::optional<std::filesystem::path> dir;
+  bool resume = false;
+};
+
 // Runs the strength-reduction analysis of a validated slope scene (needs section + analyses.sph + analyses.srm).
 // `lem_bishop_fs`: the LEM Bishop factor (for the default bracket and the report), when available.
-// `lem_fs_by_method`: method key -> LEM FS, copied into the result.
+// `lem_fs_by_method`: method key -> LEM FS, copied into the result. With files.dir, every finished trial is
+// journalled and the trial in progress checkpointed (analyses.sph.checkpoint_interval_s, and when interrupted);
+// with files.resume, the run continues from them and reaches the result of an uninterrupted run.
 SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, std::optional<double> lem_bishop_fs,
-                                 const std::map<std::string, double>& lem_fs_by_method, std::ostream* log);
+                                 const std::map<std::string, double>& lem_fs_by_method, std::ostream* log,
+                                 const SrmFiles& files = {});
 
 }  // namespace coupling
