@@ -42,7 +42,7 @@ TEST_CASE("fs_band_edges: nice steps covering the range, 1.0 on an edge", "[figu
   }
 }
 
-TEST_CASE("analyses.lem.fs_map: method defaults to Bishop, refused when not analysed; the figure shows both "
+TEST_CASE("analyses.lem.fs_map: method defaults to Bishop, refused when not analysed, and the figure shows both "
           "critical surfaces",
           "[lem][fs_map][figures]") {
   json scene = weak_layer_scene();
