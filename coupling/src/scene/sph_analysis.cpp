@@ -128,6 +128,19 @@ void read_kernel(JsonReader& r, sph::Settings& s) {
   }
 }
 
+void read_kernel_gradient(JsonReader& r, sph::Settings& s) {
+  const auto gradient = r.string("kernel_gradient", Need::optional);
+  if (!gradient) return;
+  if (*gradient == "standard") {
+    s.kernel_gradient = sph::KernelGradient::standard;
+  } else if (*gradient == "corrected") {
+    s.kernel_gradient = sph::KernelGradient::corrected;
+  } else {
+    r.diagnostics().error(r.path_of("kernel_gradient"),
+                          "unknown kernel gradient \"" + *gradient + "\" (allowed: standard, corrected)");
+  }
+}
+
 void read_time_integration(JsonReader& r, sph::Settings& s) {
   const auto scheme = r.string("time_integration", Need::optional);
   if (!scheme) return;
@@ -273,6 +286,7 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   s.h_over_dx = r.number_or("smoothing_length_ratio", s.h_over_dx,
                             Bounds::closed(sph::EngineSettings::h_over_dx_min, sph::EngineSettings::h_over_dx_max));
   read_kernel(r, s);
+  read_kernel_gradient(r, s);
   read_time_integration(r, s);
   read_gravity_mode(r, s);
   const auto ramp = r.number("gravity_ramp_s", Need::optional, Bounds::positive());

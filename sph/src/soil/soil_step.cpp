@@ -61,12 +61,15 @@ SoilStep::SoilStep(Model& model) : model_(model), impl_(std::make_unique<Impl>()
   for (auto* a : {&w.pxx, &w.pyy, &w.pxy, &w.volume, &w.sound, &w.is_soil, &w.rxx, &w.ryy, &w.rxy, &w.xsph_dx,
                   &w.xsph_dy})
     a->assign(n, 0.0);
+  if (st.kernel_gradient == KernelGradient::corrected)
+    for (auto* a : {&w.bxx, &w.bxy, &w.byy}) a->assign(n, 0.0);
   w.sorted.reserve(model_.particles);
   index_kinds(model_.particles, w);  // valid for the current order; sorts keep them up to date
   w.soil.reserve(n);
   w.walls.reserve(n);
   const double dx = st.particle_spacing;
-  w.eval = select_evaluators(st.kernel, artificial_stress_, st.xsph.enabled);
+  w.eval = select_evaluators(st.kernel, artificial_stress_, st.xsph.enabled,
+                             st.kernel_gradient == KernelGradient::corrected);
   w.w_dx = st.kernel == KernelType::cubic_spline ? CubicSplineKernel(h_).value(dx) : WendlandC2Kernel(h_).value(dx);
   if (!(w.w_dx > 0)) throw std::invalid_argument("settings.h_over_dx too small: W(dx) = 0");
 }

@@ -29,6 +29,7 @@ struct SoilStep::Impl {
   std::vector<double> pxx, pyy, pxy, volume, sound, is_soil;  // sigma/rho^2, m/rho, c, 0/1
   std::vector<double> rxx, ryy, rxy;                           // artificial stress R/rho^2 terms
   std::vector<double> xsph_dx, xsph_dy;                        // XSPH velocity corrections
+  std::vector<double> bxx, bxy, byy;  // corrected kernel gradient: B_i (symmetric)
   std::vector<double> block_a, block_b, block_c;
   soil_detail::Evaluators eval;
   double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
@@ -45,7 +46,7 @@ struct SoilStep::Impl {
 
 namespace soil_detail {
 
-Evaluators select_evaluators(KernelType kernel, bool artificial_stress, bool xsph);
+Evaluators select_evaluators(KernelType kernel, bool artificial_stress, bool xsph, bool corrected_gradient);
 
 // Rebuilds the soil/wall index lists for the current particle order.
 void index_kinds(const ParticleSet& p, SoilStep::Impl& w);

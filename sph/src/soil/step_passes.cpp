@@ -131,16 +131,54 @@ void prepare_pass(Model& model, SoilStep::Impl& w, const std::vector<MaterialCon
   }
 }
 
+// The smallest eigenvalue of the moment matrix M_i for which the corrected gradient is used (model.hpp).
+constexpr double kMinMomentEigenvalue = 0.25;
+
+// Corrected kernel gradient: B_i = M_i^-1, M_i = sum_j V_j (x_j - x_i) (x) grad_i W_ij = -sum_j V_j F_ij x_ij (x) x_ij
+// (symmetric; the identity for a full, continuous support), for soil and wall particles alike (a wall's B_j enters
+// the soil's momentum sum). An ill-conditioned M_i (a particle with few neighbours) keeps B = I.
+template <class Kernel>
+void correction_pass(const ParticleSet& p, SoilStep::Impl& w, const Kernel& kernel) {
+  const double support2 = kernel.support() * kernel.support();
+  const Index n = static_cast<Index>(p.size());
+  const double *x = p.x.data(), *y = p.y.data(), *vol = w.volume.data();
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    double mxx = 0.0, mxy = 0.0, myy = 0.0;
+    {  // M_i over every neighbour, soil and wall
+      w.sorted.cells().for_each_candidate(i, [&](std::uint32_t j) {
+        const double dx = x[i] - x[j], dy = y[i] - y[j];
+        const double r2 = dx * dx + dy * dy;
+        if (r2 >= support2 || r2 == 0.0) return;
+        const double f = -vol[j] * kernel.gradient_factor(std::sqrt(r2));
+        mxx += f * dx * dx;
+        mxy += f * dx * dy;
+        myy += f * dy * dy;
+      });
+      const double mean = 0.5 * (mxx + myy);
+      const double smallest = mean - std::sqrt(0.25 * (mxx - myy) * (mxx - myy) + mxy * mxy);
+      if (!(smallest >= kMinMomentEigenvalue)) mxx = 1.0, mxy = 0.0, myy = 1.0;
+    }
+    const double inv_det = 1.0 / (mxx * myy - mxy * mxy);
+    w.bxx[i] = myy * inv_det;
+    w.bxy[i] = -mxy * inv_det;
+    w.byy[i] = mxx * inv_det;
+  }
+}
+
 // What the pair sums read, gathered once per evaluation (after the sort, the wall pass and the prepare pass).
 struct PairInputs {
   const double *x, *y, *vx, *vy, *rho, *mass;
   const double *pxx, *pyy, *pxy, *vol, *snd, *rxx, *ryy, *rxy, *is_soil;  // prepare_pass
+  const double *bxx, *bxy, *byy;                                           // correction_pass (corrected gradient)
   double h, support2, eta2, alpha, beta, inv_w_dx, as_n;
 
   PairInputs(const ParticleSet& p, const SoilStep::Impl& w, const Settings& st, double h_, double support)
       : x(p.x.data()), y(p.y.data()), vx(p.vx.data()), vy(p.vy.data()), rho(p.rho.data()), mass(p.mass.data()),
         pxx(w.pxx.data()), pyy(w.pyy.data()), pxy(w.pxy.data()), vol(w.volume.data()), snd(w.sound.data()),
-        rxx(w.rxx.data()), ryy(w.ryy.data()), rxy(w.rxy.data()), is_soil(w.is_soil.data()), h(h_),
+        rxx(w.rxx.data()), ryy(w.ryy.data()), rxy(w.rxy.data()), is_soil(w.is_soil.data()), bxx(w.bxx.data()),
+        bxy(w.bxy.data()), byy(w.byy.data()), h(h_),
         support2(support * support), eta2(st.viscosity.eta_factor * h_ * h_), alpha(st.viscosity.alpha),
         beta(st.viscosity.beta), inv_w_dx(1.0 / w.w_dx), as_n(st.artificial_stress.exponent) {}
 };
@@ -151,13 +189,35 @@ struct PairSums {
   VelocityGradient gradient;
 };
 
+// grad_i W_ij of a pair multiplied by a particle's symmetric correction B = [bxx bxy; bxy byy].
+inline PairGeometry corrected(const PairGeometry& g, double bxx, double bxy, double byy) {
+  return PairGeometry{g.dx, g.dy, g.r2, g.r, bxx * g.gwx + bxy * g.gwy, bxy * g.gwx + byy * g.gwy};
+}
+
+// The forces of a pair with the corrected gradient: m_j [(P_i - Pi/2 I + f^n R_i) B_i + (P_j - Pi/2 I + f^n R_j) B_j]
+// grad_i W_ij, P = sigma/rho^2: antisymmetric in i and j, exact for a linear stress field in a regular interior.
+template <bool kArtificialStress>
+void corrected_momentum(std::size_t i, std::uint32_t j, const PairInputs& in, double pi_ij, double fn,
+                        const PairGeometry& gi, const PairGeometry& gj, PairSums& sum) {
+  const double half = 0.5 * pi_ij;
+  double ixx = in.pxx[i] - half, iyy = in.pyy[i] - half, ixy = in.pxy[i];
+  double jxx = in.pxx[j] - half, jyy = in.pyy[j] - half, jxy = in.pxy[j];
+  if constexpr (kArtificialStress) {
+    ixx += fn * in.rxx[i]; iyy += fn * in.ryy[i]; ixy += fn * in.rxy[i];
+    jxx += fn * in.rxx[j]; jyy += fn * in.ryy[j]; jxy += fn * in.rxy[j];
+  }
+  momentum(in.mass[j], ixx, iyy, ixy, gi, sum.ax, sum.ay);
+  momentum(in.mass[j], jxx, jyy, jxy, gj, sum.ax, sum.ay);
+}
+
 // Gathers the pair terms of particle i over its neighbours: the kinematic terms [C, L, X] when kRates, the forces
-// [AV, AS, M] when kForces (both: the combined evaluation, in the order its results were pinned with).
-template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces>
+// [AV, AS, M] when kForces (both: the combined evaluation, in the order its results were pinned with);
+// kCorrected: with the corrected kernel gradient (Settings::kernel_gradient).
+template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces, bool kCorrected>
 PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, const CellList& cells) {
   const double xi = in.x[i], yi = in.y[i], vxi = in.vx[i], vyi = in.vy[i], rhoi = in.rho[i], ci = in.snd[i];
-  const double pxxi = in.pxx[i], pyyi = in.pyy[i], pxyi = in.pxy[i];
-  double rxxi = 0, ryyi = 0, rxyi = 0;
+  [[maybe_unused]] const double pxxi = in.pxx[i], pyyi = in.pyy[i], pxyi = in.pxy[i];
+  [[maybe_unused]] double rxxi = 0, ryyi = 0, rxyi = 0;
   if constexpr (kArtificialStress) {
     rxxi = in.rxx[i]; ryyi = in.ryy[i]; rxyi = in.rxy[i];
   }
@@ -174,7 +234,21 @@ PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, co
       const PairGeometry g{dx, dy, r2, r, F * dx, F * dy};
       const double dvx = vxi - in.vx[j], dvy = vyi - in.vy[j];  // v_i - v_j (a wall: its ghost velocity)
       const double mj = in.mass[j];
-      if constexpr (kRates) {
+      if constexpr (kCorrected) {
+        const PairGeometry gi = corrected(g, in.bxx[i], in.bxy[i], in.byy[i]);
+        if constexpr (kRates) {
+          sum.drho += continuity(mj, vxi - in.is_soil[j] * in.vx[j], vyi - in.is_soil[j] * in.vy[j], gi);
+          sum.gradient.add(in.vol[j], dvx, dvy, gi);
+        }
+        if constexpr (kForces) {
+          const double pi_ij = artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j],
+                                                    mean_density(rhoi, in.rho[j]), dvx, dvy, g);
+          const double fn =
+              kArtificialStress ? artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n) : 0.0;
+          corrected_momentum<kArtificialStress>(i, j, in, pi_ij, fn, gi,
+                                                corrected(g, in.bxx[j], in.bxy[j], in.byy[j]), sum);
+        }
+      } else if constexpr (kRates) {
         // [C] with the walls' own velocity (at rest): with the no-slip ghost velocity -v_avg here, a particle sliding
         // down a wall next to the free surface, whose wall neighbours above see only it, lost density at a rate
         // ~ 2 v |grad W| until it went negative (docs/stability.md).
@@ -182,7 +256,7 @@ PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, co
         sum.gradient.add(in.vol[j], dvx, dvy, g);
       }
       const double rho_bar = mean_density(rhoi, in.rho[j]);
-      if constexpr (kForces) {
+      if constexpr (kForces && !kCorrected) {
         const double pi_ij =
             artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
         double txx = pxxi + in.pxx[j] - pi_ij;
@@ -244,7 +318,7 @@ struct LoadTerms {
 
 // The rates of every soil particle; pairs are gathered from the perspective of i (no write conflicts). kRates: sorts
 // by cell first and writes the density and stress rates (and XSPH); kForces: writes the acceleration.
-template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces>
+template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces, bool kCorrected>
 void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   ParticleSet& p = model.particles;
   const Settings& st = model.settings;
@@ -252,6 +326,7 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   if constexpr (kRates) sort_and_index(model, w, kernel.support());
   wall_pass(model, w, kernel);
   prepare_pass(model, w, self.material_constants(), kArtificialStress && kForces, st.artificial_stress.epsilon);
+  if constexpr (kCorrected) correction_pass(p, w, kernel);
   const SoilArrays sa = model.soil();  // after the sort: it may have swapped the arrays' buffers
   const PairInputs in(p, w, st, kernel.h(), kernel.support());
   const double chi = st.xsph.chi;
@@ -264,7 +339,8 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
 #pragma omp parallel for schedule(dynamic, 256)  // gather per particle: results do not depend on the schedule
   for (Index k = 0; k < ns; ++k) {
     const std::size_t i = w.soil[static_cast<std::size_t>(k)];
-    const PairSums sum = pair_sums<Kernel, kArtificialStress, kXsph, kRates, kForces>(i, in, kernel, cells);
+    const PairSums sum =
+        pair_sums<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected>(i, in, kernel, cells);
     if constexpr (kForces) {
       const double vxi = p.vx[i], vyi = p.vy[i];
       sa.ax[i] = sum.ax + gx - damping * vxi;
@@ -291,24 +367,32 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   }
 }
 
-template <class Kernel, bool kArtificialStress, bool kXsph>
+template <class Kernel, bool kArtificialStress, bool kXsph, bool kCorrected>
 Evaluators evaluators() {
-  return {&evaluate_rates<Kernel, kArtificialStress, kXsph, true, true>,
-          &evaluate_rates<Kernel, kArtificialStress, kXsph, true, false>,
-          &evaluate_rates<Kernel, kArtificialStress, kXsph, false, true>};
+  return {&evaluate_rates<Kernel, kArtificialStress, kXsph, true, true, kCorrected>,
+          &evaluate_rates<Kernel, kArtificialStress, kXsph, true, false, kCorrected>,
+          &evaluate_rates<Kernel, kArtificialStress, kXsph, false, true, kCorrected>};
+}
+
+template <class Kernel, bool kCorrected>
+Evaluators evaluators_for(bool artificial_stress, bool xsph) {
+  if (artificial_stress)
+    return xsph ? evaluators<Kernel, true, true, kCorrected>() : evaluators<Kernel, true, false, kCorrected>();
+  return xsph ? evaluators<Kernel, false, true, kCorrected>() : evaluators<Kernel, false, false, kCorrected>();
 }
 
 template <class Kernel>
-Evaluators evaluators_for(bool artificial_stress, bool xsph) {
-  if (artificial_stress) return xsph ? evaluators<Kernel, true, true>() : evaluators<Kernel, true, false>();
-  return xsph ? evaluators<Kernel, false, true>() : evaluators<Kernel, false, false>();
+Evaluators evaluators_for(bool artificial_stress, bool xsph, bool corrected) {
+  return corrected ? evaluators_for<Kernel, true>(artificial_stress, xsph)
+                   : evaluators_for<Kernel, false>(artificial_stress, xsph);
 }
 
 }  // namespace
 
-Evaluators select_evaluators(KernelType kernel, bool artificial_stress, bool xsph) {
-  if (kernel == KernelType::cubic_spline) return evaluators_for<CubicSplineKernel>(artificial_stress, xsph);
-  return evaluators_for<WendlandC2Kernel>(artificial_stress, xsph);
+Evaluators select_evaluators(KernelType kernel, bool artificial_stress, bool xsph, bool corrected_gradient) {
+  if (kernel == KernelType::cubic_spline)
+    return evaluators_for<CubicSplineKernel>(artificial_stress, xsph, corrected_gradient);
+  return evaluators_for<WendlandC2Kernel>(artificial_stress, xsph, corrected_gradient);
 }
 
 }  // namespace sph::soil_detail

@@ -48,6 +48,14 @@ enum class TimeIntegration {
 double default_cfl(TimeIntegration integration);
 double max_cfl(TimeIntegration integration);
 
+// The kernel gradient of the pair sums. standard: grad_i W_ij. corrected: B_i grad_i W_ij with
+// B_i = (sum_j V_j (x_j - x_i) (x) grad_i W_ij)^-1 (Randles & Libersky 1996; Bonet & Lok 1999), so the velocity
+// gradient, the continuity sum and the stress divergence are exact for linear fields; the momentum sum stays
+// antisymmetric in i and j (linear momentum conserved). Where the moment matrix M_i = B_i^-1 is ill-conditioned
+// (its smaller eigenvalue below 0.25, against 1 in a full support and 0.5 across a free surface or in a corner: a
+// particle with a few neighbours) the standard gradient is kept.
+enum class KernelGradient { standard, corrected };
+
 struct Xsph {
   bool enabled = false;
   double chi = 0.5;  // Monaghan (2002)
@@ -58,6 +66,7 @@ struct Settings : EngineSettings {
   ArtificialViscosity viscosity;
   ArtificialStress artificial_stress;
   Xsph xsph;
+  KernelGradient kernel_gradient = KernelGradient::standard;
   WallSlip wall_slip = WallSlip::no_slip;
   double damping = 0.0;          // optional linear velocity damping [1/s] (a -= damping * v), 0 = none
   TimeIntegration integration = TimeIntegration::predictor_corrector;
