@@ -131,12 +131,13 @@ void prepare_pass(Model& model, SoilStep::Impl& w, const std::vector<MaterialCon
   }
 }
 
-// The smallest eigenvalue of the moment matrix M_i for which the corrected gradient is used (model.hpp).
-constexpr double kMinMomentEigenvalue = 0.25;
+// The smallest eigenvalue of the moment matrix M_i for which the corrected gradient is used (model.hpp: 0.25, 0.5
+// and 0.8 were tried; only 0.8 and above keep the granular collapse's front from blowing up).
+constexpr double kMinMomentEigenvalue = 0.8;
 
 // Corrected kernel gradient: B_i = M_i^-1, M_i = sum_j V_j (x_j - x_i) (x) grad_i W_ij = -sum_j V_j F_ij x_ij (x) x_ij
 // (symmetric; the identity for a full, continuous support), for soil and wall particles alike (a wall's B_j enters
-// the soil's momentum sum). An ill-conditioned M_i (a particle with few neighbours) keeps B = I.
+// the soil's momentum sum). A particle without a nearly full support keeps B = I.
 template <class Kernel>
 void correction_pass(const ParticleSet& p, SoilStep::Impl& w, const Kernel& kernel) {
   const double support2 = kernel.support() * kernel.support();

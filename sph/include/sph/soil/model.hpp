@@ -51,9 +51,10 @@ double max_cfl(TimeIntegration integration);
 // The kernel gradient of the pair sums. standard: grad_i W_ij. corrected: B_i grad_i W_ij with
 // B_i = (sum_j V_j (x_j - x_i) (x) grad_i W_ij)^-1 (Randles & Libersky 1996; Bonet & Lok 1999), so the velocity
 // gradient, the continuity sum and the stress divergence are exact for linear fields; the momentum sum stays
-// antisymmetric in i and j (linear momentum conserved). Where the moment matrix M_i = B_i^-1 is ill-conditioned
-// (its smaller eigenvalue below 0.25, against 1 in a full support and 0.5 across a free surface or in a corner: a
-// particle with a few neighbours) the standard gradient is kept.
+// antisymmetric in i and j (linear momentum conserved). Only where the support is nearly full (the moment matrix
+// M_i = B_i^-1 has its smaller eigenvalue at least 0.8, against 1 inside and 0.5 at a free surface) is B_i used;
+// elsewhere the standard gradient is kept: corrected free-surface particles (down to 0.25) blew up the granular
+// collapse at its front (non-positive density) and changed nothing in the elastic column (docs/accuracy.md).
 enum class KernelGradient { standard, corrected };
 
 struct Xsph {
