@@ -81,10 +81,12 @@ void SrmJournal::start(double factor) {
 }
 
 void SrmJournal::finish(const SrmTrial& trial) {
+  // The checkpoint goes first: a journal that lists the trial never sits beside that trial's checkpoint (killed in
+  // between, the trial is run again from the start, to the same result).
+  std::filesystem::remove(checkpoint_);
   trials_.push_back(trial);
   in_progress_.reset();
   write();
-  std::filesystem::remove(checkpoint_);
 }
 
 void SrmJournal::write() const {

@@ -13,7 +13,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <initializer_list>
 #include <map>
+#include <string_view>
+#include <utility>
 
 #include "coupling/compare/sliding_mass.hpp"
 #include "coupling/scene/scene.hpp"
@@ -115,58 +118,40 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
 
 namespace {
 
-void read_kernel(JsonReader& r, sph::Settings& s) {
-  const auto kernel = r.string("kernel", Need::optional);
-  if (!kernel) return;
-  if (*kernel == "cubic_spline") {
-    s.kernel = sph::KernelType::cubic_spline;
-  } else if (*kernel == "wendland_c2") {
-    s.kernel = sph::KernelType::wendland_c2;
-  } else {
-    r.diagnostics().error(r.path_of("kernel"),
-                          "unknown kernel \"" + *kernel + "\" (allowed: cubic_spline, wendland_c2)");
+// A setting chosen by name: `out` is set to the named choice; another name is an error listing the allowed ones.
+template <class E>
+void read_choice(JsonReader& r, std::string_view key, const char* what,
+                 std::initializer_list<std::pair<std::string_view, E>> choices, E& out) {
+  const auto value = r.string(key, Need::optional);
+  if (!value) return;
+  std::string allowed;
+  for (const auto& [name, choice] : choices) {
+    if (*value == name) {
+      out = choice;
+      return;
+    }
+    allowed += (allowed.empty() ? "" : ", ") + std::string(name);
   }
+  r.diagnostics().error(r.path_of(key),
+                        "unknown " + std::string(what) + " \"" + *value + "\" (allowed: " + allowed + ")");
 }
 
-void read_kernel_gradient(JsonReader& r, sph::Settings& s) {
-  const auto gradient = r.string("kernel_gradient", Need::optional);
-  if (!gradient) return;
-  if (*gradient == "standard") {
-    s.kernel_gradient = sph::KernelGradient::standard;
-  } else if (*gradient == "corrected") {
-    s.kernel_gradient = sph::KernelGradient::corrected;
-  } else {
-    r.diagnostics().error(r.path_of("kernel_gradient"),
-                          "unknown kernel gradient \"" + *gradient + "\" (allowed: standard, corrected)");
-  }
-}
-
-void read_time_integration(JsonReader& r, sph::Settings& s) {
-  const auto scheme = r.string("time_integration", Need::optional);
-  if (!scheme) return;
-  if (*scheme == "predictor_corrector") {
-    s.integration = sph::TimeIntegration::predictor_corrector;
-  } else if (*scheme == "verlet") {
-    s.integration = sph::TimeIntegration::verlet;
-  } else {
-    r.diagnostics().error(r.path_of("time_integration"),
-                          "unknown time integration \"" + *scheme + "\" (allowed: predictor_corrector, verlet)");
-  }
-}
-
-void read_gravity_mode(JsonReader& r, sph::Settings& s) {
-  const auto gravity = r.string("gravity", Need::optional);
-  if (!gravity) return;
-  if (*gravity == "sudden") {
-    s.gravity_mode = sph::GravityMode::sudden;
-  } else if (*gravity == "geostatic_k0") {
-    s.gravity_mode = sph::GravityMode::geostatic_k0;
-  } else if (*gravity == "ramped") {
-    s.gravity_mode = sph::GravityMode::ramped;
-  } else {
-    r.diagnostics().error(r.path_of("gravity"),
-                          "unknown gravity mode \"" + *gravity + "\" (allowed: sudden, geostatic_k0, ramped)");
-  }
+void read_choices(JsonReader& r, sph::Settings& s) {
+  read_choice(r, "kernel", "kernel",
+              {{"cubic_spline", sph::KernelType::cubic_spline}, {"wendland_c2", sph::KernelType::wendland_c2}},
+              s.kernel);
+  read_choice(r, "kernel_gradient", "kernel gradient",
+              {{"standard", sph::KernelGradient::standard}, {"corrected", sph::KernelGradient::corrected}},
+              s.kernel_gradient);
+  read_choice(r, "time_integration", "time integration",
+              {{"predictor_corrector", sph::TimeIntegration::predictor_corrector},
+               {"verlet", sph::TimeIntegration::verlet}},
+              s.integration);
+  read_choice(r, "gravity", "gravity mode",
+              {{"sudden", sph::GravityMode::sudden},
+               {"geostatic_k0", sph::GravityMode::geostatic_k0},
+               {"ramped", sph::GravityMode::ramped}},
+              s.gravity_mode);
 }
 
 void read_artificial_viscosity(JsonReader& r, sph::Settings& s) {
@@ -285,10 +270,7 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   const auto end_time = r.number("end_time_s", Need::required, Bounds::positive());
   s.h_over_dx = r.number_or("smoothing_length_ratio", s.h_over_dx,
                             Bounds::closed(sph::EngineSettings::h_over_dx_min, sph::EngineSettings::h_over_dx_max));
-  read_kernel(r, s);
-  read_kernel_gradient(r, s);
-  read_time_integration(r, s);
-  read_gravity_mode(r, s);
+  read_choices(r, s);
   const auto ramp = r.number("gravity_ramp_s", Need::optional, Bounds::positive());
   read_artificial_viscosity(r, s);
   read_artificial_stress(r, s);
