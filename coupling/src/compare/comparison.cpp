@@ -298,6 +298,7 @@ ComparisonResult compare_with_lem(const slope::Section& section, const SphFailur
   result.sph_surface_for_lem_error = sph_surface.mass ? std::string() : sph_surface.reason;
   result.sph_scarp_angle = sph_surface.scarp_angle;
   result.sph_largest_convex_kink = sph_surface.largest_convex_kink;
+  result.sph_surface_dropped_vertices = sph_surface.dropped_vertices;
 
   bool has_bishop = false;
   for (const auto& critical : lem.methods)

@@ -12,11 +12,16 @@
 //      (slope::slice_polyline then cuts it at the crack: at the crack bottom where the ground above is straight);
 //   4. interior vertices are kept just below the ground (1 % of a bin) and not below the rigid base;
 //   5. convex kinks of the band are accepted (convex_tolerance just under 90 deg): the band is analysed as the SPH
-//      model found it, not made concave.
+//      model found it, not made concave;
+//   6. except a reversal: a band vertex that makes the surface turn back on itself by more than that (a spike of the
+//      band's scatter, such as a bin point a metre below both neighbours) is dropped, the one whose removal leaves
+//      the smallest reversal first, at most a tenth of the vertices; how many is reported.
 #include "coupling/compare/sph_surface_lem.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include "sphslope/units.hpp"
 
@@ -57,6 +62,49 @@ double largest_convex_kink(const std::vector<slope::Point>& s, int toward_upper)
     previous = angle;
   }
   return largest;
+}
+
+// The largest amount by which a segment steepens over the one before it, in the direction of sliding, beyond
+// `tolerance` (rad; 0: none), and the index of the vertex where it does (points left to right, `dir` = +1: sliding
+// toward +x).
+std::pair<double, std::size_t> worst_reversal(const std::vector<slope::Point>& s, int dir, double tolerance) {
+  double worst = 0.0, previous = 0.0;
+  std::size_t at = 0;
+  const std::size_t n = s.size() - 1;
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t k = dir > 0 ? j : n - 1 - j;  // segments from the entry
+    const double angle = std::atan2(-dir * (s[k + 1].y - s[k].y), std::fabs(s[k + 1].x - s[k].x));
+    if (j > 0 && angle - previous - tolerance > worst) {
+      worst = angle - previous - tolerance;
+      at = dir > 0 ? k : k + 1;
+    }
+    previous = angle;
+  }
+  return {worst, at};
+}
+
+// 6. Drops interior vertices at reversals (beyond `tolerance`): at each, the vertex before, at or after the turn
+// whose removal leaves the smallest worst reversal. Returns how many were dropped.
+int drop_reversals(std::vector<slope::Point>& s, int dir, double tolerance) {
+  const std::size_t limit = std::max<std::size_t>(1, s.size() / 10);
+  int dropped = 0;
+  for (auto [worst, at] = worst_reversal(s, dir, tolerance); worst > 0.0 && s.size() > 3 &&
+                                                             static_cast<std::size_t>(dropped) < limit;
+       std::tie(worst, at) = worst_reversal(s, dir, tolerance)) {
+    std::size_t best = 0;
+    double best_worst = INFINITY;
+    for (std::size_t k = std::max<std::size_t>(at, 2) - 1; k <= at + 1 && k + 1 < s.size(); ++k) {
+      if (k == 0) continue;  // the entry and exit points stay
+      std::vector<slope::Point> trial = s;
+      trial.erase(trial.begin() + static_cast<std::ptrdiff_t>(k));
+      const double w = worst_reversal(trial, dir, tolerance).first;
+      if (w < best_worst) best_worst = w, best = k;
+    }
+    if (best == 0) break;
+    s.erase(s.begin() + static_cast<std::ptrdiff_t>(best));
+    ++dropped;
+  }
+  return dropped;
 }
 
 }  // namespace
@@ -108,10 +156,12 @@ SphSurfaceForLem sph_surface_for_lem(const slope::Section& section, const SphFai
   points.insert(points.end(), band.begin() + static_cast<std::ptrdiff_t>(bottom), band.end());
   points.push_back(exit);
   if (toward_upper > 0) std::reverse(points.begin(), points.end());
+  const double convex_tolerance = 0.5 * sphslope::pi - 1e-3;  // 5.
+  out.dropped_vertices = drop_reversals(points, -toward_upper, convex_tolerance);  // 6.
   slope::SlipPolyline polyline;
   polyline.points = std::move(points);
   polyline.tension_crack = slope::TensionCrack{depth, false};
-  polyline.convex_tolerance = 0.5 * sphslope::pi - 1e-3;  // 5.
+  polyline.convex_tolerance = convex_tolerance;
   out.mass = slope::slice_polyline(section, polyline, slope::SliceOptions{}, &out.reason);
   if (out.mass) out.largest_convex_kink = largest_convex_kink(out.mass->surface, toward_upper);
   out.polyline = std::move(polyline);

@@ -37,6 +37,7 @@ nlohmann::json sph_surface_json(const ComparisonResult& c) {
                {"tension_crack_depth_m", mass.crack_depth},
                {"scarp_angle_deg", sphslope::degrees(c.sph_scarp_angle)},
                {"largest_convex_kink_deg", sphslope::degrees(c.sph_largest_convex_kink)},
+               {"band_vertices_dropped", c.sph_surface_dropped_vertices},
                {"moment_point_m", point_json(mass.moment_point)},
                {"slices", mass.slices.size()}};
   } else {

@@ -71,6 +71,7 @@ struct ComparisonResult {
   std::string sph_surface_for_lem_error;
   double sph_scarp_angle = 0;  // rad
   double sph_largest_convex_kink = 0;  // rad
+  int sph_surface_dropped_vertices = 0;  // band vertices dropped at reversals (sph_surface_lem.hpp)
   std::vector<MethodComparison> methods;  // in the order of the LE result
   std::string verdict;                    // plain language
   std::optional<AcceptanceResult> acceptance;

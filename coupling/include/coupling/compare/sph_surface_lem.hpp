@@ -17,13 +17,16 @@ struct SphSurfaceForLem {
   // rad: the most a segment of the analysed surface steepens over the one before it, in the direction of sliding
   // (0: concave upward throughout). Large values warn that the rigid-slice methods may disagree on this surface.
   double largest_convex_kink = 0.0;
+  // band vertices dropped where the band turned back on itself by more than the slicer accepts (its scatter)
+  int dropped_vertices = 0;
 };
 
 // The band centre line from its entry to its exit on the initial ground: vertices clipped to just below the ground
 // and to the rigid base (and the ground's own vertices added where a segment would cut above them), simplified
 // (Douglas-Peucker, half a bin: the band's scatter), and its steep upper part - the scarp of the graben, steeper
 // than the Rankine active plane 45 deg + phi'/2 of the soil there - replaced by a dry tension crack as deep as the
-// surface where it flattens.
+// surface where it flattens. A vertex where the band turns back on itself beyond the slicer's tolerance (a spike of
+// its scatter) is dropped.
 SphSurfaceForLem sph_surface_for_lem(const slope::Section& section, const SphFailure& sph);
 
 }  // namespace coupling
