@@ -146,21 +146,19 @@ void correction_pass(const ParticleSet& p, SoilStep::Impl& w, const Kernel& kern
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    double mxx = 0.0, mxy = 0.0, myy = 0.0;
-    {  // M_i over every neighbour, soil and wall
-      w.sorted.cells().for_each_candidate(i, [&](std::uint32_t j) {
-        const double dx = x[i] - x[j], dy = y[i] - y[j];
-        const double r2 = dx * dx + dy * dy;
-        if (r2 >= support2 || r2 == 0.0) return;
-        const double f = -vol[j] * kernel.gradient_factor(std::sqrt(r2));
-        mxx += f * dx * dx;
-        mxy += f * dx * dy;
-        myy += f * dy * dy;
-      });
-      const double mean = 0.5 * (mxx + myy);
-      const double smallest = mean - std::sqrt(0.25 * (mxx - myy) * (mxx - myy) + mxy * mxy);
-      if (!(smallest >= kMinMomentEigenvalue)) mxx = 1.0, mxy = 0.0, myy = 1.0;
-    }
+    double mxx = 0.0, mxy = 0.0, myy = 0.0;  // M_i over every neighbour, soil and wall
+    w.sorted.cells().for_each_candidate(i, [&](std::uint32_t j) {
+      const double dx = x[i] - x[j], dy = y[i] - y[j];
+      const double r2 = dx * dx + dy * dy;
+      if (r2 >= support2 || r2 == 0.0) return;
+      const double f = -vol[j] * kernel.gradient_factor(std::sqrt(r2));
+      mxx += f * dx * dx;
+      mxy += f * dx * dy;
+      myy += f * dy * dy;
+    });
+    const double mean = 0.5 * (mxx + myy);
+    const double smallest = mean - std::sqrt(0.25 * (mxx - myy) * (mxx - myy) + mxy * mxy);
+    if (!(smallest >= kMinMomentEigenvalue)) mxx = 1.0, mxy = 0.0, myy = 1.0;
     const double inv_det = 1.0 / (mxx * myy - mxy * mxy);
     w.bxx[i] = myy * inv_det;
     w.bxy[i] = -mxy * inv_det;
@@ -235,6 +233,7 @@ PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, co
       const PairGeometry g{dx, dy, r2, r, F * dx, F * dy};
       const double dvx = vxi - in.vx[j], dvy = vyi - in.vy[j];  // v_i - v_j (a wall: its ghost velocity)
       const double mj = in.mass[j];
+      const double rho_bar = mean_density(rhoi, in.rho[j]);
       if constexpr (kCorrected) {
         const PairGeometry gi = corrected(g, in.bxx[i], in.bxy[i], in.byy[i]);
         if constexpr (kRates) {
@@ -242,8 +241,8 @@ PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, co
           sum.gradient.add(in.vol[j], dvx, dvy, gi);
         }
         if constexpr (kForces) {
-          const double pi_ij = artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j],
-                                                    mean_density(rhoi, in.rho[j]), dvx, dvy, g);
+          const double pi_ij =
+              artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
           const double fn =
               kArtificialStress ? artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n) : 0.0;
           corrected_momentum<kArtificialStress>(i, j, in, pi_ij, fn, gi,
@@ -256,7 +255,6 @@ PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, co
         sum.drho += continuity(mj, vxi - in.is_soil[j] * in.vx[j], vyi - in.is_soil[j] * in.vy[j], g);
         sum.gradient.add(in.vol[j], dvx, dvy, g);
       }
-      const double rho_bar = mean_density(rhoi, in.rho[j]);
       if constexpr (kForces && !kCorrected) {
         const double pi_ij =
             artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
