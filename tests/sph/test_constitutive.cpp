@@ -124,3 +124,38 @@ TEST_CASE("a rigid-body rotation leaves the stress invariants unchanged (Jaumann
   CHECK(s.yy == Approx(s0.xx).epsilon(1e-7));
   CHECK(s.xy == Approx(-s0.xy).epsilon(1e-6));
 }
+
+TEST_CASE("the return's plastic work is the work of the step's stresses, not the elastic energy of the trial",
+          "[sph][constitutive]") {
+  const auto sand = soil(0.0, 30.0);
+  const double K = sand.bulk_modulus, G = sand.shear_modulus;
+  SECTION("a particle at the apex that expands: stress zero before and after, no work done, no dissipation") {
+    // An expansion of 1e-5 from sigma = 0 gives the elastic trial 3K d_eps_v/3 = K 1e-5 on each normal component.
+    const double trial_p = K * 1e-5;
+    const Stress start{0, 0, 0, 0};
+    Stress s{trial_p, trial_p, trial_p, 0};
+    const auto res = return_to_yield_surface(sand, s, &start);
+    CHECK(res.tension_cracked);
+    CHECK(res.plastic_strain > 0);  // the expansion is all plastic
+    CHECK(res.plastic_work == 0.0);
+    // taking the trial as the start counts the elastic energy of the trial, 1/2 sigma : C^-1 : sigma = 9 p^2/(18 K)
+    Stress again{trial_p, trial_p, trial_p, 0};
+    const auto at_trial = return_to_yield_surface(sand, again);
+    CHECK(at_trial.plastic_work == Approx(trial_p * trial_p / (2.0 * K)).epsilon(1e-12));
+  }
+  SECTION("a trial that leaves the yield cone tangentially dissipates delta:delta/(4G), the chord's overshoot") {
+    // On the cone at p = -100 kPa: pure shear s_xy = R with R = sqrt(J2) = -alpha I1 (c = 0). The trial adds the
+    // deviatoric increment delta = (d, -d, 0, 0), orthogonal to s (s:delta = 0); the return scales the deviator back
+    // to R, and the step's stresses did the work 1/2 (sigma_start + sigma_end) : d_eps of which the cone keeps no
+    // elastic energy: delta:delta/(4G) (first order in delta/R).
+    const double p = -100e3, R = -sand.alpha_phi * 3.0 * p;
+    const Stress start{p, p, p, R};
+    REQUIRE(std::fabs(yield_function(sand, start)) < 1e-9 * R);
+    const double d = 1e-3 * R;
+    Stress s{p + d, p - d, p, R};
+    const auto res = return_to_yield_surface(sand, s, &start);
+    CHECK(res.scaled);
+    const double delta_delta = 2.0 * d * d;
+    CHECK(res.plastic_work == Approx(delta_delta / (4.0 * G)).epsilon(0.01));
+  }
+}

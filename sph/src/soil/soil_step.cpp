@@ -83,7 +83,9 @@ void SoilStep::register_workspace(ParticleSet& particles, Impl* impl) {
   const FieldId vxh = workspace("half_step_vx"), vyh = workspace("half_step_vy"),
                 rhoh = workspace("half_step_density"), sxxh = workspace("half_step_stress_xx"),
                 syyh = workspace("half_step_stress_yy"), szzh = workspace("half_step_stress_zz"),
-                sxyh = workspace("half_step_stress_xy");
+                sxyh = workspace("half_step_stress_xy"), sxx0 = workspace("step_start_stress_xx"),
+                syy0 = workspace("step_start_stress_yy"), szz0 = workspace("step_start_stress_zz"),
+                sxy0 = workspace("step_start_stress_xy");
   if (impl) {
     impl->vxh = vxh;
     impl->vyh = vyh;
@@ -92,6 +94,10 @@ void SoilStep::register_workspace(ParticleSet& particles, Impl* impl) {
     impl->syyh = syyh;
     impl->szzh = szzh;
     impl->sxyh = sxyh;
+    impl->sxx0 = sxx0;
+    impl->syy0 = syy0;
+    impl->szz0 = szz0;
+    impl->sxy0 = sxy0;
   }
 }
 
@@ -224,9 +230,10 @@ void SoilStep::advance_verlet(double dt) {
     for (Index k = 0; k < ns; ++k) {
       const std::size_t i = w.soil[static_cast<std::size_t>(k)];
       p.rho[i] += dt * sa.drho[i];
+      const Stress start{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
       Stress s{sa.sxx[i] + dt * sa.dsxx[i], sa.syy[i] + dt * sa.dsyy[i], sa.szz[i] + dt * sa.dszz[i],
                sa.sxy[i] + dt * sa.dsxy[i]};
-      const ReturnResult rr = return_to_yield_surface(mc_[p.material[i]], s);
+      const ReturnResult rr = return_to_yield_surface(mc_[p.material[i]], s, &start);
       sa.sxx[i] = s.xx; sa.syy[i] = s.yy; sa.szz[i] = s.zz; sa.sxy[i] = s.xy;
       sa.plastic_strain[i] += dt * sa.dplastic_strain[i] + rr.plastic_strain;
       sa.plastic_work[i] += dt * sa.dplastic_work[i] + rr.plastic_work / p.rho[i];
@@ -275,6 +282,10 @@ void SoilStep::advance_predictor_corrector(double dt) {
       p.vy[i] += dt * sa.ay[i];
       hs.rhoh[i] = p.rho[i] + half * sa.drho[i];
       p.rho[i] += dt * sa.drho[i];
+      hs.sxx0[i] = sa.sxx[i];
+      hs.syy0[i] = sa.syy[i];
+      hs.szz0[i] = sa.szz[i];
+      hs.sxy0[i] = sa.sxy[i];
       hs.sxxh[i] = sa.sxx[i] + half * sa.dsxx[i];
       hs.syyh[i] = sa.syy[i] + half * sa.dsyy[i];
       hs.szzh[i] = sa.szz[i] + half * sa.dszz[i];
@@ -300,9 +311,10 @@ void SoilStep::advance_predictor_corrector(double dt) {
       p.vx[i] = hs.vxh[i] + half * sa.ax[i];
       p.vy[i] = hs.vyh[i] + half * sa.ay[i];
       p.rho[i] = hs.rhoh[i] + half * sa.drho[i];
+      const Stress start{hs.sxx0[i], hs.syy0[i], hs.szz0[i], hs.sxy0[i]};
       Stress s{hs.sxxh[i] + half * sa.dsxx[i], hs.syyh[i] + half * sa.dsyy[i], hs.szzh[i] + half * sa.dszz[i],
                hs.sxyh[i] + half * sa.dsxy[i]};
-      const ReturnResult rr = return_to_yield_surface(mc_[p.material[i]], s);
+      const ReturnResult rr = return_to_yield_surface(mc_[p.material[i]], s, &start);
       sa.sxx[i] = s.xx; sa.syy[i] = s.yy; sa.szz[i] = s.zz; sa.sxy[i] = s.xy;
       sa.plastic_strain[i] += half * sa.dplastic_strain[i] + rr.plastic_strain;
       sa.plastic_work[i] += half * sa.dplastic_work[i] + rr.plastic_work / p.rho[i];

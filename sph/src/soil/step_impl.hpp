@@ -25,6 +25,7 @@ struct SoilStep::Impl {
   std::vector<std::uint32_t> soil, walls;
   // half-step values: registered in the particle set (not checkpointed), so the sort reorders them
   FieldId vxh, vyh, rhoh, sxxh, syyh, szzh, sxyh;
+  FieldId sxx0, syy0, szz0, sxy0;  // the stress at the step's start (the plastic work of the return)
   // per-evaluation scratch (recomputed after every sort)
   std::vector<double> pxx, pyy, pxy, volume, sound, is_soil;  // sigma/rho^2, m/rho, c, 0/1
   std::vector<double> rxx, ryy, rxy;                           // artificial stress R/rho^2 terms
@@ -53,7 +54,7 @@ void index_kinds(const ParticleSet& p, SoilStep::Impl& w);
 
 // Raw pointers to the half-step values (registered in the particle set); valid until the next sort.
 struct HalfStep {
-  double *vxh, *vyh, *rhoh, *sxxh, *syyh, *szzh, *sxyh;
+  double *vxh, *vyh, *rhoh, *sxxh, *syyh, *szzh, *sxyh, *sxx0, *syy0, *szz0, *sxy0;
   HalfStep(ParticleSet& p, const SoilStep::Impl& w)
       : vxh(p.field(w.vxh).data()),
         vyh(p.field(w.vyh).data()),
@@ -61,7 +62,11 @@ struct HalfStep {
         sxxh(p.field(w.sxxh).data()),
         syyh(p.field(w.syyh).data()),
         szzh(p.field(w.szzh).data()),
-        sxyh(p.field(w.sxyh).data()) {}
+        sxyh(p.field(w.sxyh).data()),
+        sxx0(p.field(w.sxx0).data()),
+        syy0(p.field(w.syy0).data()),
+        szz0(p.field(w.szz0).data()),
+        sxy0(p.field(w.sxy0).data()) {}
 };
 
 }  // namespace soil_detail

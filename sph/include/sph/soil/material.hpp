@@ -114,7 +114,7 @@ inline StressRate stress_rate(const MaterialConstants& mc, const Stress& s, doub
 // Result of the return to the admissible domain.
 struct ReturnResult {
   double plastic_strain = 0;  // equivalent plastic strain increment of the correction
-  double plastic_work = 0;    // sigma_mid : d eps_p [Pa]
+  double plastic_work = 0;    // 1/2 (sigma_start + sigma_returned) : d eps_p [Pa]
   bool tension_cracked = false;
   bool scaled = false;
 };
@@ -124,9 +124,18 @@ struct ReturnResult {
 //     -(I1 - k_c/alpha_phi)/3 so that I1 = k_c/alpha_phi (shear unchanged);
 //  2. scaling back: if sqrt(J2) > k_c - alpha_phi I1, scale the deviator by r = (k_c - alpha_phi I1)/sqrt(J2).
 // The removed stress is counted as plastic strain: d eps_p = -C^-1 : d sigma (C elastic stiffness).
-inline ReturnResult return_to_yield_surface(const MaterialConstants& mc, Stress& s) {
+// Its plastic work is the work the step's stress did on that strain, 1/2 (sigma_start + sigma_returned) : d eps_p,
+// with sigma_start the stress at the step's start (the work of the step's strain at the mean of the stresses that
+// acted, less the elastic energy stored). Counting it at the trial stress instead, 1/2 (sigma_trial +
+// sigma_returned), adds the elastic energy of a trial overshoot that no force paid for: a particle at the apex
+// (sigma = 0 before and after, expanding) would dissipate the energy of its tensile trial stress at every step, a
+// plastic work that grows with the step and exceeded the released potential energy five times over in a granular
+// collapse (docs/sph.md, "Time step", the energy audit). step_start == nullptr takes the trial stress as the start.
+inline ReturnResult return_to_yield_surface(const MaterialConstants& mc, Stress& s,
+                                            const Stress* step_start = nullptr) {
   ReturnResult res;
   const Stress before = s;
+  const Stress start = step_start ? *step_start : s;
   double I1 = s.xx + s.yy + s.zz;
   if (mc.alpha_phi > 0.0 && mc.alpha_phi * I1 - mc.k_c > 0.0) {
     const double shift = (I1 - mc.k_c / mc.alpha_phi) / 3.0;
@@ -158,8 +167,8 @@ inline ReturnResult return_to_yield_surface(const MaterialConstants& mc, Stress&
     const double ezz = -((d_zz - dp) * inv2G + dI1 * inv9K);
     const double exy = -(d_xy * inv2G);
     res.plastic_strain = std::sqrt(2.0 / 3.0 * (exx * exx + eyy * eyy + ezz * ezz + 2.0 * exy * exy));
-    res.plastic_work = 0.5 * ((s.xx + before.xx) * exx + (s.yy + before.yy) * eyy + (s.zz + before.zz) * ezz +
-                              2.0 * (s.xy + before.xy) * exy);
+    res.plastic_work = 0.5 * ((s.xx + start.xx) * exx + (s.yy + start.yy) * eyy + (s.zz + start.zz) * ezz +
+                              2.0 * (s.xy + start.xy) * exy);
   }
   return res;
 }
