@@ -27,6 +27,7 @@ void write_model(const SphModelFacts& f, nlohmann::json& report) {
   report["smoothing_length_m"] = f.smoothing_length_m;
   report["kernel"] = kernel_key(f.kernel);
   report["kernel_gradient"] = f.corrected_gradient ? "corrected" : "standard";
+  report["stress_substeps"] = f.stress_substeps;
   report["p_wave_speed_m_s"] = f.p_wave_speed_m_s;
   report["time_step_estimate_s"] = f.time_step_estimate_s;
   report["planned_steps"] = f.planned_steps;

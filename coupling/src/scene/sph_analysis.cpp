@@ -205,6 +205,14 @@ std::optional<long> read_section_walls(JsonReader& r, SphAnalysis& a) {
 void read_run_limits(JsonReader& r, SphAnalysis& a) {
   sph::Settings& s = a.settings;
   s.cfl = r.number_or("cfl", sph::default_cfl(s.integration), Bounds{0.0, false, sph::max_cfl(s.integration), true});
+  if (const auto n = r.integer("stress_substeps", Need::optional, Bounds::closed(1, 64))) {
+    s.stress_substeps = static_cast<int>(*n);
+    if (*n > 1 && s.integration != sph::TimeIntegration::verlet)
+      r.diagnostics().error(r.path_of("stress_substeps"),
+                            "a stress update in " + std::to_string(*n) + " sub-steps needs \"time_integration\": "
+                            "\"verlet\" (the predictor-corrector updates the stress twice per step); give 1 or "
+                            "leave it out");
+  }
   s.damping = r.number_or("damping_per_s", s.damping, Bounds::non_negative());
   s.checkpoint_interval_wall_s =
       r.number_or("checkpoint_interval_s", s.checkpoint_interval_wall_s, Bounds::non_negative());

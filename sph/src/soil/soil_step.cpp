@@ -63,6 +63,8 @@ SoilStep::SoilStep(Model& model) : model_(model), impl_(std::make_unique<Impl>()
     a->assign(n, 0.0);
   if (st.kernel_gradient == KernelGradient::corrected)
     for (auto* a : {&w.bxx, &w.bxy, &w.byy}) a->assign(n, 0.0);
+  if (st.stress_substeps > 1)
+    for (auto* a : {&w.lxx, &w.lyy, &w.lexy, &w.lwxy}) a->assign(n, 0.0);
   w.sorted.reserve(model_.particles);
   index_kinds(model_.particles, w);  // valid for the current order; sorts keep them up to date
   w.soil.reserve(n);
@@ -225,11 +227,16 @@ void SoilStep::advance_verlet(double dt) {
   w.eval.kinematics(*this, model_, w);  // sorts; density and stress rates at the half-step velocity
   {
     const SoilArrays sa = model_.soil();  // the sort may have swapped the arrays' buffers
+    const int substeps = model_.settings.stress_substeps;
     const Index ns = static_cast<Index>(w.soil.size());
 #pragma omp parallel for schedule(static)
     for (Index k = 0; k < ns; ++k) {
       const std::size_t i = w.soil[static_cast<std::size_t>(k)];
       p.rho[i] += dt * sa.drho[i];
+      if (substeps > 1) {
+        update_stress_in_substeps(sa, i, dt, substeps);
+        continue;
+      }
       const Stress start{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
       Stress s{sa.sxx[i] + dt * sa.dsxx[i], sa.syy[i] + dt * sa.dsyy[i], sa.szz[i] + dt * sa.dszz[i],
                sa.sxy[i] + dt * sa.dsxy[i]};
@@ -259,6 +266,32 @@ void SoilStep::advance_verlet(double dt) {
   }
   model_.state.time += dt;
   model_.state.step += 1;
+}
+
+// The stress update of particle i over dt in n equal sub-steps: each takes the stress rate of its own start stress
+// with the step's velocity gradient, then the return; the first sub-step's rate is the one the kinematic pass
+// stored. Plastic strain and work add up over the sub-steps.
+void SoilStep::update_stress_in_substeps(const SoilArrays& sa, std::size_t i, double dt, int n) const {
+  const ParticleSet& p = model_.particles;
+  const auto& w = *impl_;
+  const MaterialConstants& mc = mc_[p.material[i]];
+  const double h = dt / n;
+  Stress s{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
+  for (int q = 0; q < n; ++q) {
+    const Stress start = s;
+    const StressRate sr = stress_rate(mc, s, w.lxx[i], w.lyy[i], w.lexy[i], w.lwxy[i]);
+    s.xx += h * sr.rate.xx;
+    s.yy += h * sr.rate.yy;
+    s.zz += h * sr.rate.zz;
+    s.xy += h * sr.rate.xy;
+    const ReturnResult rr = return_to_yield_surface(mc, s, &start);
+    sa.plastic_strain[i] += h * sr.plastic_strain_rate + rr.plastic_strain;
+    sa.plastic_work[i] += (h * sr.plastic_work_rate + rr.plastic_work) / p.rho[i];
+  }
+  sa.sxx[i] = s.xx;
+  sa.syy[i] = s.yy;
+  sa.szz[i] = s.zz;
+  sa.sxy[i] = s.xy;
 }
 
 void SoilStep::advance_predictor_corrector(double dt) {

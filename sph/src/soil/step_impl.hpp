@@ -30,6 +30,9 @@ struct SoilStep::Impl {
   std::vector<double> pxx, pyy, pxy, volume, sound, is_soil;  // sigma/rho^2, m/rho, c, 0/1
   std::vector<double> rxx, ryy, rxy;                           // artificial stress R/rho^2 terms
   std::vector<double> xsph_dx, xsph_dy;                        // XSPH velocity corrections
+  // the velocity gradient of the kinematic pass (strain rate xx, yy, xy and spin xy): kept only for a stress update
+  // in sub-steps (Settings::stress_substeps > 1), empty otherwise
+  std::vector<double> lxx, lyy, lexy, lwxy;
   std::vector<double> bxx, bxy, byy;  // corrected kernel gradient: B_i (symmetric)
   std::vector<double> block_a, block_b, block_c;
   soil_detail::Evaluators eval;

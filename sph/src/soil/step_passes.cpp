@@ -352,6 +352,12 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
       const VelocityGradient& L = sum.gradient;
       const Stress s{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
       const StressRate sr = stress_rate(mc[p.material[i]], s, L.xx, L.yy, 0.5 * (L.xy + L.yx), 0.5 * (L.xy - L.yx));
+      if (!w.lxx.empty()) {
+        w.lxx[i] = L.xx;
+        w.lyy[i] = L.yy;
+        w.lexy[i] = 0.5 * (L.xy + L.yx);
+        w.lwxy[i] = 0.5 * (L.xy - L.yx);
+      }
       sa.dsxx[i] = sr.rate.xx;
       sa.dsyy[i] = sr.rate.yy;
       sa.dszz[i] = sr.rate.zz;

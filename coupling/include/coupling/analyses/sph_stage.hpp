@@ -26,6 +26,7 @@ struct SphModelFacts {
   double particle_spacing_m = 0, smoothing_length_m = 0;
   sph::KernelType kernel = sph::KernelType::cubic_spline;
   bool corrected_gradient = false;  // analyses.sph.kernel_gradient "corrected"
+  int stress_substeps = 1;          // analyses.sph.stress_substeps
   double p_wave_speed_m_s = 0, time_step_estimate_s = 0;
   long long planned_steps = 0;
   sph::GravityMode gravity = sph::GravityMode::sudden;
