@@ -279,7 +279,14 @@ void SoilStep::update_stress_in_substeps(const SoilArrays& sa, std::size_t i, do
   Stress s{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
   for (int q = 0; q < n; ++q) {
     const Stress start = s;
-    const StressRate sr = stress_rate(mc, s, w.lxx[i], w.lyy[i], w.lexy[i], w.lwxy[i]);
+    StressRate sr;
+    if (q == 0) {  // the kinematic pass's rate at the step's start stress
+      sr.rate = {sa.dsxx[i], sa.dsyy[i], sa.dszz[i], sa.dsxy[i]};
+      sr.plastic_strain_rate = sa.dplastic_strain[i];
+      sr.plastic_work_rate = sa.dplastic_work[i] * p.rho[i];
+    } else {
+      sr = stress_rate(mc, s, w.lxx[i], w.lyy[i], w.lexy[i], w.lwxy[i]);
+    }
     s.xx += h * sr.rate.xx;
     s.yy += h * sr.rate.yy;
     s.zz += h * sr.rate.zz;
