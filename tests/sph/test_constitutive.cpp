@@ -159,3 +159,29 @@ TEST_CASE("the return's plastic work is the work of the step's stresses, not the
     CHECK(res.plastic_work == Approx(delta_delta / (4.0 * G)).epsilon(0.01));
   }
 }
+
+TEST_CASE("a yielding particle's stress update takes sub-steps in proportion to its strain increment",
+          "[sph][constitutive][substeps]") {
+  const auto sand = soil(0.0, 30.0);
+  const double G = sand.shear_modulus;
+  const double p = -100e3, R = -sand.alpha_phi * 3.0 * p;  // yield radius k_c - alpha I1 at p (c = 0)
+  const Stress s{p, p, p, R};
+  const double dt = 1e-4;
+  // pure shear strain rate exy: sqrt(J2) of the elastic deviatoric increment is 2G dt exy
+  const auto count = [&](double share_of_radius, int n_max) {
+    const double exy = share_of_radius * R / (2.0 * G * dt);
+    return stress_substep_count(sand, s, 0.0, 0.0, exy, dt, n_max);
+  };
+  CHECK(count(0.05, 16) == 1);   // within a tenth of the radius: one update
+  CHECK(count(0.35, 16) == 4);   // 0.35 R in sub-steps of at most 0.1 R
+  CHECK(count(1.0, 16) == 10);
+  CHECK(count(5.0, 16) == 16);   // capped
+  CHECK(count(0.35, 2) == 2);
+  // a volumetric increment has no deviatoric part in plane strain only through e_zz = 0: e_xx = e_yy = e gives
+  // a deviator (e/3, e/3, -2e/3), sqrt(J2) = e/sqrt(3)
+  const double e = 0.35 * R / (2.0 * G * dt) * std::sqrt(3.0);
+  CHECK(stress_substep_count(sand, s, e, e, 0.0, dt, 16) == 4);
+  // at the apex of a cohesionless cone the radius is zero: the largest count
+  const Stress apex{0, 0, 0, 0};
+  CHECK(stress_substep_count(sand, apex, 0.0, 0.0, 1e-9, dt, 16) == 16);
+}

@@ -268,15 +268,30 @@ void SoilStep::advance_verlet(double dt) {
   model_.state.step += 1;
 }
 
-// The stress update of particle i over dt in n equal sub-steps: each takes the stress rate of its own start stress
-// with the step's velocity gradient, then the return; the first sub-step's rate is the one the kinematic pass
-// stored. Plastic strain and work add up over the sub-steps.
-void SoilStep::update_stress_in_substeps(const SoilArrays& sa, std::size_t i, double dt, int n) const {
+// The stress update of particle i over dt in sub-steps: each takes the stress rate of its own start stress with
+// the step's velocity gradient, then the return; the first sub-step's rate is the one the kinematic pass stored.
+// Plastic strain and work add up over the sub-steps. How many: a particle that stays elastic over the whole step (no
+// plastic flow at its start, a trial stress inside the yield surface) takes the one update, since sub-steps would
+// change its stress only by the Jaumann rotation's second-order term. A yielding particle takes as many as
+// stress_substep_count asks for its strain increment. In a collapsing column most particles are elastic or creep on
+// the yield surface in most steps, so the sub-steps cost a fraction of n_max updates per particle (docs/sph.md,
+// "Time step").
+void SoilStep::update_stress_in_substeps(const SoilArrays& sa, std::size_t i, double dt, int n_max) const {
   const ParticleSet& p = model_.particles;
   const auto& w = *impl_;
   const MaterialConstants& mc = mc_[p.material[i]];
+  const Stress s0{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
+  if (sa.dplastic_strain[i] == 0.0) {
+    Stress trial{s0.xx + dt * sa.dsxx[i], s0.yy + dt * sa.dsyy[i], s0.zz + dt * sa.dszz[i], s0.xy + dt * sa.dsxy[i]};
+    const ReturnResult rr = return_to_yield_surface(mc, trial, &s0);
+    if (!rr.scaled && !rr.tension_cracked) {
+      sa.sxx[i] = trial.xx; sa.syy[i] = trial.yy; sa.szz[i] = trial.zz; sa.sxy[i] = trial.xy;
+      return;
+    }
+  }
+  const int n = stress_substep_count(mc, s0, w.lxx[i], w.lyy[i], w.lexy[i], dt, n_max);
   const double h = dt / n;
-  Stress s{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
+  Stress s = s0;
   for (int q = 0; q < n; ++q) {
     const Stress start = s;
     StressRate sr;

@@ -71,9 +71,10 @@ struct Settings : EngineSettings {
   WallSlip wall_slip = WallSlip::no_slip;
   double damping = 0.0;          // optional linear velocity damping [1/s] (a -= damping * v), 0 = none
   TimeIntegration integration = TimeIntegration::predictor_corrector;
-  // The Verlet step's stress update in this many equal sub-steps, each with its own stress rate and return from the
-  // step's velocity gradient (docs/sph.md, "Time step": one return per step lets a granular flow run further as the
-  // step grows); 1 = one update per step. Only with the verlet integration.
+  // The Verlet step's stress update in up to this many equal sub-steps, each with its own stress rate and return
+  // from the step's velocity gradient (docs/sph.md, "Time step": one return per step lets a granular flow run further
+  // as the step grows); a particle that stays elastic takes one, a yielding one as many as its strain increment
+  // needs (SoilStep::update_stress_in_substeps). 1 = one update per step. Only with the verlet integration.
   int stress_substeps = 1;
 
   Settings() { cfl = default_cfl(integration); }

@@ -66,7 +66,7 @@ class SoilStep : public Stepper {
  private:
   void advance_predictor_corrector(double dt);
   void advance_verlet(double dt);
-  void update_stress_in_substeps(const SoilArrays& sa, std::size_t i, double dt, int n) const;
+  void update_stress_in_substeps(const SoilArrays& sa, std::size_t i, double dt, int n_max) const;
 
   Model& model_;
   double h_ = 0;
