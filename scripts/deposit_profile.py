@@ -1,0 +1,82 @@
+#!/usr/bin/env python3
+"""The deposit of a granular run, read from the last VTK frame of run folders (frames/frame_*.vtu, written by
+sphslope; appended raw binary, no third-party modules): the free-surface profile (highest soil particle edge in
+bins two spacings wide), the toe where the deposit is at least 1, 2 and 5 spacings thick, the front (third-furthest
+soil particle) and each profile's difference from the first folder's, the integral of |h - h_ref| over that of h_ref.
+
+Usage: scripts/deposit_profile.py SPACING_M RUN_DIR [RUN_DIR ...]
+"""
+import glob
+import re
+import struct
+import sys
+
+TYPES = {"Float64": "d", "Int64": "q", "UInt8": "B", "Int32": "i", "UInt32": "I"}
+ARRAY = re.compile(rb'<DataArray type="(\w+)" Name="(\w+)" NumberOfComponents="(\d+)" format="appended" '
+                   rb'offset="(\d+)"')
+
+
+def read_vtu(path, wanted=("Points", "kind")):
+    raw = open(path, "rb").read()
+    head, _, data = raw.partition(b'<AppendedData encoding="raw">')
+    data = data[data.index(b"_") + 1:]
+    arrays = {}
+    for m in ARRAY.finditer(head):
+        kind, name, comps, offset = m.group(1).decode(), m.group(2).decode(), int(m.group(3)), int(m.group(4))
+        if name not in wanted:
+            continue
+        size = struct.unpack_from("<Q", data, offset)[0]
+        code = TYPES[kind]
+        count = size // struct.calcsize(code)
+        values = struct.unpack_from("<%d%s" % (count, code), data, offset + 8)
+        arrays[name] = [values[i * comps:(i + 1) * comps] for i in range(count // comps)] if comps > 1 else values
+    return arrays
+
+
+def soil_points(run_dir):
+    frames = sorted(glob.glob(run_dir + "/frames/frame_*.vtu"))
+    if not frames:
+        sys.exit("deposit_profile: no frames/frame_*.vtu in " + run_dir)
+    a = read_vtu(frames[-1])
+    return [p for p, k in zip(a["Points"], a["kind"]) if k == 0]
+
+
+def profile(points, dx):
+    width = 2 * dx
+    h = {}
+    for p in points:
+        b = int(p[0] // width)
+        h[b] = max(h.get(b, 0.0), p[1] + dx / 2)
+    return h, width
+
+
+def toe(h, width, thickness):
+    b = 0
+    while h.get(b, 0.0) >= thickness:
+        b += 1
+    return b * width
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    dx = float(sys.argv[1])
+    runs = sys.argv[2:]
+    ref = None
+    print("| run | toe, 1 dx thick (m) | toe, 2 dx (m) | toe, 5 dx (m) | front (m) | height (m) | profile difference |")
+    print("|---|---|---|---|---|---|---|")
+    for run in runs:
+        pts = soil_points(run)
+        h, width = profile(pts, dx)
+        if ref is None:
+            ref = h
+        keys = set(h) | set(ref)
+        diff = sum(abs(h.get(k, 0.0) - ref.get(k, 0.0)) for k in keys) / sum(ref.values())
+        xs = sorted((p[0] for p in pts), reverse=True)
+        print("| %s | %.3f | %.3f | %.3f | %.3f | %.4f | %.1f %% |" % (
+            run, toe(h, width, dx), toe(h, width, 2 * dx), toe(h, width, 5 * dx), xs[2] + dx / 2,
+            max(p[1] for p in pts) + dx / 2, 100 * diff))
+
+
+if __name__ == "__main__":
+    main()
