@@ -425,6 +425,12 @@ TEST_CASE("mps settings validate and name the setting that is wrong", "[mps]") {
   fails([](sph::mps::Settings& b) { b.viscosity_cap = 0.0; }, "viscosity_cap");
   fails([](sph::mps::Settings& b) { b.cfl = 1.5; }, "cfl");
   fails([](sph::mps::Settings& b) { b.pressure_split = 1.5; }, "pressure_split");
+  fails([](sph::mps::Settings& b) { b.wall_collision_distance = 0.5; }, "wall_collision_distance");  // gaps open
+  fails([](sph::mps::Settings& b) { b.wall_collision_distance = 1.0; }, "wall_collision_distance");
+  fails([](sph::mps::Settings& b) { b.wall_collision_restitution = -0.1; }, "wall_collision_restitution");
+  sph::mps::Settings off;
+  off.wall_collision_distance = 0.0;
+  CHECK_NOTHROW(off.validate());
   sph::mps::Settings engine_bad;
   engine_bad.particle_spacing = 0.0;
   CHECK_THROWS_WITH(engine_bad.validate(), Contains("particle_spacing"));

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include "sph/mps/model.hpp"
@@ -96,7 +97,7 @@ TEST_CASE("MPS water column at rest carries the hydrostatic pressure", "[mps]") 
   CHECK(r.max_speed < 0.25 * std::sqrt(g * depth));  // measured 0.18 sqrt(g H)
 }
 
-TEST_CASE("MPS dry granular collapse runs to 0.5 s with finite values", "[mps]") {
+TEST_CASE("MPS dry granular collapse runs to 0.5 s with finite values and stays in the tank", "[mps]") {
   // The seed's dry collapse (3.0-3.1): a column l0 = 0.1 m long, h0 = 0.06 m high at the left wall of a tank
   // 0.3 m long, released at t = 0 (no gate), the default material (mu0 = 1.5 Pa s^N, N = 0.25, m = 50 s,
   // phi = 22 deg, c = 0), rho0 = 1500 kg/m^3, c0 = 20 m/s, cap 200 Pa s; coarse: dx = 10 mm (60 grains).
@@ -127,8 +128,57 @@ TEST_CASE("MPS dry granular collapse runs to 0.5 s with finite values", "[mps]")
               s.diagnostic.c_str(), front, top, bottom, outside);
   REQUIRE(s.reason == sph::StopReason::end_time);
   CHECK(s.simulated_time >= 0.5);
-  // Not checked (docs/mps.md, "Not yet"): that the grains stay in the tank. Measured: 5 of the 60 grains fall
-  // through the floor where the deposit thins to one or two rows (there the grains and the wall particles under
-  // them are free-surface particles at pressure 0, so nothing holds the grains up).
+  // Where the deposit thins to one or two rows the grains and the wall particles under them are free-surface
+  // particles at pressure 0 and only the wall collision (docs/mps.md, S7) holds them up: without it 5 of the 60
+  // grains fell through the floor (lowest -0.69 m); with it none leaves the tank (measured: lowest centre 0.6 mm
+  // above the floor, 0.56 dx above the wall row's centres, resting on two wall particles at 0.75 dx).
+  CHECK(outside == 0);
   CHECK(top < 0.06);  // the column slumped below its initial 0.06 m (measured 0.031 m)
+}
+
+namespace {
+
+// A lone water particle thrown at 2 m/s onto the floor of a box (dx = 10 mm): it and the wall particles under it are
+// free-surface particles at pressure 0, so only the wall collision can stop it. Returns its lowest centre [m] and
+// its vertical velocity at the end of 0.05 s.
+std::pair<double, double> thrown_particle(double collision_distance) {
+  sph::mps::Settings st;
+  st.particle_spacing = 0.01;
+  st.rest_density = 1000.0;
+  st.gravity_y = -g;
+  st.end_time = 0.05;
+  st.wall_collision_distance = collision_distance;
+  sph::mps::Model model(st, {sph::mps::Material::water()});
+  sph::mps::add_block(model, 0.10, 0.05, 0.11, 0.06, 0);
+  sph::mps::add_box(model, 0.0, 0.2, 0.0, 0.1, 0);
+  const std::size_t grain = 0;
+  REQUIRE(model.particles.kind[grain] == 0);
+  model.particles.vy[grain] = -2.0;
+  sph::mps::Step step(model);
+  step.initialise();
+  double lowest = 0.055;  // its start (the step's sort has reordered the particles)
+  while (model.state.time < st.end_time) {
+    step.advance(step.stable_time_step());
+    const sph::ParticleSet& p = model.particles;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.kind[i] == 0) lowest = std::min(lowest, p.y[i]);
+  }
+  double vy = 0;
+  for (std::size_t i = 0; i < model.particles.size(); ++i)
+    if (model.particles.kind[i] == 0) vy = model.particles.vy[i];
+  return {lowest, vy};
+}
+
+}  // namespace
+
+TEST_CASE("MPS wall collision stops a particle the pressure cannot hold (docs/mps.md, S7)", "[mps]") {
+  // The floor's wall row has its centres at y = -dx/2 = -5 mm, 10 mm apart; at a collision distance of 0.75 dx a
+  // particle rests at least sqrt(0.75^2 - 0.5^2) dx = 0.56 dx above that row (between two wall particles): y >= 0.6 mm.
+  const auto [lowest_on, vy_on] = thrown_particle(0.75);
+  const auto [lowest_off, vy_off] = thrown_particle(0.0);
+  INFO("lowest centre with the collision " << lowest_on << " m (final vy " << vy_on << " m/s), without "
+       << lowest_off << " m");
+  CHECK(lowest_off < -0.05);  // without it the particle falls through the walls
+  CHECK(lowest_on > 0.0005);  // measured 2.5 mm: straight above a wall particle, 0.75 dx above the row
+  CHECK(std::fabs(vy_on) < 0.05);  // fully inelastic (restitution 0): it stays on the floor
 }

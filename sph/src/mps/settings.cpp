@@ -73,6 +73,11 @@ void Settings::validate() const {
   need(pressure_split >= 0 && pressure_split <= 1, "pressure_split", pressure_split, "out of range",
        "0 to 1 (default 0.5; 0: the pressure force of the old level only)");
   need(end_time > 0, "end_time", end_time, "not positive", "> 0 s");
+  need(wall_collision_distance == 0 || (wall_collision_distance > 0.5 && wall_collision_distance < 1.0),
+       "wall_collision_distance", wall_collision_distance, "out of range (in spacings)",
+       "0 (off) or above 0.5 and below 1 (default 0.75)");
+  need(wall_collision_restitution >= 0 && wall_collision_restitution <= 1, "wall_collision_restitution",
+       wall_collision_restitution, "out of range", "0 to 1 (default 0)");
 }
 
 }  // namespace sph::mps

@@ -170,6 +170,36 @@ void Step::correct(double dt) {
   }
 }
 
+// Step i: each moving particle against the fixed wall and dummy particles within d_c = wall_collision_distance dx
+// that it approaches (v . e < 0, e the unit vector from the wall particle to it): v -= (1 + e_r)(v . e) e, one
+// contact after the other, and the position moves by the velocity change times dt. The cells of the sort at r* still
+// hold every pair closer than d_c < r_e after the corrector's small move.
+void Step::collide_with_walls(double dt) {
+  const Settings& st = model_.settings;
+  if (st.wall_collision_distance <= 0) return;
+  ParticleSet& p = model_.particles;
+  const Neighbourhood nb = neighbourhood();
+  const double dc = st.wall_collision_distance * st.particle_spacing, dc2 = dc * dc;
+  const double kick = 1.0 + st.wall_collision_restitution;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != kMoving) continue;
+    double vx = p.vx[i], vy = p.vy[i];
+    for_each_neighbour(nb.sorted, nb.set, i, dc, [&](std::size_t j, double dx, double dy, double r2) {
+      if (p.kind[j] == kMoving || r2 >= dc2 || r2 == 0.0) return;
+      const double r = std::sqrt(r2);
+      const double ex = dx / r, ey = dy / r;  // from j to i (dx = x_i - x_j)
+      const double vn = vx * ex + vy * ey;
+      if (vn >= 0.0) return;
+      vx -= kick * vn * ex;
+      vy -= kick * vn * ey;
+    });
+    p.x[i] += (vx - p.vx[i]) * dt;
+    p.y[i] += (vy - p.vy[i]) * dt;
+    p.vx[i] = vx;
+    p.vy[i] = vy;
+  }
+}
+
 void Step::advance(double dt) {
   sort();
   viscosities();
@@ -177,6 +207,7 @@ void Step::advance(double dt) {
   sort();
   equation_of_state();
   correct(dt);
+  collide_with_walls(dt);
   model_.state.time += dt;
   model_.state.step += 1;
 }

@@ -57,6 +57,15 @@ struct Settings : EngineSettings {
   // The pressure gradient of the stepper: false = the plain difference p_j - p_i of eq. 24 (as printed); true =
   // p_j - min(p_i, p_j over the neighbours) (Koshizuka & Oka 1996: every pair repels; docs/mps.md decision S3)
   bool pressure_gradient_minimum = true;
+  // Collision of a moving particle with the wall and dummy particles (docs/mps.md decision S7): closer than
+  // wall_collision_distance x dx and approaching, its normal velocity towards the wall particle is reversed times
+  // wall_collision_restitution, and its position moved by the velocity change times dt. Where a layer thins to one
+  // or two rows its particles and the wall particles under them are free-surface particles at pressure 0 and
+  // nothing else holds them up. The distance must exceed 0.5 dx (the half-gap of the wall lattice) and stay below
+  // 1 dx (the lattice contact); 0 turns it off. The paper has no collision model; its code lineage has one between
+  // all particles (distance 0.5 dx, coefficient 0.5 [X], seed 2.13).
+  double wall_collision_distance = 0.75;
+  double wall_collision_restitution = 0.0;  // fully inelastic: the code lineage's coefficient 0.5 = (1 + e)/2 [I]
   // The engine's `cfl` (default 0.2) is the C_r of eq. 30 (the seed: 0.1-0.25); allowed (0, 1] here.
 
   double effective_radius() const { return re_over_dx * particle_spacing; }  // r_e [m]

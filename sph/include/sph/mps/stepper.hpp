@@ -8,6 +8,8 @@
 //   f  sort at r*; n*; p^{m+1} = Tait(n*), 0 at the free surface n* <= beta n0 (eqs. 13, 15)
 //   g  u^{m+1} = u* - alpha (dt/rho0) <grad p>^{m+1} (eqs. 27, 29)
 //   h  r^{m+1} = r^m + u^{m+1} dt (A24)
+//   i  collision with the wall particles: a moving particle closer than wall_collision_distance dx to a wall or
+//      dummy particle and approaching it loses (1 + e) times its normal velocity towards it (docs/mps.md, S7)
 // Wall particles (kind wall) are fixed, at zero velocity (no-slip); the layer next to the flow carries the EOS
 // pressure of its own number density, the outer (dummy) layers only complete the number density and the viscous
 // sums (pressure 0, out of the pressure gradient). docs/mps.md gives the decisions.
@@ -46,6 +48,7 @@ class Step : public Stepper {
   void predict(double dt);
   void equation_of_state();
   void correct(double dt);
+  void collide_with_walls(double dt);
   Vector2 pressure_gradient(std::size_t i, const double* p) const;
   double gravity_x() const;
   double gravity_y() const;
