@@ -1,6 +1,7 @@
 #include "sph/mps/operators.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "sph/engine/neighbours.hpp"
@@ -41,8 +42,9 @@ double number_density(const Neighbourhood& nb, std::size_t i) {
 }
 
 void number_densities(const Neighbourhood& nb, double* n) {
-  const std::size_t count = nb.set.size();
-  for (std::size_t i = 0; i < count; ++i) n[i] = number_density(nb, i);
+  const auto count = static_cast<std::int64_t>(nb.set.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t k = 0; k < count; ++k) n[k] = number_density(nb, static_cast<std::size_t>(k));
 }
 
 Vector2 gradient(const Neighbourhood& nb, std::size_t i, const double* phi, double n0) {

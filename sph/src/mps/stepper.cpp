@@ -1,6 +1,7 @@
 #include "sph/mps/stepper.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <sstream>
 
@@ -12,6 +13,7 @@
 namespace sph::mps {
 
 namespace {
+using Index = std::int64_t;  // OpenMP loop index
 constexpr std::uint8_t kMoving = static_cast<std::uint8_t>(ParticleKind::soil);
 }  // namespace
 
@@ -55,8 +57,9 @@ void Step::viscosities() {
   const Arrays a = model_.arrays();
   const Settings& st = model_.settings;
   const Neighbourhood nb = neighbourhood();
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
-  for (std::ptrdiff_t k = 0; k < n; ++k) {
+  const auto n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
     a.smoothed_pressure[i] = std::max(smoothed_pressure(nb, i, a.pressure), 0.0);
     const Material& mat = model_.materials[std::min<std::size_t>(p.material[i], model_.materials.size() - 1)];
@@ -102,7 +105,10 @@ void Step::predict(double dt) {
   double* ys = p.field(impl_->y_start).data();
   impl_->fx.assign(p.size(), 0.0);
   impl_->fy.assign(p.size(), 0.0);
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const auto n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] != kMoving) continue;
     const Vector2 v =
         viscous_force(nb, i, p.vx.data(), p.vy.data(), a.viscosity, lattice_, st.interaction_viscosity);
@@ -110,7 +116,9 @@ void Step::predict(double dt) {
     impl_->fx[i] = terms::predicted_velocity(p.vx[i], dt, rho, bx, v.x, g.x, alpha);
     impl_->fy[i] = terms::predicted_velocity(p.vy[i], dt, rho, by, v.y, g.y, alpha);
   }
-  for (std::size_t i = 0; i < p.size(); ++i) {
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
     xs[i] = p.x[i];
     ys[i] = p.y[i];
     if (p.kind[i] != kMoving) continue;
@@ -131,7 +139,10 @@ void Step::equation_of_state() {
   const double* dummy = p.field(model_.dummy).data();
   const double n0 = lattice_.n0;
   number_densities(nb, a.number_density);
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const auto count = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < count; ++k) {
+    const auto i = static_cast<std::size_t>(k);
     const double n = a.number_density[i];
     const bool surface = terms::is_free_surface(n, n0, st.surface_beta);
     a.free_surface[i] = surface ? 1.0 : 0.0;
@@ -151,13 +162,18 @@ void Step::correct(double dt) {
   const double* ys = p.field(impl_->y_start).data();
   impl_->fx.assign(p.size(), 0.0);
   impl_->fy.assign(p.size(), 0.0);
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const auto n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] != kMoving) continue;
     const Vector2 g = pressure_gradient(i, a.pressure);
     impl_->fx[i] = terms::velocity_correction(dt, st.rest_density, g.x, st.pressure_split);
     impl_->fy[i] = terms::velocity_correction(dt, st.rest_density, g.y, st.pressure_split);
   }
-  for (std::size_t i = 0; i < p.size(); ++i) {
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] != kMoving) {
       p.x[i] = xs[i];
       p.y[i] = ys[i];
@@ -181,7 +197,10 @@ void Step::collide_with_walls(double dt) {
   const Neighbourhood nb = neighbourhood();
   const double dc = st.wall_collision_distance * st.particle_spacing, dc2 = dc * dc;
   const double kick = 1.0 + st.wall_collision_restitution;
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const auto n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {  // a particle writes only its own state and reads the fixed walls'
+    const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] != kMoving) continue;
     double vx = p.vx[i], vy = p.vy[i];
     for_each_neighbour(nb.sorted, nb.set, i, dc, [&](std::size_t j, double dx, double dy, double r2) {
@@ -217,7 +236,10 @@ double Step::stable_time_step() const {
   const Settings& st = model_.settings;
   const double* mu = p.field(model_.fields.viscosity).data();
   double u2 = 0, mu_max = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const auto n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static) reduction(max : u2, mu_max)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] != kMoving) continue;
     u2 = std::max(u2, p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
     mu_max = std::max(mu_max, mu[i]);
