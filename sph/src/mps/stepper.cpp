@@ -195,7 +195,7 @@ void Step::collide_with_walls(double dt) {
   if (st.wall_collision_distance <= 0) return;
   ParticleSet& p = model_.particles;
   const Neighbourhood nb = neighbourhood();
-  const double dc = st.wall_collision_distance * st.particle_spacing, dc2 = dc * dc;
+  const double dc = st.wall_collision_distance * st.particle_spacing;
   const double kick = 1.0 + st.wall_collision_restitution;
   const auto n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
@@ -204,7 +204,7 @@ void Step::collide_with_walls(double dt) {
     if (p.kind[i] != kMoving) continue;
     double vx = p.vx[i], vy = p.vy[i];
     for_each_neighbour(nb.sorted, nb.set, i, dc, [&](std::size_t j, double dx, double dy, double r2) {
-      if (p.kind[j] == kMoving || r2 >= dc2 || r2 == 0.0) return;
+      if (p.kind[j] == kMoving || r2 == 0.0) return;  // for_each_neighbour passes r2 < d_c^2 only
       const double r = std::sqrt(r2);
       const double ex = dx / r, ey = dy / r;  // from j to i (dx = x_i - x_j)
       const double vn = vx * ex + vy * ey;

@@ -233,7 +233,9 @@ void SoilStep::advance_verlet(double dt) {
     for (Index k = 0; k < ns; ++k) {
       const std::size_t i = w.soil[static_cast<std::size_t>(k)];
       p.rho[i] += dt * sa.drho[i];
-      if (substeps > 1) {
+      // With sub-steps, a particle that yields in the step (plastic flow at its start, or a trial stress the return
+      // corrects) takes them; one that stays elastic keeps the one update below.
+      if (substeps > 1 && sa.dplastic_strain[i] > 0.0) {
         update_stress_in_substeps(sa, i, dt, substeps);
         continue;
       }
@@ -241,6 +243,10 @@ void SoilStep::advance_verlet(double dt) {
       Stress s{sa.sxx[i] + dt * sa.dsxx[i], sa.syy[i] + dt * sa.dsyy[i], sa.szz[i] + dt * sa.dszz[i],
                sa.sxy[i] + dt * sa.dsxy[i]};
       const ReturnResult rr = return_to_yield_surface(mc_[p.material[i]], s, &start);
+      if (substeps > 1 && (rr.scaled || rr.tension_cracked)) {
+        update_stress_in_substeps(sa, i, dt, substeps);
+        continue;
+      }
       sa.sxx[i] = s.xx; sa.syy[i] = s.yy; sa.szz[i] = s.zz; sa.sxy[i] = s.xy;
       sa.plastic_strain[i] += dt * sa.dplastic_strain[i] + rr.plastic_strain;
       sa.plastic_work[i] += dt * sa.dplastic_work[i] + rr.plastic_work / p.rho[i];
@@ -270,25 +276,16 @@ void SoilStep::advance_verlet(double dt) {
 
 // The stress update of particle i over dt in sub-steps: each takes the stress rate of its own start stress with
 // the step's velocity gradient, then the return; the first sub-step's rate is the one the kinematic pass stored.
-// Plastic strain and work add up over the sub-steps. How many: a particle that stays elastic over the whole step (no
-// plastic flow at its start, a trial stress inside the yield surface) takes the one update, since sub-steps would
-// change its stress only by the Jaumann rotation's second-order term. A yielding particle takes as many as
-// stress_substep_count asks for its strain increment. In a collapsing column most particles are elastic or creep on
-// the yield surface in most steps, so the sub-steps cost a fraction of n_max updates per particle (docs/sph.md,
-// "Time step").
+// Plastic strain and work add up over the sub-steps. Only a particle that yields in the step comes here (the Verlet
+// step keeps the one update of an elastic particle, which sub-steps would change only by the Jaumann rotation's
+// second-order term); it takes as many as stress_substep_count asks for its strain increment. In a collapsing column
+// most particles are elastic or creep on the yield surface in most steps, so the sub-steps cost a fraction of n_max
+// updates per particle (docs/sph.md, "Time step").
 void SoilStep::update_stress_in_substeps(const SoilArrays& sa, std::size_t i, double dt, int n_max) const {
   const ParticleSet& p = model_.particles;
   const auto& w = *impl_;
   const MaterialConstants& mc = mc_[p.material[i]];
   const Stress s0{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
-  if (sa.dplastic_strain[i] == 0.0) {
-    Stress trial{s0.xx + dt * sa.dsxx[i], s0.yy + dt * sa.dsyy[i], s0.zz + dt * sa.dszz[i], s0.xy + dt * sa.dsxy[i]};
-    const ReturnResult rr = return_to_yield_surface(mc, trial, &s0);
-    if (!rr.scaled && !rr.tension_cracked) {
-      sa.sxx[i] = trial.xx; sa.syy[i] = trial.yy; sa.szz[i] = trial.zz; sa.sxy[i] = trial.xy;
-      return;
-    }
-  }
   const int n = stress_substep_count(mc, s0, w.lxx[i], w.lyy[i], w.lexy[i], dt, n_max);
   const double h = dt / n;
   Stress s = s0;
