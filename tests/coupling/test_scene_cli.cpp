@@ -87,7 +87,13 @@ const BadScene bad_scenes[] = {
     {"slip_surface_above_ground.json", "check",
      "analyses.lem.surfaces[0]: not an admissible slip surface: point 1 (25, 19) is not below the ground surface"},
     {"isph_unknown_pressure_mode.json", "check", "analyses.isph.pressure: expected \"explicit\" or \"iterative\""},
-    {"isph_water_outside_tank.json", "check", "analyses.isph.water[0]: the water must lie inside the tank"},
+    {"isph_water_outside_tank.json", "check",
+     "analyses.isph.water[0]: the rectangle must lie inside the tank (x 0 to 0.3429 m, y 0 to 0.17145 m)"},
+    {"mps_unknown_block_material.json", "check",
+     "analyses.mps.blocks[0].material: unknown material \"sand\" (known: glass beads)"},
+    {"mps_unknown_material_type.json", "check",
+     "analyses.mps.materials[0].type: expected \"granular\" or \"water\", got \"clay\""},
+    {"mps_viscosity_cap_zero.json", "check", "analyses.mps.viscosity_cap_Pa_s"},
     // Valid on its own; only the search itself finds that the limits admit no slip circle.
     {"no_valid_circle.json", "lem", "analyses.lem.search: the search limits admit no valid slip circle"},
 };
@@ -363,4 +369,52 @@ TEST_CASE("sphslope run on an isph scene writes the isph block and monitors.csv"
   CHECK(rows >= 21);  // t = 0, then every 5 ms to 0.1 s
   const double last_front = std::stod(last.substr(last.rfind(',') + 1));
   CHECK(last_front == Approx(front).margin(a / 10.0));
+}
+
+// The mps analysis from the command line: the Lajeunesse dry collapse of cases/ at dx = 10 mm (60 grains, 16,000
+// steps, about 7 s), its report block and monitors.csv (time_s, front_x_m, wall_height_m). The grains must have
+// left the column (the front beyond l0 = 0.1 m) and stay in the tank, the column must have slumped (the height at
+// the wall below h0 = 0.06 m), the mass is kept, and the deposit is at rest at 0.6 s (measured: front 0.235 m,
+// height at the wall 0.0356 m, largest speed 0.008 m/s; docs/mps.md section 7 compares them with the scaling laws).
+TEST_CASE("sphslope run on an mps scene writes the mps block and monitors.csv", "[cli][mps][e2e]") {
+  TemporaryFolder folder("mps");
+  std::ifstream in(source_path("cases/mps_dry_collapse_lajeunesse.json"));
+  nlohmann::json scene = nlohmann::json::parse(in);
+  scene["analyses"]["mps"]["particle_spacing_m"] = 0.01;
+  scene["analyses"]["mps"]["output_interval_s"] = 0.0;
+  const fs::path file = folder.path / "mps.json";
+  std::ofstream(file) << scene.dump();
+  const fs::path out = folder.path / "out";
+  const ProgramRun result = run_program("run " + quoted(file.string()) + " -o " + quoted(out.string()));
+  INFO(result.output);
+  REQUIRE(result.status == 0);
+  std::ifstream report_file(out / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(report_file);
+  const nlohmann::json& mps = report["mps"];
+  CHECK(mps["status"] == "ok");
+  CHECK(mps["particles"]["moving"] == 60);
+  CHECK(mps["simulated_time_s"].get<double>() == Approx(0.6));
+  CHECK(mps["mass_kg_per_m"]["end"].get<double>() == Approx(1500.0 * 0.1 * 0.06));  // rho0 l0 h0 [kg/m]
+  CHECK(mps["mass_kg_per_m"]["start"].get<double>() == Approx(1500.0 * 0.1 * 0.06));
+  const nlohmann::json& deposit = mps["deposit"];
+  CHECK(deposit["front_x_m"]["start"].get<double>() == Approx(0.1));
+  CHECK(deposit["wall_height_m"]["start"].get<double>() == Approx(0.06));
+  const double front = deposit["front_x_m"]["end"].get<double>();
+  CHECK(front > 0.12);
+  CHECK(front < 0.3);
+  CHECK(deposit["wall_height_m"]["end"].get<double>() < 0.06);
+  CHECK(deposit["max_speed_end_m_s"].get<double>() < 0.05);
+  CHECK(mps["warnings"].empty());  // c0 = 20 m/s against a largest speed of 0.76 m/s
+  std::ifstream csv(out / "monitors.csv");
+  std::string header, line, last;
+  std::getline(csv, header);
+  CHECK(header == "time_s,front_x_m,wall_height_m");
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    last = line;
+    ++rows;
+  }
+  CHECK(rows == mps["monitors"]["rows"].get<int>());
+  CHECK(rows >= 61);  // t = 0, then every 10 ms to 0.6 s
+  CHECK(std::stod(last.substr(last.rfind(',') + 1)) == Approx(deposit["wall_height_m"]["end"].get<double>()));
 }

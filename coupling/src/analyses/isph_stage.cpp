@@ -8,6 +8,7 @@
 #include <string>
 
 #include "coupling/analyses/stage.hpp"
+#include "coupling/analyses/tank_monitors.hpp"
 #include "coupling/output/isph_report.hpp"
 #include "sph/engine/atomic_file.hpp"
 #include "sph/fluid/cases.hpp"
@@ -17,12 +18,10 @@ namespace coupling {
 
 namespace {
 
-constexpr std::uint8_t kFluid = 0;
-
 sph::fluid::Model build_isph_model(const IsphAnalysis& a) {
   sph::fluid::Model model(a.settings);
   double top = -std::numeric_limits<double>::infinity();
-  for (const IsphRectangle& w : a.water) {
+  for (const TankRectangle& w : a.water) {
     sph::fluid::add_fluid_block(model, w.x_min, w.y_min, w.x_max, w.y_max);
     top = std::max(top, w.y_max);
   }
@@ -34,45 +33,6 @@ sph::fluid::Model build_isph_model(const IsphAnalysis& a) {
 
 double fluid_mass(const sph::ParticleSet& p) { return p.total_mass(sph::ParticleKind::soil); }  // kind 0: fluid
 
-// Samples the gauges and the front at t = 0, at the first step at or after each multiple of monitor_interval, and
-// at the end of the run.
-class IsphMonitors : public sph::Observer {
- public:
-  explicit IsphMonitors(const IsphAnalysis& a) : a_(a) {
-    for (const IsphGauge& g : a.gauges) table_.columns.push_back(g.name + "_m");
-    if (a.front) table_.columns.push_back("front_x_m");
-  }
-  std::string after_step(const sph::ParticleSet& p, const sph::RunState& state, const sph::Energies&) override {
-    if (state.time + 1e-12 >= next_) sample(p, state.time);
-    return {};
-  }
-  void sample(const sph::ParticleSet& p, double time) {
-    const double dx = a_.settings.particle_spacing;
-    std::vector<double> row;
-    for (const IsphGauge& g : a_.gauges) {
-      double surface = a_.tank.y_min;  // no water within dx of the gauge: the tank floor
-      for (std::size_t i = 0; i < p.size(); ++i)
-        if (p.kind[i] == kFluid && std::abs(p.x[i] - g.x) < dx) surface = std::max(surface, p.y[i] + 0.5 * dx);
-      row.push_back(surface - a_.still_water);
-    }
-    if (a_.front) {
-      double front = -std::numeric_limits<double>::infinity();
-      for (std::size_t i = 0; i < p.size(); ++i)
-        if (p.kind[i] == kFluid) front = std::max(front, p.x[i] + 0.5 * dx);
-      row.push_back(front);
-    }
-    table_.times.push_back(time);
-    table_.rows.push_back(std::move(row));
-    next_ = (std::floor(time / a_.monitor_interval + 1e-9) + 1.0) * a_.monitor_interval;  // on the interval grid
-  }
-  IsphMonitorTable& table() { return table_; }
-
- private:
-  const IsphAnalysis& a_;
-  IsphMonitorTable table_;
-  double next_ = 0;
-};
-
 IsphStageResult run_isph(const IsphAnalysis& a, const WorkflowOptions& options) {
   sph::fluid::Model model = build_isph_model(a);
   IsphStageResult result;
@@ -83,7 +43,7 @@ IsphStageResult run_isph(const IsphAnalysis& a, const WorkflowOptions& options) 
   result.fluid_particles = model.particles.count(sph::ParticleKind::soil);
   result.wall_particles = model.particles.size() - result.fluid_particles;
   result.fluid_mass_start = fluid_mass(model.particles);
-  IsphMonitors monitors(a);
+  TankMonitorObserver monitors(a.monitors, a.tank, a.settings.particle_spacing);
   monitors.sample(model.particles, 0.0);
   sph::RunOptions run_options;
   if (options.output_dir) run_options.output_dir = options.output_dir->string();

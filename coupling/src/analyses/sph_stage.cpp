@@ -68,6 +68,22 @@ void install_interrupt_handler() {
 
 bool interrupt_pending() { return interrupt_requested != 0; }
 
+sph::RunCallbacks run_callbacks(std::ostream* log, const char* prefix) {
+  sph::RunCallbacks callbacks;
+  if (log) {
+    callbacks.progress = [log, prefix](const sph::Progress& p) {
+      char line[200];
+      std::snprintf(line, sizeof line, "%s: t = %.4g / %.4g s, step %llu, %.0f steps/s, dt %.3g s, max speed %.3g m/s, %s left\n",
+                    prefix, p.time, p.end_time, static_cast<unsigned long long>(p.step), p.steps_per_second, p.time_step,
+                    p.max_speed, duration_text(p.eta_seconds).c_str());
+      *log << line << std::flush;
+    };
+  }
+  interrupt_requested = 0;
+  callbacks.interrupt = [] { return interrupt_requested != 0; };
+  return callbacks;
+}
+
 namespace {
 
 // Plan before allocating anything: the explicit step is bounded by the P-wave speed; a case that needs more
@@ -156,22 +172,6 @@ sph::RunOptions run_options_of(const SphAnalysis& analysis, const SphStageOption
   return run_options;
 }
 
-// Progress lines on the log; SIGINT/SIGTERM stop the run at the end of a step.
-sph::RunCallbacks run_callbacks(std::ostream* log) {
-  sph::RunCallbacks callbacks;
-  if (log) {
-    callbacks.progress = [log](const sph::Progress& p) {
-      char line[200];
-      std::snprintf(line, sizeof line, "sph: t = %.4g / %.4g s, step %llu, %.0f steps/s, dt %.3g s, max speed %.3g m/s, %s left\n",
-                    p.time, p.end_time, static_cast<unsigned long long>(p.step), p.steps_per_second, p.time_step,
-                    p.max_speed, duration_text(p.eta_seconds).c_str());
-      *log << line << std::flush;
-    };
-  }
-  interrupt_requested = 0;
-  callbacks.interrupt = [] { return interrupt_requested != 0; };
-  return callbacks;
-}
 
 // Final energies and the energy balance, and the warnings of the run (loads left out, energy created).
 void check_energies(const Scene& scene, const sph::Model& model, SphStageResult& result) {
@@ -259,7 +259,7 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   const sph::RunOptions run_options = run_options_of(analysis, options);
   if (options.resume) resume_from_checkpoint(options, model);
 
-  result.summary = sph::run(model, run_options, run_callbacks(options.log));
+  result.summary = sph::run(model, run_options, run_callbacks(options.log, "sph"));
   check_energies(scene, model, result);
   if (options.log)
     for (const auto& w : result.warnings) *options.log << "sph: warning: " << w << "\n";

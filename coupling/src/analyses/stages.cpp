@@ -10,6 +10,7 @@ bool sph_requested(const Scene& scene, const StageContext&) { return scene.analy
 bool compare_requested(const Scene& scene, const StageContext&) { return scene.analyses.compare.has_value(); }
 bool srm_requested(const Scene& scene, const StageContext&) { return scene.analyses.srm.has_value(); }
 bool isph_requested(const Scene& scene, const StageContext&) { return scene.analyses.isph.has_value(); }
+bool mps_requested(const Scene& scene, const StageContext&) { return scene.analyses.mps.has_value(); }
 
 constexpr Stage stages[] = {
     {"lem", lem_requested, run_lem_stage},
@@ -17,6 +18,7 @@ constexpr Stage stages[] = {
     {"compare", compare_requested, run_compare_stage},
     {"srm", srm_requested, run_srm_stage},
     {"isph", isph_requested, run_isph_stage},
+    {"mps", mps_requested, run_mps_stage},
 };
 
 }  // namespace

@@ -139,6 +139,14 @@ std::string sph_lines(const json& report) {
         << fixed(isph["max_density_error"], 4) << ". Monitors: " << esc(at(isph, {"monitors", "file"}).dump())
         << ".</p>\n";
   }
+  if (const json& mps = at(report, {"mps"}); mps.is_object() && mps.contains("steps")) {
+    out << "<p>WC-MPS: spacing " << fixed(mps["particle_spacing_m"], 4) << " m, " << at(mps, {"particles", "moving"}).dump()
+        << " particles, " << fixed(mps["simulated_time_s"], 3) << " s simulated in " << mps.value("steps", 0)
+        << " steps; deposit front x = " << fixed(at(mps, {"deposit", "front_x_m", "end"}), 3)
+        << " m, height at the left wall " << fixed(at(mps, {"deposit", "wall_height_m", "end"}), 3)
+        << " m, largest speed at the end " << fixed(at(mps, {"deposit", "max_speed_end_m_s"}), 4)
+        << " m/s. Monitors: " << esc(at(mps, {"monitors", "file"}).dump()) << ".</p>\n";
+  }
   if (const json& srm = at(report, {"srm"}); srm.is_object() && srm.contains("factor_of_safety")) {
     out << "<p>SPH strength reduction: FS = <b>" << fixed(srm["factor_of_safety"]) << "</b> (spacing "
         << fixed(srm["particle_spacing_m"], 2) << " m; LE Bishop " << fixed(srm["lem_bishop"]) << ").</p>\n";

@@ -220,10 +220,16 @@ void read_analyses(JsonReader& top, Scene& scene, bool has_section, SphBlocks& b
   }
   if (auto isph = analyses->object("isph", Need::optional, "an object (docs/scene-format.md, analyses.isph)"))
     scene.analyses.isph = read_isph_analysis(*isph);
+  if (auto mps = analyses->object("mps", Need::optional, "an object (docs/scene-format.md, analyses.mps)")) {
+    scene.analyses.mps = read_mps_analysis(*mps);
+    if (analyses->has("isph"))
+      diagnostics.error(analyses->path_of("mps"), "a scene runs one flow in a tank, analyses.isph or analyses.mps, "
+                                                  "not both (both write monitors.csv)");
+  }
   if (!analyses->has("lem") && !analyses->has("sph") && !analyses->has("compare") && !analyses->has("srm") &&
-      !analyses->has("isph")) {
-    diagnostics.error(analyses->path(),
-                      "no analysis requested (add at least one of: \"lem\": {}, \"sph\": {...}, \"isph\": {...})");
+      !analyses->has("isph") && !analyses->has("mps")) {
+    diagnostics.error(analyses->path(), "no analysis requested (add at least one of: \"lem\": {}, \"sph\": {...}, "
+                                        "\"isph\": {...}, \"mps\": {...})");
   }
   analyses->finish();
 }
@@ -269,14 +275,14 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
 
   const bool has_section = top.has("section");
   const bool has_bodies = top.has("bodies");
-  // a fluid scene: analyses.isph carries its own tank and water
+  // a flow in a tank: analyses.isph or analyses.mps carries its own tank and material
   const auto analyses_block = document.find("analyses");
-  const bool fluid_scene =
-      analyses_block != document.end() && analyses_block->is_object() && analyses_block->contains("isph");
-  if (!has_section && !has_bodies && !fluid_scene && top.is_object()) {
+  const bool tank_scene = analyses_block != document.end() && analyses_block->is_object() &&
+                          (analyses_block->contains("isph") || analyses_block->contains("mps"));
+  if (!has_section && !has_bodies && !tank_scene && top.is_object()) {
     diagnostics.error("section",
                       "missing (required: a \"section\" for a slope, \"bodies\" (and \"walls\") for a "
-                      "particle scene, or analyses.isph for a fluid scene)");
+                      "particle scene, or analyses.isph or analyses.mps for a flow in a tank)");
   }
   if (has_section) {
     if (auto section = top.object("section", Need::required)) {
@@ -414,6 +420,13 @@ std::string summarize(const Scene& scene) {
         << f.water.size() << " water block" << (f.water.size() == 1 ? "" : "s");
     if (scene.section || scene.body_count) out << "; ";
   }
+  if (scene.analyses.mps) {
+    const MpsAnalysis& m = *scene.analyses.mps;
+    out << "MPS tank x " << format_number(m.tank.x_min) << " to " << format_number(m.tank.x_max) << " m, "
+        << m.blocks.size() << " block" << (m.blocks.size() == 1 ? "" : "s") << " of " << m.materials.size()
+        << " material" << (m.materials.size() == 1 ? "" : "s");
+    if (scene.section || scene.body_count) out << "; ";
+  }
   if (scene.body_count) {
     if (scene.section) out << "; ";
     out << *scene.body_count << " particle bod" << (*scene.body_count == 1 ? "y" : "ies");
@@ -431,6 +444,7 @@ std::string summarize(const Scene& scene) {
   if (scene.analyses.compare) analyses.emplace_back("compare");
   if (scene.analyses.srm) analyses.emplace_back("srm");
   if (scene.analyses.isph) analyses.emplace_back("isph");
+  if (scene.analyses.mps) analyses.emplace_back("mps");
   out << "; analyses: " << join(analyses);
   return out.str();
 }

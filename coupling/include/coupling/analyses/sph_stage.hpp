@@ -71,4 +71,9 @@ void install_interrupt_handler();
 // Whether SIGINT/SIGTERM arrived since the last SPH stage started (for other stages that run SPH, e.g. srm).
 bool interrupt_pending();
 
+// Callbacks of a particle run: a progress line "<prefix>: t = ... / ... s, step ..., ... left" on the log every
+// progress interval (none when log is null), and the stop at the end of a step on SIGINT/SIGTERM (clears a pending
+// request first).
+sph::RunCallbacks run_callbacks(std::ostream* log, const char* prefix);
+
 }  // namespace coupling

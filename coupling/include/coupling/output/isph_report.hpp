@@ -6,16 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/output/monitor_table.hpp"
 #include "sph/engine/run_loop.hpp"
 
 namespace coupling {
-
-// monitors.csv: time_s, then one column per gauge (<name>_m), then front_x_m when asked for.
-struct IsphMonitorTable {
-  std::vector<std::string> columns;  // without time_s
-  std::vector<double> times;  // [s]
-  std::vector<std::vector<double>> rows;  // one value per column, per time
-};
 
 struct IsphStageResult {
   sph::RunSummary summary;
@@ -26,11 +20,10 @@ struct IsphStageResult {
   double fluid_mass_start = 0, fluid_mass_end = 0;  // [kg/m]
   double front_x = 0;  // [m] at the end
   double max_density_error = 0;  // largest max |rho* - rho0|/rho0 over the steps
-  IsphMonitorTable monitors;
+  MonitorTable monitors;
 };
 
 nlohmann::json isph_report(const IsphStageResult& result);
 nlohmann::json isph_error_report(const std::string& error);
-std::string monitors_csv(const IsphMonitorTable& table);
 
 }  // namespace coupling

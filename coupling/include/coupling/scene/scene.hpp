@@ -20,6 +20,7 @@
 
 #include "coupling/scene/analysis_options.hpp"
 #include "coupling/scene/isph_analysis.hpp"
+#include "coupling/scene/mps_analysis.hpp"
 #include "coupling/scene/soil_material.hpp"
 #include "coupling/scene/sph_analysis.hpp"
 #include "slope/methods.hpp"
@@ -65,7 +66,8 @@ struct Analyses {
   std::optional<ComparisonOptions> compare;
   std::optional<SrmOptions> srm;
   std::optional<IsphAnalysis> isph;  // the ISPH fluid (docs/isph.md), independent of the others
-  bool empty() const { return !lem && !sph && !compare && !srm && !isph; }
+  std::optional<MpsAnalysis> mps;  // the WC-MPS granular or water flow (docs/mps.md), independent of the others
+  bool empty() const { return !lem && !sph && !compare && !srm && !isph && !mps; }
 };
 
 struct Scene {

@@ -1,0 +1,33 @@
+#pragma once
+// The "mps" block of report.json, from the typed result of the mps stage (docs/scene-format.md, report "mps").
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "coupling/output/monitor_table.hpp"
+#include "sph/engine/run_loop.hpp"
+
+namespace coupling {
+
+struct MpsStageResult {
+  sph::RunSummary summary;
+  std::string regularisation, interaction_viscosity;  // the settings' keys
+  double particle_spacing = 0, effective_radius = 0;  // dx, r_e [m]
+  double sound_speed = 0, viscosity_cap = 0;  // c0 [m/s], mu_cap [Pa s]
+  std::size_t moving_particles = 0, wall_particles = 0;
+  double mass_start = 0, mass_end = 0;  // [kg/m] of the moving particles
+  // The deposit: its front (the farthest particle still within 1.5 dx of the next one, plus dx/2) and its height
+  // at the tank's left wall, at the start and at the end [m]
+  double front_start = 0, front_end = 0, wall_height_start = 0, wall_height_end = 0;
+  double max_speed_end = 0;  // [m/s] the largest particle speed at the end (the deposit is at rest when small)
+  double max_speed_run = 0;  // [m/s] over the whole run, for the sound-speed rule c0 >= 10 |u|max
+  std::string sound_speed_warning;  // empty when the rule held
+  MonitorTable monitors;
+};
+
+nlohmann::json mps_report(const MpsStageResult& result);
+nlohmann::json mps_error_report(const std::string& error);
+
+}  // namespace coupling

@@ -1,0 +1,111 @@
+// The "mps" stage: the weakly compressible MPS (analyses.mps, docs/mps.md) in a tank, with its monitors (surface
+// gauges, the front, the height at the left wall) written to monitors.csv and its block of report.json.
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <ostream>
+#include <string>
+
+#include "coupling/analyses/sph_stage.hpp"
+#include "coupling/analyses/stage.hpp"
+#include "coupling/analyses/tank_monitors.hpp"
+#include "coupling/output/mps_report.hpp"
+#include "sph/engine/atomic_file.hpp"
+#include "sph/mps/run.hpp"
+
+namespace coupling {
+
+namespace {
+
+sph::mps::Model build_mps_model(const MpsAnalysis& a) {
+  std::vector<sph::mps::Material> materials;
+  for (const MpsMaterial& m : a.materials) materials.push_back(m.material);
+  sph::mps::Model model(a.settings, std::move(materials));
+  for (std::size_t k = 0; k < a.blocks.size(); ++k) {
+    const TankRectangle& b = a.blocks[k];
+    sph::mps::add_block(model, b.x_min, b.y_min, b.x_max, b.y_max, a.block_material[k]);
+  }
+  // the walls' material index only labels them (their viscosity is never used)
+  sph::mps::add_box(model, a.tank.x_min, a.tank.x_max, a.tank.y_min, a.tank.height, 0);
+  return model;
+}
+
+double moving_mass(const sph::ParticleSet& p) { return p.total_mass(sph::ParticleKind::soil); }  // kind 0
+
+double max_speed(const sph::ParticleSet& p) {
+  double v = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == 0) v = std::max(v, std::hypot(p.vx[i], p.vy[i]));
+  return v;
+}
+
+MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
+  sph::mps::Model model = build_mps_model(a);
+  const double dx = a.settings.particle_spacing;
+  MpsStageResult result;
+  result.regularisation = sph::mps::regularisation_key(a.settings.regularisation);
+  result.interaction_viscosity = sph::mps::interaction_viscosity_key(a.settings.interaction_viscosity);
+  result.particle_spacing = dx;
+  result.effective_radius = a.settings.effective_radius();
+  result.sound_speed = a.settings.sound_speed;
+  result.viscosity_cap = a.settings.viscosity_cap;
+  result.moving_particles = model.particles.count(sph::ParticleKind::soil);
+  result.wall_particles = model.particles.size() - result.moving_particles;
+  result.mass_start = moving_mass(model.particles);
+  const double wall_x = a.tank.x_min + 0.5 * dx;  // the centres of the lattice column against the left wall
+  result.front_start = contact_front(model.particles, dx);
+  result.wall_height_start = surface_at(model.particles, wall_x, dx, a.tank.y_min) - a.tank.y_min;
+  TankMonitorObserver monitors(a.monitors, a.tank, dx);
+  monitors.sample(model.particles, 0.0);
+  sph::RunOptions run_options;
+  if (options.output_dir) run_options.output_dir = options.output_dir->string();
+  run_options.progress_interval_wall_s = 2.0;
+  sph::RunCallbacks callbacks = run_callbacks(options.log, "mps");
+  callbacks.observers.push_back(&monitors);
+  double fastest = 0;
+  result.summary = sph::mps::run(model, run_options, callbacks, [&](const sph::mps::Step&, const sph::RunState&) {
+    fastest = std::max(fastest, max_speed(model.particles));
+  });
+  result.max_speed_run = fastest;
+  result.sound_speed_warning = sph::mps::sound_speed_problem(a.settings.sound_speed, fastest);
+  if (monitors.table().times.back() < model.state.time) monitors.sample(model.particles, model.state.time);
+  result.mass_end = moving_mass(model.particles);
+  result.front_end = contact_front(model.particles, dx);
+  result.wall_height_end = surface_at(model.particles, wall_x, dx, a.tank.y_min) - a.tank.y_min;
+  result.max_speed_end = max_speed(model.particles);
+  result.monitors = std::move(monitors.table());
+  return result;
+}
+
+}  // namespace
+
+StageOutcome run_mps_stage(const Scene& scene, StageContext& context) {
+  const WorkflowOptions& options = context.options;
+  WorkflowResult& out = context.out;
+  StageOutcome outcome;
+  const StageClock::time_point start = StageClock::now();
+  try {
+    const MpsStageResult result = run_mps(*scene.analyses.mps, options);
+    out.report["mps"] = mps_report(result);
+    if (options.output_dir)
+      sph::write_file_atomically(*options.output_dir / "monitors.csv", monitors_csv(result.monitors));
+    if (result.summary.stopped_because != "end_time") {
+      outcome.status = ExitStatus::failed;
+      outcome.errors.push_back("mps: stopped (" + result.summary.stopped_because + ") " + result.summary.diagnostic);
+    }
+    if (options.log) {
+      *options.log << "mps: " << result.moving_particles << " particles, " << result.summary.steps
+                   << " steps to t = " << result.summary.simulated_time << " s; front x = " << result.front_end
+                   << " m, height at the left wall " << result.wall_height_end << " m\n";
+      if (!result.sound_speed_warning.empty()) *options.log << "mps: warning: " << result.sound_speed_warning << "\n";
+    }
+  } catch (const std::exception& error) {
+    outcome.status = ExitStatus::failed;
+    outcome.errors.push_back(std::string("mps: ") + error.what());
+    out.report["mps"] = mps_error_report(outcome.errors.back());
+  }
+  out.report["timing_s"]["mps"] = seconds_since(start);
+  return outcome;
+}
+
+}  // namespace coupling

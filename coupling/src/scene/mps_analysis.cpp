@@ -1,0 +1,120 @@
+// analyses.mps: settings, materials, tank, blocks and monitors of the WC-MPS (docs/scene-format.md).
+#include "coupling/scene/mps_analysis.hpp"
+
+#include <exception>
+#include <set>
+
+namespace coupling {
+
+namespace {
+
+constexpr SizeLimit materials_limit{100, "materials", "each block names one of them"};
+
+void read_numerics(JsonReader& r, sph::mps::Settings& s) {
+  using Settings = sph::mps::Settings;
+  if (auto v = r.number("particle_spacing_m", Need::required, Bounds::positive())) s.particle_spacing = *v;
+  if (auto v = r.number("end_time_s", Need::required, Bounds::positive())) s.end_time = *v;
+  s.re_over_dx = r.number_or("re_over_dx", s.re_over_dx, Bounds::closed(Settings::min_re_over_dx, Settings::max_re_over_dx));
+  s.rest_density = r.number_or("rest_density_kg_m3", s.rest_density, Bounds::positive());
+  s.sound_speed = r.number_or("sound_speed_m_s", s.sound_speed, Bounds::positive());
+  s.surface_beta =
+      r.number_or("surface_beta", s.surface_beta, Bounds::closed(Settings::min_surface_beta, Settings::max_surface_beta));
+  s.viscosity_cap = r.number_or("viscosity_cap_Pa_s", s.viscosity_cap, Bounds::positive());
+  s.pressure_split = r.number_or("pressure_split", s.pressure_split, Bounds::closed(0.0, 1.0));
+  s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, 1.0, true});
+  s.output_interval = r.number_or("output_interval_s", s.output_interval, Bounds::non_negative());
+  if (auto form = r.string("regularisation", Need::optional)) {
+    try {
+      s.regularisation = sph::mps::regularisation_from(*form);
+    } catch (const std::exception&) {
+      r.diagnostics().error(r.path_of("regularisation"),
+                            "expected \"consistent\" or \"as_printed\", got \"" + *form + "\"");
+    }
+  }
+  if (auto mode = r.string("interaction_viscosity", Need::optional)) {
+    try {
+      s.interaction_viscosity = sph::mps::interaction_viscosity_from(*mode);
+    } catch (const std::exception&) {
+      r.diagnostics().error(r.path_of("interaction_viscosity"),
+                            "expected \"harmonic_mean\" or \"own\", got \"" + *mode + "\"");
+    }
+  }
+}
+
+// One material: {name, type: "granular", consistency_Pa_sN, flow_index, regularisation_growth_s,
+// friction_angle_deg, cohesion_kPa} or {name, type: "water", viscosity_Pa_s}.
+MpsMaterial read_material(JsonReader& m) {
+  MpsMaterial out;
+  out.name = m.string("name", Need::required).value_or("");
+  const std::string type = m.string("type", Need::required).value_or("");
+  if (type == "water") {
+    out.material = sph::mps::Material::water(m.number_or("viscosity_Pa_s", 1.0e-3, Bounds::non_negative()));
+  } else if (type == "granular") {
+    sph::mps::HerschelBulkley hb;
+    hb.consistency = m.number_or("consistency_Pa_sN", hb.consistency, Bounds::non_negative());
+    hb.flow_index = m.number_or("flow_index", hb.flow_index, Bounds{0.0, false, 2.0, true});
+    hb.growth = m.number_or("regularisation_growth_s", hb.growth, Bounds::positive());
+    hb.friction_angle_deg = m.number_or("friction_angle_deg", hb.friction_angle_deg, Bounds::half_open(0.0, 90.0));
+    hb.cohesion = 1.0e3 * m.number_or("cohesion_kPa", 0.0, Bounds::non_negative());
+    out.material = sph::mps::Material::granular_material(hb);
+  } else {
+    if (!type.empty())
+      m.diagnostics().error(m.path_of("type"), "expected \"granular\" or \"water\", got \"" + type + "\"");
+    // without a known type the other keys cannot be checked: one error, not one per key
+    for (const char* key : {"viscosity_Pa_s", "consistency_Pa_sN", "flow_index", "regularisation_growth_s",
+                            "friction_angle_deg", "cohesion_kPa"})
+      m.allow(key);
+  }
+  return out;
+}
+
+void read_materials(JsonReader& r, std::vector<MpsMaterial>& materials) {
+  const nlohmann::json* list = r.array("materials", Need::required, 1, materials_limit, "an array of materials");
+  if (!list) return;
+  std::set<std::string> names;
+  for (std::size_t k = 0; k < list->size(); ++k) {
+    JsonReader m((*list)[k], index_path(r.path_of("materials"), k), r.diagnostics());
+    MpsMaterial material = read_material(m);
+    if (!material.name.empty() && !names.insert(material.name).second)
+      m.diagnostics().error(m.path_of("name"), "used twice (each material needs its own name)");
+    materials.push_back(std::move(material));
+    m.finish();
+  }
+}
+
+// The block's "material": one of the names in materials.
+void read_block_material(JsonReader& b, const std::vector<MpsMaterial>& materials, MpsAnalysis& a) {
+  const auto name = b.string("material", Need::required);
+  std::string known;
+  for (std::size_t k = 0; k < materials.size(); ++k) {
+    if (name && materials[k].name == *name) {
+      a.block_material.push_back(static_cast<std::uint16_t>(k));
+      return;
+    }
+    known += (k ? ", " : "") + materials[k].name;
+  }
+  a.block_material.push_back(0);
+  if (name) b.diagnostics().error(b.path_of("material"), "unknown material \"" + *name + "\" (known: " + known + ")");
+}
+
+}  // namespace
+
+MpsAnalysis read_mps_analysis(JsonReader& mps) {
+  MpsAnalysis a;
+  read_numerics(mps, a.settings);
+  read_materials(mps, a.materials);
+  read_tank(mps, a.tank);
+  read_tank_rectangles(mps, "blocks", a.tank, a.blocks,
+                       [&](JsonReader& b) { read_block_material(b, a.materials, a); });
+  read_tank_monitors(mps, a.monitors, true);
+  mps.finish();
+  try {
+    a.settings.validate();
+    for (const MpsMaterial& m : a.materials) m.material.validate();
+  } catch (const std::exception& error) {
+    mps.diagnostics().error(mps.path(), error.what());
+  }
+  return a;
+}
+
+}  // namespace coupling
