@@ -393,6 +393,8 @@ TEST_CASE("sphslope run on an mps scene writes the mps block and monitors.csv", 
   const nlohmann::json& mps = report["mps"];
   CHECK(mps["status"] == "ok");
   CHECK(mps["particles"]["moving"] == 60);
+  CHECK(mps["effective_pressure"] == "smoothed");
+  CHECK(mps["stress_divergence"] == "direct");
   CHECK(mps["simulated_time_s"].get<double>() == Approx(0.6));
   CHECK(mps["mass_kg_per_m"]["end"].get<double>() == Approx(1500.0 * 0.1 * 0.06));  // rho0 l0 h0 [kg/m]
   CHECK(mps["mass_kg_per_m"]["start"].get<double>() == Approx(1500.0 * 0.1 * 0.06));

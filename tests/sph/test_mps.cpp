@@ -304,6 +304,58 @@ TEST_CASE("mps viscous force of eq. 22 with a uniform viscosity is mu times the 
   }
 }
 
+namespace {
+
+// The indirect stress divergence (eq. 23) at the lattice centre for the velocity (u, v) and viscosities mu: each
+// particle's stress 2 mu D from the MPS strain rate, then their MPS gradients.
+sph::mps::Vector2 indirect_divergence(const Lattice& lat, const std::vector<double>& u, const std::vector<double>& v,
+                                      const std::vector<double>& mu, double n0) {
+  const auto nb = lat.neighbourhood();
+  std::vector<double> sxx(lat.set.size()), syy(lat.set.size()), sxy(lat.set.size());
+  for (std::size_t k = 0; k < lat.set.size(); ++k) {
+    const auto d = sph::mps::strain_rate(nb, k, u.data(), v.data(), n0);
+    sxx[k] = 2.0 * mu[k] * d.xx;
+    syy[k] = 2.0 * mu[k] * d.yy;
+    sxy[k] = 2.0 * mu[k] * d.xy;
+  }
+  return sph::mps::stress_divergence(nb, lat.at(12, 12), sxx.data(), syy.data(), sxy.data(), n0);
+}
+
+}  // namespace
+
+// div(2 mu D) = mu (lap u + grad div u) for a uniform mu. For u = 50 x^2, v = 0 [m/s] (a pure extension, not
+// divergence-free) and mu = 3 Pa s it is (600, 0) N/m^3; eq. 22 (the Laplacian form) gives mu lap u = 300, half.
+// For a rigid rotation (u, v) = (-y, x) [m/s] in a viscosity that grows with x, D = 0 and there is no stress; eq. 22
+// with the harmonic-mean pair viscosity gives sum mu_ij (u_j - u_i) w, not zero (with mu_ij = mu_i it is mu_i times
+// the Laplacian of a linear field, zero). The indirect form (eq. 23) gives both right (docs/mps.md, "Stress
+// divergence").
+TEST_CASE("mps indirect stress divergence of eq. 23 is div(2 mu D) where the direct form of eq. 22 is not",
+          "[mps]") {
+  const Lattice lat(25, 25);
+  const sph::mps::LatticeConstants c = sph::mps::lattice_constants(dx, re);
+  const auto nb = lat.neighbourhood();
+  const std::size_t centre = lat.at(12, 12);
+  const std::vector<double> u = lat.sample([](double x, double) { return 50.0 * x * x; });
+  const std::vector<double> zero(lat.set.size(), 0.0);
+  const std::vector<double> mu(lat.set.size(), 3.0);
+  const sph::mps::Vector2 indirect = indirect_divergence(lat, u, zero, mu, c.n0);
+  CHECK(indirect.x == Approx(600.0).epsilon(1e-9));
+  CHECK(std::abs(indirect.y) < 1e-9);
+  const sph::mps::Vector2 direct = sph::mps::viscous_force(nb, centre, u.data(), zero.data(), mu.data(), c,
+                                                           sph::mps::InteractionViscosity::harmonic_mean);
+  CHECK(direct.x == Approx(300.0).epsilon(1e-9));
+
+  const std::vector<double> ur = lat.sample([](double, double y) { return -y; });
+  const std::vector<double> vr = lat.sample([](double x, double) { return x; });
+  const std::vector<double> graded = lat.sample([](double x, double) { return 1.0 + 100.0 * x; });  // [Pa s]
+  const sph::mps::Vector2 rotation = indirect_divergence(lat, ur, vr, graded, c.n0);
+  CHECK(std::hypot(rotation.x, rotation.y) < 1e-9);
+  const sph::mps::Vector2 rotation_direct = sph::mps::viscous_force(
+      nb, centre, ur.data(), vr.data(), graded.data(), c, sph::mps::InteractionViscosity::harmonic_mean);
+  INFO("eq. 22 on the rotation: (" << rotation_direct.x << ", " << rotation_direct.y << ") N/m^3");
+  CHECK(std::abs(rotation_direct.y) > 1.0);  // a spurious force [N/m^3]
+}
+
 TEST_CASE("mps harmonic-mean interaction viscosity keeps a near-rigid particle from driving its neighbours", "[mps]") {
   CHECK(terms::harmonic_mean_viscosity(1.0, 1.0) == 1.0);
   CHECK(terms::harmonic_mean_viscosity(1.0, 3.0) == Approx(1.5).epsilon(1e-15));

@@ -182,3 +182,32 @@ TEST_CASE("MPS wall collision stops a particle the pressure cannot hold (docs/mp
   CHECK(lowest_on > 0.0005);  // measured 2.5 mm: straight above a wall particle, 0.75 dx above the row
   CHECK(std::fabs(vy_on) < 0.05);  // fully inelastic (restitution 0): it stays on the floor
 }
+
+// The hydrostatic effective pressure (settings.effective_pressure, eqs. 18-19 with the surface at the top particle's
+// edge): a column 0.1 m x 0.06 m at dx = 10 mm, rho0 = 1500 kg/m^3, at rest. The bottom grain (centre 5 mm above the
+// floor, 50 mm below the top row's centres) carries rho0 g (0.05 + 0.005) = 809.3 Pa; the first floor row under the
+// column (centre 5 mm below the floor) rho0 g 0.065; a floor particle with no grain above it, 0.
+TEST_CASE("MPS hydrostatic effective pressure is the weight of the material above (eqs. 18-19)", "[mps]") {
+  sph::mps::Settings st;
+  st.particle_spacing = 0.01;
+  st.end_time = 0.1;
+  st.effective_pressure = sph::mps::EffectivePressure::hydrostatic;
+  sph::mps::Model model(st, {sph::mps::Material::granular_material()});
+  sph::mps::add_block(model, 0.0, 0.0, 0.1, 0.06, 0);
+  sph::mps::add_box(model, 0.0, 0.3, 0.0, 0.12, 0);
+  sph::mps::Step step(model);
+  step.initialise();
+  const sph::ParticleSet& p = model.particles;
+  const double* pp = p.field(model.fields.smoothed_pressure).data();
+  auto at = [&](double x, double y) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (std::abs(p.x[i] - x) < 1e-6 && std::abs(p.y[i] - y) < 1e-6) return pp[i];
+    FAIL("no particle at " << x << ", " << y);
+    return 0.0;
+  };
+  const double rho_g = 1500.0 * g;
+  CHECK(at(0.045, 0.005) == Approx(rho_g * 0.055).epsilon(1e-12));
+  CHECK(at(0.045, 0.055) == Approx(rho_g * 0.005).epsilon(1e-12));  // the top row: half its own cell
+  CHECK(at(0.045, -0.005) == Approx(rho_g * 0.065).epsilon(1e-12));
+  CHECK(at(0.255, -0.005) == 0.0);
+}

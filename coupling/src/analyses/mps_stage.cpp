@@ -45,6 +45,8 @@ MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
   MpsStageResult result;
   result.regularisation = sph::mps::regularisation_key(a.settings.regularisation);
   result.interaction_viscosity = sph::mps::interaction_viscosity_key(a.settings.interaction_viscosity);
+  result.effective_pressure = sph::mps::effective_pressure_key(a.settings.effective_pressure);
+  result.stress_divergence = sph::mps::stress_divergence_key(a.settings.stress_divergence);
   result.particle_spacing = dx;
   result.effective_radius = a.settings.effective_radius();
   result.sound_speed = a.settings.sound_speed;

@@ -10,6 +10,8 @@ nlohmann::json mps_report(const MpsStageResult& r) {
   if (!r.summary.diagnostic.empty()) j["diagnostic"] = r.summary.diagnostic;
   j["regularisation"] = r.regularisation;
   j["interaction_viscosity"] = r.interaction_viscosity;
+  j["effective_pressure"] = r.effective_pressure;
+  j["stress_divergence"] = r.stress_divergence;
   j["particle_spacing_m"] = r.particle_spacing;
   j["effective_radius_m"] = r.effective_radius;
   j["sound_speed_m_s"] = r.sound_speed;

@@ -31,6 +31,21 @@ void read_numerics(JsonReader& r, sph::mps::Settings& s) {
                             "expected \"consistent\" or \"as_printed\", got \"" + *form + "\"");
     }
   }
+  if (auto mode = r.string("effective_pressure", Need::optional)) {
+    try {
+      s.effective_pressure = sph::mps::effective_pressure_from(*mode);
+    } catch (const std::exception&) {
+      r.diagnostics().error(r.path_of("effective_pressure"),
+                            "expected \"smoothed\" or \"hydrostatic\", got \"" + *mode + "\"");
+    }
+  }
+  if (auto mode = r.string("stress_divergence", Need::optional)) {
+    try {
+      s.stress_divergence = sph::mps::stress_divergence_from(*mode);
+    } catch (const std::exception&) {
+      r.diagnostics().error(r.path_of("stress_divergence"), "expected \"direct\" or \"indirect\", got \"" + *mode + "\"");
+    }
+  }
   if (auto mode = r.string("interaction_viscosity", Need::optional)) {
     try {
       s.interaction_viscosity = sph::mps::interaction_viscosity_from(*mode);

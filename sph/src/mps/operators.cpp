@@ -58,6 +58,20 @@ Vector2 gradient(const Neighbourhood& nb, std::size_t i, const double* phi, doub
   return {c * g.x, c * g.y};
 }
 
+Vector2 stress_divergence(const Neighbourhood& nb, std::size_t i, const double* sxx, const double* syy,
+                          const double* sxy, double n0) {
+  Vector2 d;
+  for_each_mps_neighbour(nb, i, [&](std::size_t j, double x_ij, double y_ij, double r2, double w) {
+    const double fxx = terms::gradient_factor(sxx[j] - sxx[i], w, r2);
+    const double fyy = terms::gradient_factor(syy[j] - syy[i], w, r2);
+    const double fxy = terms::gradient_factor(sxy[j] - sxy[i], w, r2);
+    d.x += fxx * x_ij + fxy * y_ij;
+    d.y += fxy * x_ij + fyy * y_ij;
+  });
+  const double c = terms::gradient_prefactor(n0);
+  return {c * d.x, c * d.y};
+}
+
 double divergence(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, double n0) {
   double sum = 0;
   for_each_mps_neighbour(nb, i, [&](std::size_t j, double x_ij, double y_ij, double r2, double w) {

@@ -28,6 +28,24 @@ const char* interaction_viscosity_key(InteractionViscosity v) {
   return v == InteractionViscosity::harmonic_mean ? "harmonic_mean" : "own";
 }
 
+EffectivePressure effective_pressure_from(const std::string& key) {
+  if (key == "smoothed") return EffectivePressure::smoothed;
+  if (key == "hydrostatic") return EffectivePressure::hydrostatic;
+  throw std::invalid_argument("mps effective pressure '" + key + "': expected \"smoothed\" or \"hydrostatic\"");
+}
+
+const char* effective_pressure_key(EffectivePressure p) {
+  return p == EffectivePressure::smoothed ? "smoothed" : "hydrostatic";
+}
+
+StressDivergence stress_divergence_from(const std::string& key) {
+  if (key == "direct") return StressDivergence::direct;
+  if (key == "indirect") return StressDivergence::indirect;
+  throw std::invalid_argument("mps stress divergence '" + key + "': expected \"direct\" or \"indirect\"");
+}
+
+const char* stress_divergence_key(StressDivergence s) { return s == StressDivergence::direct ? "direct" : "indirect"; }
+
 std::string sound_speed_problem(double c0, double u_max) {
   if (terms::sound_speed_sufficient(c0, u_max)) return {};
   std::ostringstream s;

@@ -8,6 +8,7 @@
 #include "sph/engine/cell_sort.hpp"
 #include "sph/engine/run_loop.hpp"
 #include "sph/engine/neighbours.hpp"
+#include "sph/mps/effective_pressure.hpp"
 #include "sph/mps/terms.hpp"
 
 namespace sph::mps {
@@ -21,6 +22,8 @@ struct Step::Impl {
   CellSortedSet sorted;
   FieldId x_start = 0, y_start = 0;  // r^m during a step [m] (workspace, reordered with the set)
   std::vector<double> fx, fy;  // the non-pressure forces of the predictor [N/m^3]
+  std::vector<double> weight_above;  // the hydrostatic p' of every particle [Pa] (effective_pressure hydrostatic)
+  std::vector<double> sxx, syy, sxy;  // each particle's viscous stress 2 mu D [Pa] (stress_divergence indirect)
 };
 
 Step::Step(Model& model) : model_(model), impl_(std::make_unique<Impl>()) {
@@ -51,27 +54,62 @@ void Step::initialise() {
   model_.state.rates_valid = true;  // the carried state is p^m (checkpointed) and the positions and velocities
 }
 
-// Steps b and c at r^m: p' (Shepard, clamped >= 0) from p^m, then each particle's viscosity by its material.
+// [M25] with [M24] (eqs. 18-19), the hydrostatic p' of every particle: rho0 |g| (h + dx/2) below the moving
+// material's surface; 0 for a wall particle with no moving particle above it.
+void Step::hydrostatic_pressures() {
+  const ParticleSet& p = model_.particles;
+  const Settings& st = model_.settings;
+  std::vector<std::uint8_t> surface(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) surface[i] = p.kind[i] == kMoving ? 1 : 0;
+  std::vector<double>& w = impl_->weight_above;
+  w = depth_below_surface(p, surface, st.particle_spacing);
+  const double g = std::hypot(gravity_x(), gravity_y());
+  for (std::size_t i = 0; i < p.size(); ++i)
+    w[i] = p.kind[i] == kMoving || w[i] > 0
+               ? hydrostatic_pressure(st.rest_density, g, w[i] + 0.5 * st.particle_spacing)
+               : 0.0;
+}
+
+// Steps b and c at r^m: p' (Shepard, clamped >= 0, from p^m; or hydrostatic), then each particle's viscosity by
+// its material; for the indirect stress divergence, each particle's stress 2 mu D.
 void Step::viscosities() {
   ParticleSet& p = model_.particles;
   const Arrays a = model_.arrays();
   const Settings& st = model_.settings;
   const Neighbourhood nb = neighbourhood();
   const auto n = static_cast<Index>(p.size());
+  const bool hydrostatic = st.effective_pressure == EffectivePressure::hydrostatic;
+  const bool indirect = st.stress_divergence == StressDivergence::indirect;
+  if (hydrostatic) hydrostatic_pressures();
+  if (indirect) {
+    impl_->sxx.assign(p.size(), 0.0);
+    impl_->syy.assign(p.size(), 0.0);
+    impl_->sxy.assign(p.size(), 0.0);
+  }
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    a.smoothed_pressure[i] = std::max(smoothed_pressure(nb, i, a.pressure), 0.0);
+    a.smoothed_pressure[i] =
+        hydrostatic ? impl_->weight_above[i] : std::max(smoothed_pressure(nb, i, a.pressure), 0.0);
     const Material& mat = model_.materials[std::min<std::size_t>(p.material[i], model_.materials.size() - 1)];
-    if (mat.type == Material::Type::water) {
+    const bool water = mat.type == Material::Type::water;
+    if (water && !indirect) {
       a.viscosity[i] = mat.viscosity;
       continue;
     }
-    const double norm_d = terms::strain_rate_norm(strain_rate(nb, i, p.vx.data(), p.vy.data(), lattice_.n0));
-    a.viscosity[i] =
-        effective_viscosity(mat.granular, a.smoothed_pressure[i], norm_d, st.regularisation, st.viscosity_cap);
+    const terms::StrainRate d = strain_rate(nb, i, p.vx.data(), p.vy.data(), lattice_.n0);
+    a.viscosity[i] = water ? mat.viscosity
+                           : effective_viscosity(mat.granular, a.smoothed_pressure[i], terms::strain_rate_norm(d),
+                                                 st.regularisation, st.viscosity_cap);
+    if (indirect) {
+      impl_->sxx[i] = 2.0 * a.viscosity[i] * d.xx;
+      impl_->syy[i] = 2.0 * a.viscosity[i] * d.yy;
+      impl_->sxy[i] = 2.0 * a.viscosity[i] * d.xy;
+    }
   }
 }
+
+
 
 // [M4] eq. 24 over the particles that carry pressure (moving and wall particles; dummy particles are left out).
 Vector2 Step::pressure_gradient(std::size_t i, const double* p) const {
@@ -111,7 +149,9 @@ void Step::predict(double dt) {
     const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] != kMoving) continue;
     const Vector2 v =
-        viscous_force(nb, i, p.vx.data(), p.vy.data(), a.viscosity, lattice_, st.interaction_viscosity);
+        st.stress_divergence == StressDivergence::indirect
+            ? stress_divergence(nb, i, impl_->sxx.data(), impl_->syy.data(), impl_->sxy.data(), lattice_.n0)
+            : viscous_force(nb, i, p.vx.data(), p.vy.data(), a.viscosity, lattice_, st.interaction_viscosity);
     const Vector2 g = pressure_gradient(i, a.pressure);
     impl_->fx[i] = terms::predicted_velocity(p.vx[i], dt, rho, bx, v.x, g.x, alpha);
     impl_->fy[i] = terms::predicted_velocity(p.vy[i], dt, rho, by, v.y, g.y, alpha);

@@ -13,7 +13,7 @@ namespace coupling {
 
 struct MpsStageResult {
   sph::RunSummary summary;
-  std::string regularisation, interaction_viscosity;  // the settings' keys
+  std::string regularisation, interaction_viscosity, effective_pressure, stress_divergence;  // the settings' keys
   double particle_spacing = 0, effective_radius = 0;  // dx, r_e [m]
   double sound_speed = 0, viscosity_cap = 0;  // c0 [m/s], mu_cap [Pa s]
   std::size_t moving_particles = 0, wall_particles = 0;

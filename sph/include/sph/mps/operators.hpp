@@ -59,6 +59,12 @@ terms::StrainRate strain_rate(const Neighbourhood& nb, std::size_t i, const doub
 Vector2 viscous_force(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, const double* mu,
                       const LatticeConstants& lattice, InteractionViscosity interaction);
 
+// [M29] the indirect stress divergence of seed eq. 23: <div tau>_i = (<d tau_xx/dx> + <d tau_xy/dy>, <d tau_xy/dx> +
+// <d tau_yy/dy>) [N/m^3] by the MPS gradient [M4] of the particles' stresses tau = 2 mu D [Pa] (symmetric: sxy is
+// both off-diagonal components). One neighbour pass for the three gradients.
+Vector2 stress_divergence(const Neighbourhood& nb, std::size_t i, const double* sxx, const double* syy,
+                          const double* sxy, double n0);
+
 // [M14] p'_i = sum_{j != i} p_j w_ij / sum_{j != i} w_ij [Pa] (Shepard, A4), not clamped (the yield stress clamps
 // it); 0 for a particle without neighbours.
 double smoothed_pressure(const Neighbourhood& nb, std::size_t i, const double* p);

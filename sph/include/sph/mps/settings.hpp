@@ -28,6 +28,29 @@ enum class InteractionViscosity {
   own,  // "own": mu_ij = mu_i (the paper's comparison; steeper deposits)
 };
 
+// The effective pressure p' of the yield stress tau_y = c cos(phi) + p' sin(phi) (seed section 2.9, Figs 6-7).
+enum class EffectivePressure {
+  smoothed,  // "smoothed" (default): the Shepard average of the EOS pressure (eq. 20), clamped at 0
+  // "hydrostatic": the weight of the material above, rho0 |g| (h + dx/2), h the depth of the particle's centre below
+  // the highest moving particle's centre within dx in x (eqs. 18-19); + dx/2 because the surface is that particle's
+  // top edge. Wall particles get the weight above them too (their viscosity is the floor's friction in the
+  // harmonic mean). The paper's comparison: it ignores vertical accelerations
+  hydrostatic,
+};
+
+// The divergence of the viscous stress in the momentum equation (seed eqs. 22-23, Figs 10-11).
+enum class StressDivergence {
+  // "direct" (default): eq. 22, the MPS Laplacian with the pair viscosity, (2d/(lambda n0)) sum mu_ij (u_j - u_i) w;
+  // it is div(mu grad u), which is div(2 mu D) only where mu is uniform and the flow divergence-free: it carries
+  // the simple-shear stress exactly, half the stress of a pure extension, and a rigid rotation in a viscosity
+  // gradient feels a force (docs/mps.md, section 7)
+  direct,
+  // "indirect": eq. 23, the MPS gradient of each particle's stress tau = 2 mu D (the strain rate of eq. 17),
+  // div tau = (d tau_xx/dx + d tau_xy/dy, d tau_xy/dx + d tau_yy/dy): div(2 mu D) for any viscosity field; the
+  // paper reports fluctuations of viscosity and velocity with it
+  indirect,
+};
+
 struct Settings : EngineSettings {
   // r_e = 4.0 dx: the value of the paper's code lineage for weakly compressible 2-D runs (seed 2.3 and A12; the
   // paper gives none). On the square lattice it gives n0 = 4.1983 and lambda = 2.7345 dx^2 and 44 neighbours;
@@ -51,6 +74,8 @@ struct Settings : EngineSettings {
   // code lineage's 200 Pa s; its sensitivity is to be studied (issue 12, the stability matrix)
   double viscosity_cap = 200.0;
   Regularisation regularisation = Regularisation::consistent;  // A2
+  EffectivePressure effective_pressure = EffectivePressure::smoothed;
+  StressDivergence stress_divergence = StressDivergence::direct;
   InteractionViscosity interaction_viscosity = InteractionViscosity::harmonic_mean;
   // alpha of eqs. 28-29 (A23): the share of the pressure force taken at the new time level, "typically 0.5"
   double pressure_split = 0.5;
@@ -78,6 +103,12 @@ struct Settings : EngineSettings {
 // "as_printed" / "consistent". Throws std::invalid_argument on other names.
 Regularisation regularisation_from(const std::string& key);
 const char* regularisation_key(Regularisation r);
+// "smoothed" / "hydrostatic". Throws std::invalid_argument on other names.
+EffectivePressure effective_pressure_from(const std::string& key);
+const char* effective_pressure_key(EffectivePressure p);
+// "direct" / "indirect". Throws std::invalid_argument on other names.
+StressDivergence stress_divergence_from(const std::string& key);
+const char* stress_divergence_key(StressDivergence s);
 // "harmonic_mean" / "own". Throws std::invalid_argument on other names.
 InteractionViscosity interaction_viscosity_from(const std::string& key);
 const char* interaction_viscosity_key(InteractionViscosity v);

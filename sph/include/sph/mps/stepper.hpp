@@ -1,9 +1,10 @@
 #pragma once
 // One time step of the WC-MPS (seed 2.11, eqs. 27-30), on the engine's Stepper interface:
 //   a  sort by cells of side r_e at r^m
-//   b  p' = Shepard-smoothed p^m (eq. 20, clamped >= 0), the strain rate D (eq. 17)
+//   b  p' = Shepard-smoothed p^m (eq. 20, clamped >= 0) or the hydrostatic weight above (eqs. 18-19, the setting
+//      effective_pressure), the strain rate D (eq. 17)
 //   c  mu_i: the material's constant viscosity (water) or the capped regularised Herschel-Bulkley law (granular)
-//   d  <div tau>^m (eq. 22) and <grad p>^m (eq. 24)
+//   d  <div tau>^m (eq. 22, or eq. 23 with stress_divergence indirect) and <grad p>^m (eq. 24)
 //   e  u* = u^m + (dt/rho0)(rho0 g + <div tau>^m - (1 - alpha) <grad p>^m) (eq. 28); r* = r^m + u* dt
 //   f  sort at r*; n*; p^{m+1} = Tait(n*), 0 at the free surface n* <= beta n0 (eqs. 13, 15)
 //   g  u^{m+1} = u* - alpha (dt/rho0) <grad p>^{m+1} (eqs. 27, 29)
@@ -45,6 +46,7 @@ class Step : public Stepper {
   Neighbourhood neighbourhood() const;
   void sort();
   void viscosities();
+  void hydrostatic_pressures();
   void predict(double dt);
   void equation_of_state();
   void correct(double dt);
