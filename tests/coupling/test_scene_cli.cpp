@@ -419,4 +419,25 @@ TEST_CASE("sphslope run on an mps scene writes the mps block and monitors.csv", 
   CHECK(rows == mps["monitors"]["rows"].get<int>());
   CHECK(rows >= 61);  // t = 0, then every 10 ms to 0.6 s
   CHECK(std::stod(last.substr(last.rfind(',') + 1)) == Approx(deposit["wall_height_m"]["end"].get<double>()));
+
+  // The same run stopped at 0.3 s and continued to 0.6 s with --resume (from checkpoint.bin, the monitors' earlier
+  // rows kept) ends with the same deposit. The time step is the viscous limit at the cap throughout, so the
+  // continued run takes the same steps.
+  const fs::path split = folder.path / "split";
+  scene["analyses"]["mps"]["end_time_s"] = 0.3;
+  const fs::path first_half = folder.path / "mps_first_half.json";
+  std::ofstream(first_half) << scene.dump();
+  REQUIRE(run_program("run " + quoted(first_half.string()) + " -o " + quoted(split.string())).status == 0);
+  const ProgramRun resumed = run_program("run " + quoted(file.string()) + " -o " + quoted(split.string()) + " --resume");
+  INFO(resumed.output);
+  REQUIRE(resumed.status == 0);
+  CHECK(resumed.output.find("mps: resuming at t = 0.3") != std::string::npos);
+  std::ifstream resumed_file(split / "report.json");
+  const nlohmann::json again = nlohmann::json::parse(resumed_file)["mps"];
+  CHECK(again["simulated_time_s"].get<double>() == Approx(0.6));
+  CHECK(again["deposit"]["front_x_m"]["end"].get<double>() == Approx(front).margin(1e-6));
+  CHECK(again["deposit"]["wall_height_m"]["end"].get<double>() ==
+        Approx(deposit["wall_height_m"]["end"].get<double>()).margin(1e-6));
+  CHECK(again["monitors"]["rows"] == mps["monitors"]["rows"]);
+  CHECK(again["max_speed_m_s"].get<double>() == Approx(mps["max_speed_m_s"].get<double>()).margin(1e-9));
 }

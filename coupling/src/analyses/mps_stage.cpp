@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
 #include <ostream>
 #include <string>
 
@@ -39,6 +43,26 @@ double max_speed(const sph::ParticleSet& p) {
   return v;
 }
 
+// --resume: the model continues from the run folder's checkpoint; the monitors keep the rows written before it and
+// the largest speed of the run is carried over from the earlier report.json.
+double resume_mps(const WorkflowOptions& options, sph::mps::Model& model, TankMonitorObserver& monitors) {
+  if (!options.output_dir) throw std::runtime_error("--resume needs the run folder (-o DIR) that holds checkpoint.bin");
+  const std::filesystem::path checkpoint = *options.output_dir / "checkpoint.bin";
+  if (!std::filesystem::exists(checkpoint))
+    throw std::runtime_error("--resume: no checkpoint at " + checkpoint.string() + " (start the run without --resume)");
+  sph::mps::read_checkpoint(checkpoint.string(), model);
+  std::ifstream csv(*options.output_dir / "monitors.csv");
+  monitors.restore(std::string(std::istreambuf_iterator<char>(csv), {}), model.state.time);
+  double fastest = 0;
+  std::ifstream report(*options.output_dir / "report.json");
+  const nlohmann::json earlier = nlohmann::json::parse(report, nullptr, false);
+  if (!earlier.is_discarded() && earlier.contains("mps") && earlier["mps"].contains("max_speed_m_s"))
+    fastest = earlier["mps"]["max_speed_m_s"].get<double>();
+  if (options.log)
+    *options.log << "mps: resuming at t = " << model.state.time << " s (step " << model.state.step << ")\n";
+  return fastest;
+}
+
 MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
   sph::mps::Model model = build_mps_model(a);
   const double dx = a.settings.particle_spacing;
@@ -59,12 +83,12 @@ MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
   result.wall_height_start = surface_at(model.particles, wall_x, dx, a.tank.y_min) - a.tank.y_min;
   TankMonitorObserver monitors(a.monitors, a.tank, dx);
   monitors.sample(model.particles, 0.0);
+  double fastest = options.resume ? resume_mps(options, model, monitors) : 0.0;
   sph::RunOptions run_options;
   if (options.output_dir) run_options.output_dir = options.output_dir->string();
   run_options.progress_interval_wall_s = 2.0;
   sph::RunCallbacks callbacks = run_callbacks(options.log, "mps");
   callbacks.observers.push_back(&monitors);
-  double fastest = 0;
   result.summary = sph::mps::run(model, run_options, callbacks, [&](const sph::mps::Step&, const sph::RunState&) {
     fastest = std::max(fastest, max_speed(model.particles));
   });
@@ -91,7 +115,11 @@ StageOutcome run_mps_stage(const Scene& scene, StageContext& context) {
     out.report["mps"] = mps_report(result);
     if (options.output_dir)
       sph::write_file_atomically(*options.output_dir / "monitors.csv", monitors_csv(result.monitors));
-    if (result.summary.stopped_because != "end_time") {
+    if (result.summary.stopped_because == "interrupted") {
+      outcome.status = ExitStatus::failed;
+      outcome.errors.push_back("mps: the run was interrupted at t = " + format_number(result.summary.simulated_time) +
+                               " s; continue it with --resume");
+    } else if (result.summary.stopped_because != "end_time") {
       outcome.status = ExitStatus::failed;
       outcome.errors.push_back("mps: stopped (" + result.summary.stopped_because + ") " + result.summary.diagnostic);
     }

@@ -18,6 +18,9 @@ class TankMonitorObserver : public sph::Observer {
   // Adds a row at `time` and moves the next sample to the following multiple of the interval.
   void sample(const sph::ParticleSet& p, double time);
   MonitorTable& table() { return table_; }
+  // On --resume: the rows of an earlier monitors.csv up to `time` [s] replace the table, and sampling goes on from
+  // the next multiple of the interval. A file with other columns, or none, leaves the table as it is.
+  void restore(const std::string& csv, double time);
 
  private:
   const TankMonitors& monitors_;
