@@ -94,6 +94,8 @@ const BadScene bad_scenes[] = {
     {"mps_unknown_material_type.json", "check",
      "analyses.mps.materials[0].type: expected \"granular\" or \"water\", got \"clay\""},
     {"mps_viscosity_cap_zero.json", "check", "analyses.mps.viscosity_cap_Pa_s"},
+    {"mps_unknown_effective_pressure.json", "check",
+     "analyses.mps.effective_pressure: expected \"smoothed\" or \"hydrostatic\", got \"lithostatic\""},
     // Valid on its own; only the search itself finds that the limits admit no slip circle.
     {"no_valid_circle.json", "lem", "analyses.lem.search: the search limits admit no valid slip circle"},
 };

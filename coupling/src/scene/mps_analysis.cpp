@@ -10,6 +10,19 @@ namespace {
 
 constexpr SizeLimit materials_limit{100, "materials", "each block names one of them"};
 
+// An optional string key naming one of a setting's choices; `from` throws on any other name.
+template <typename Choice>
+void read_choice(JsonReader& r, const char* key, const char* allowed, Choice (*from)(const std::string&),
+                 Choice& target) {
+  const auto name = r.string(key, Need::optional);
+  if (!name) return;
+  try {
+    target = from(*name);
+  } catch (const std::exception&) {
+    r.diagnostics().error(r.path_of(key), std::string("expected ") + allowed + ", got \"" + *name + "\"");
+  }
+}
+
 void read_numerics(JsonReader& r, sph::mps::Settings& s) {
   using Settings = sph::mps::Settings;
   if (auto v = r.number("particle_spacing_m", Need::required, Bounds::positive())) s.particle_spacing = *v;
@@ -23,37 +36,13 @@ void read_numerics(JsonReader& r, sph::mps::Settings& s) {
   s.pressure_split = r.number_or("pressure_split", s.pressure_split, Bounds::closed(0.0, 1.0));
   s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, 1.0, true});
   s.output_interval = r.number_or("output_interval_s", s.output_interval, Bounds::non_negative());
-  if (auto form = r.string("regularisation", Need::optional)) {
-    try {
-      s.regularisation = sph::mps::regularisation_from(*form);
-    } catch (const std::exception&) {
-      r.diagnostics().error(r.path_of("regularisation"),
-                            "expected \"consistent\" or \"as_printed\", got \"" + *form + "\"");
-    }
-  }
-  if (auto mode = r.string("effective_pressure", Need::optional)) {
-    try {
-      s.effective_pressure = sph::mps::effective_pressure_from(*mode);
-    } catch (const std::exception&) {
-      r.diagnostics().error(r.path_of("effective_pressure"),
-                            "expected \"smoothed\" or \"hydrostatic\", got \"" + *mode + "\"");
-    }
-  }
-  if (auto mode = r.string("stress_divergence", Need::optional)) {
-    try {
-      s.stress_divergence = sph::mps::stress_divergence_from(*mode);
-    } catch (const std::exception&) {
-      r.diagnostics().error(r.path_of("stress_divergence"), "expected \"direct\" or \"indirect\", got \"" + *mode + "\"");
-    }
-  }
-  if (auto mode = r.string("interaction_viscosity", Need::optional)) {
-    try {
-      s.interaction_viscosity = sph::mps::interaction_viscosity_from(*mode);
-    } catch (const std::exception&) {
-      r.diagnostics().error(r.path_of("interaction_viscosity"),
-                            "expected \"harmonic_mean\" or \"own\", got \"" + *mode + "\"");
-    }
-  }
+  read_choice(r, "regularisation", "\"consistent\" or \"as_printed\"", sph::mps::regularisation_from, s.regularisation);
+  read_choice(r, "effective_pressure", "\"smoothed\" or \"hydrostatic\"", sph::mps::effective_pressure_from,
+              s.effective_pressure);
+  read_choice(r, "stress_divergence", "\"direct\" or \"indirect\"", sph::mps::stress_divergence_from,
+              s.stress_divergence);
+  read_choice(r, "interaction_viscosity", "\"harmonic_mean\" or \"own\"", sph::mps::interaction_viscosity_from,
+              s.interaction_viscosity);
 }
 
 // One material: {name, type: "granular", consistency_Pa_sN, flow_index, regularisation_growth_s,
