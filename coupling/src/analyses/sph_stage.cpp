@@ -1,4 +1,5 @@
 #include "coupling/analyses/sph_stage.hpp"
+#include "coupling/analyses/tank_monitors.hpp"
 
 #include <exception>
 
@@ -42,13 +43,7 @@ std::string duration_text(double seconds) {
 // Extent of the soil before and after, for particle scenes (column collapse): the front is the farthest particle
 // still in contact with the deposit (a gap wider than 1.5 spacings separates stray particles).
 SphDeposit deposit_of(const ParticleSnapshot& p) {
-  auto front = [&](const std::vector<double>& xs) {
-    std::vector<double> sorted(xs);
-    std::sort(sorted.begin(), sorted.end(), std::greater<>());
-    for (std::size_t k = 0; k + 1 < sorted.size(); ++k)
-      if (sorted[k] - sorted[k + 1] <= 1.5 * p.spacing) return sorted[k];
-    return sorted.back();
-  };
+  auto front = [&](const std::vector<double>& xs) { return farthest_in_contact(xs, 1.5 * p.spacing); };
   const double x_min0 = *std::min_element(p.x0.begin(), p.x0.end());
   const double y_min0 = *std::min_element(p.y0.begin(), p.y0.end());
   SphDeposit d;

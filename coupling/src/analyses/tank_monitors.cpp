@@ -29,15 +29,19 @@ double front_of(const sph::ParticleSet& p, double dx) {
   return front;
 }
 
+double farthest_in_contact(std::vector<double> xs, double gap) {
+  std::sort(xs.begin(), xs.end(), std::greater<>());
+  for (std::size_t k = 0; k + 1 < xs.size(); ++k)
+    if (xs[k] - xs[k + 1] <= gap) return xs[k];
+  return xs.back();
+}
+
 double contact_front(const sph::ParticleSet& p, double dx) {
   std::vector<double> xs;
   for (std::size_t i = 0; i < p.size(); ++i)
     if (p.kind[i] == kMoving) xs.push_back(p.x[i]);
   if (xs.empty()) return -std::numeric_limits<double>::infinity();
-  std::sort(xs.begin(), xs.end(), std::greater<>());
-  for (std::size_t k = 0; k + 1 < xs.size(); ++k)
-    if (xs[k] - xs[k + 1] <= 1.5 * dx) return xs[k] + 0.5 * dx;
-  return xs.back() + 0.5 * dx;
+  return farthest_in_contact(std::move(xs), 1.5 * dx) + 0.5 * dx;
 }
 
 TankMonitorObserver::TankMonitorObserver(const TankMonitors& monitors, const Tank& tank, double dx)

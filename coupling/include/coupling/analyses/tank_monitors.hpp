@@ -3,6 +3,7 @@
 // from the moving particles (kind 0) at t = 0, at the first step at or after each multiple of the interval, and at
 // the end of the run (sample() by the caller).
 #include <string>
+#include <vector>
 
 #include "coupling/output/monitor_table.hpp"
 #include "coupling/scene/tank_scene.hpp"
@@ -35,6 +36,9 @@ class TankMonitorObserver : public sph::Observer {
 double surface_at(const sph::ParticleSet& p, double x, double dx, double floor);
 // The largest x of the moving material plus dx/2 [m] (-infinity when there is none).
 double front_of(const sph::ParticleSet& p, double dx);
+// The farthest of the x positions still in contact with the body: in the order of decreasing x, the first whose
+// next one lies within `gap` (stray particles thrown ahead do not count); the smallest when none does. xs not empty.
+double farthest_in_contact(std::vector<double> xs, double gap);
 // The front of the body of moving material: in the order of decreasing x, the first particle whose next one lies
 // within 1.5 dx (stray particles thrown ahead do not count), plus dx/2 [m] (-infinity when there is none).
 double contact_front(const sph::ParticleSet& p, double dx);
