@@ -4,6 +4,8 @@
 // of coarse versions of the column collapse and thesis slope 2, built the way the program builds them
 // (scene loader + build_sph_model), plus two runs with non-default options (other kernel, XSPH, artificial
 // stress, geostatic stress, free slip, damping) so every variant of the step is covered.
+// WC-MPS: the particle state after a fixed number of steps of a coarse dry collapse (default settings) and of a
+// granular column beside a water block with every comparison option switched to its other value.
 // LE: every method's critical factor of safety and circle of every slope scene in cases/*.json.
 //
 // The golden files are in tests/golden/. To regenerate them -- ONLY when a result is MEANT to change; say why in
@@ -29,6 +31,7 @@
 #include "coupling/scene/scene.hpp"
 #include "coupling/analyses/sph_model.hpp"
 #include "slope/search.hpp"
+#include "sph/mps/run.hpp"
 #include "sph/soil/run.hpp"
 #include "test_support.hpp"
 
@@ -106,8 +109,10 @@ void write_text(const fs::path& file, const std::string& text) {
 // SPH particle state
 
 constexpr std::size_t field_count = 10;
-const std::array<const char*, field_count> field_names = {"x",   "y",   "vx",  "vy",  "density",
-                                                          "sxx", "syy", "szz", "sxy", "plastic_strain"};
+using FieldNames = std::array<const char*, field_count>;
+const FieldNames field_names = {"x", "y", "vx", "vy", "density", "sxx", "syy", "szz", "sxy", "plastic_strain"};
+const FieldNames mps_field_names = {"x",        "y",         "vx",       "vy",    "density",
+                                    "pressure", "smoothed_pressure", "viscosity", "number_density", "free_surface"};
 
 struct ParticleRow {
   std::uint32_t id = 0;
@@ -138,10 +143,36 @@ SphState state_of(const sph::Model& model) {
   return state;
 }
 
-std::string state_text(const SphState& state, const std::string& what) {
+SphState state_of(const sph::mps::Model& model) {
+  SphState state;
+  state.step = model.state.step;
+  state.time = model.state.time;
+  const sph::ParticleSet& p = model.particles;
+  const auto column = [&](sph::FieldId f) { return p.field(f).data(); };
+  const sph::mps::Fields& f = model.fields;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    ParticleRow row;
+    row.id = p.id[i];
+    row.kind = static_cast<int>(p.kind[i]);
+    row.values = {p.x[i],
+                  p.y[i],
+                  p.vx[i],
+                  p.vy[i],
+                  p.rho[i],
+                  column(f.pressure)[i],
+                  column(f.smoothed_pressure)[i],
+                  column(f.viscosity)[i],
+                  column(f.number_density)[i],
+                  column(f.free_surface)[i]};
+    state.particles[row.id] = row;
+  }
+  return state;
+}
+
+std::string state_text(const SphState& state, const std::string& what, const FieldNames& names) {
   std::string text = header_line(what);
-  text += "# line 1: step time; then one row per particle: id kind(0 soil, 1 wall)";
-  for (const char* name : field_names) text += std::string(" ") + name;
+  text += "# line 1: step time; then one row per particle: id kind(0 soil or moving, 1 wall)";
+  for (const char* name : names) text += std::string(" ") + name;
   text += " (SI units, %.17g)\n";
   text += std::to_string(state.step) + " " + format_number(state.time) + "\n";
   for (const auto& [id, row] : state.particles) {
@@ -199,11 +230,11 @@ std::array<FieldDifference, field_count> field_differences(const SphState& golde
   return result;
 }
 
-std::string difference_report(const std::array<FieldDifference, field_count>& differences) {
+std::string difference_report(const std::array<FieldDifference, field_count>& differences, const FieldNames& names) {
   std::string text = "largest difference per field (relative to the field's largest golden magnitude):\n";
   for (std::size_t f = 0; f < field_count; ++f) {
     const FieldDifference& d = differences[f];
-    text += std::string("  ") + field_names[f] + ": " + format_number(d.relative);
+    text += std::string("  ") + names[f] + ": " + format_number(d.relative);
     if (d.bitwise_mismatches > 0)
       text += " at particle id " + std::to_string(d.id) + " (golden " + format_number(d.golden) + ", now " +
               format_number(d.actual) + "); " + std::to_string(d.bitwise_mismatches) + " particles differ";
@@ -236,21 +267,12 @@ struct SphGoldenCase {
   std::uint64_t steps = 0;
 };
 
-void check_sph_golden(const SphGoldenCase& c) {
-  Catch::StringMaker<double>::precision = 17;  // failed checks show differences down to the last bit
-  sph::Model model = coarse_model(c.case_file, c.sph_patch);
-  sph::RunOptions options;  // no output dir: no files
-  options.max_steps = c.steps;
-  const sph::RunSummary summary = sph::run(model, options);
-  REQUIRE(summary.stopped_because == "step_limit");
-  const SphState actual = state_of(model);
-  const fs::path file = golden_dir / c.golden_file;
+// Writes the state (update mode) or compares it with the golden file, field by field, within `tolerance`.
+void check_state_golden(const std::string& golden_file, const SphState& actual, const std::string& what,
+                        const FieldNames& names, double tolerance) {
+  const fs::path file = golden_dir / golden_file;
   if (update_mode()) {
-    const std::string what = "SPH state of cases/" + c.case_file + " with analyses.sph patched by " +
-                             c.sph_patch.dump() + ": " + std::to_string(model.particles.count(sph::ParticleKind::soil)) +
-                             " soil + " + std::to_string(model.particles.count(sph::ParticleKind::wall)) +
-                             " wall particles after " + std::to_string(c.steps) + " steps";
-    write_text(file, state_text(actual, what));
+    write_text(file, state_text(actual, what, names));
     WARN("wrote " << file.string());
     return;
   }
@@ -260,13 +282,57 @@ void check_sph_golden(const SphGoldenCase& c) {
   CHECK(particles_missing(golden, actual) == 0);
   const double time_difference = std::abs(actual.time - golden.time) / std::abs(golden.time);
   INFO("simulated time: golden " << format_number(golden.time) << ", now " << format_number(actual.time));
-  CHECK(time_difference <= sph_tolerance);
+  CHECK(time_difference <= tolerance);
   const auto differences = field_differences(golden, actual);
-  INFO(difference_report(differences));
+  INFO(difference_report(differences, names));
   for (std::size_t f = 0; f < field_count; ++f) {
-    INFO("field " << field_names[f]);
-    CHECK(differences[f].relative <= sph_tolerance);
+    INFO("field " << names[f]);
+    CHECK(differences[f].relative <= tolerance);
   }
+}
+
+void check_sph_golden(const SphGoldenCase& c) {
+  Catch::StringMaker<double>::precision = 17;  // failed checks show differences down to the last bit
+  sph::Model model = coarse_model(c.case_file, c.sph_patch);
+  sph::RunOptions options;  // no output dir: no files
+  options.max_steps = c.steps;
+  const sph::RunSummary summary = sph::run(model, options);
+  REQUIRE(summary.stopped_because == "step_limit");
+  const std::string what = "SPH state of cases/" + c.case_file + " with analyses.sph patched by " +
+                           c.sph_patch.dump() + ": " + std::to_string(model.particles.count(sph::ParticleKind::soil)) +
+                           " soil + " + std::to_string(model.particles.count(sph::ParticleKind::wall)) +
+                           " wall particles after " + std::to_string(c.steps) + " steps";
+  check_state_golden(c.golden_file, state_of(model), what, field_names, sph_tolerance);
+}
+
+// The WC-MPS: a granular column 0.1 m x 0.06 m (the seed's dry collapse) at the left wall of a 0.3 m tank at
+// dx = 2.5 mm, with an optional water block 0.15-0.25 m x 0.03 m beside it (material 1), run for `steps` steps.
+struct MpsGoldenCase {
+  std::string golden_file;
+  std::string what;  // the settings changed from the defaults, for the file's header
+  sph::mps::Settings settings;
+  bool water_block = false;
+  std::uint64_t steps = 0;
+};
+
+void check_mps_golden(const MpsGoldenCase& c) {
+  Catch::StringMaker<double>::precision = 17;
+  sph::mps::Settings st = c.settings;
+  st.particle_spacing = 0.0025;
+  st.end_time = 10.0;
+  sph::mps::Model model(st, {sph::mps::Material::granular_material(), sph::mps::Material::water()});
+  sph::mps::add_block(model, 0.0, 0.0, 0.1, 0.06, 0);
+  if (c.water_block) sph::mps::add_block(model, 0.15, 0.0, 0.25, 0.03, 1);
+  sph::mps::add_box(model, 0.0, 0.3, 0.0, 0.12, 0);
+  sph::RunOptions options;
+  options.max_steps = c.steps;
+  const sph::RunSummary summary = sph::mps::run(model, options);
+  REQUIRE(summary.stopped_because == "step_limit");
+  const std::string what = "WC-MPS state of the dry collapse at dx = 2.5 mm (" + c.what + "): " +
+                           std::to_string(model.particles.count(sph::ParticleKind::soil)) + " moving + " +
+                           std::to_string(model.particles.count(sph::ParticleKind::wall)) +
+                           " wall and dummy particles after " + std::to_string(c.steps) + " steps";
+  check_state_golden(c.golden_file, state_of(model), what, mps_field_names, sph_tolerance);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -387,6 +453,25 @@ TEST_CASE("golden: SPH thesis slope 2 coarse (geostatic K0 + Wendland + XSPH + d
                                 {"artificial_stress", {{"mode", "off"}}},
                                 {"damping_per_s", 0.5}};
   check_sph_golden({"sph_thesis_slope2_geostatic_wendland_xsph.txt", "thesis_slope2.json", patch, 400});
+}
+
+TEST_CASE("golden: MPS dry collapse coarse (default settings)", "[golden][sph][mps]") {
+  check_mps_golden({"mps_dry_collapse.txt", "default settings", sph::mps::Settings{}, false, 400});
+}
+
+// Every comparison option at its other value, a water block beside the column, the plain pressure difference.
+TEST_CASE("golden: MPS granular column and water block (hydrostatic + indirect + own viscosity + as printed)",
+          "[golden][sph][mps]") {
+  sph::mps::Settings st;
+  st.effective_pressure = sph::mps::EffectivePressure::hydrostatic;
+  st.stress_divergence = sph::mps::StressDivergence::indirect;
+  st.interaction_viscosity = sph::mps::InteractionViscosity::own;
+  st.regularisation = sph::mps::Regularisation::as_printed;
+  st.pressure_gradient_minimum = false;
+  const std::string what =
+      "water block beside the column, effective_pressure hydrostatic, stress_divergence indirect, "
+      "interaction_viscosity own, regularisation as_printed, pressure_gradient_minimum false";
+  check_mps_golden({"mps_column_water_options.txt", what, st, true, 400});
 }
 
 TEST_CASE("golden: LE critical factors of safety of every slope scene in cases/", "[golden][lem]") {
