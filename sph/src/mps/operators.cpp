@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "sph/engine/neighbours.hpp"
 
 namespace sph::mps {
 
@@ -26,11 +25,11 @@ LatticeConstants lattice_constants(double dx, double re) {
 }
 
 // The neighbour iteration of the engine, with the MPS's notation: x_ij = x_j - x_i (the engine gives x_i - x_j),
-// the distance r and the weight w_ij.
+// the squared distance r2 and the weight w_ij.
 template <class F>
 static void for_each_mps_neighbour(const Neighbourhood& nb, std::size_t i, F&& f) {
-  for_each_neighbour(nb.sorted, nb.set, i, nb.re, [&](std::size_t j, double dx, double dy, double r2) {
-    f(j, -dx, -dy, r2, terms::weight(std::sqrt(r2), nb.re));
+  for_each_weighted_neighbour(nb, i, [&](std::size_t j, double dx, double dy, double r2, double w) {
+    f(j, -dx, -dy, r2, w);
   });
 }
 

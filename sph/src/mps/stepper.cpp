@@ -7,7 +7,6 @@
 
 #include "sph/engine/cell_sort.hpp"
 #include "sph/engine/run_loop.hpp"
-#include "sph/engine/neighbours.hpp"
 #include "sph/mps/effective_pressure.hpp"
 #include "sph/mps/terms.hpp"
 
@@ -20,6 +19,7 @@ constexpr std::uint8_t kMoving = static_cast<std::uint8_t>(ParticleKind::soil);
 
 struct Step::Impl {
   CellSortedSet sorted;
+  NeighbourList list;  // the pairs within r_e after the last sort
   FieldId x_start = 0, y_start = 0;  // r^m during a step [m] (workspace, reordered with the set)
   std::vector<double> fx, fy;  // the non-pressure forces of the predictor [N/m^3]
   std::vector<double> weight_above;  // the hydrostatic p' of every particle [Pa] (effective_pressure hydrostatic)
@@ -39,10 +39,17 @@ double Step::gravity_x() const { return model_.settings.gravity_factor(model_.st
 double Step::gravity_y() const { return model_.settings.gravity_factor(model_.state.time) * model_.settings.gravity_y; }
 
 Neighbourhood Step::neighbourhood() const {
-  return {impl_->sorted, model_.particles, model_.settings.effective_radius()};
+  return {impl_->sorted, model_.particles, model_.settings.effective_radius(), &impl_->list};
 }
 
-void Step::sort() { impl_->sorted.sort(model_.particles, model_.settings.effective_radius()); }
+// Sorts by cells of side r_e and lists every pair within r_e with its weight w_ij: the passes until the next sort
+// read the list at the positions of the sort (the wall collision reads it after the corrector's small move: a pair
+// closer than d_c < r_e then was within r_e at the sort).
+void Step::sort() {
+  const double re = model_.settings.effective_radius();
+  impl_->sorted.sort(model_.particles, re);
+  impl_->list.build(impl_->sorted, model_.particles, re, [re](double r2) { return terms::weight(std::sqrt(r2), re); });
+}
 
 void Step::initialise() {
   ParticleSet& p = model_.particles;
@@ -118,12 +125,12 @@ Vector2 Step::pressure_gradient(std::size_t i, const double* p) const {
   Vector2 g;
   double base = p[i];
   if (model_.settings.pressure_gradient_minimum)
-    for_each_neighbour(nb.sorted, nb.set, i, nb.re, [&](std::size_t j, double, double, double) {
+    for_each_weighted_neighbour(nb, i, [&](std::size_t j, double, double, double, double) {
       if (dummy[j] == 0.0) base = std::min(base, p[j]);
     });
-  for_each_neighbour(nb.sorted, nb.set, i, nb.re, [&](std::size_t j, double dx, double dy, double r2) {
+  for_each_weighted_neighbour(nb, i, [&](std::size_t j, double dx, double dy, double r2, double w) {
     if (dummy[j] != 0.0) return;
-    const double f = terms::gradient_factor(p[j] - base, terms::weight(std::sqrt(r2), nb.re), r2);
+    const double f = terms::gradient_factor(p[j] - base, w, r2);
     g.x -= f * dx;  // x_ij = x_j - x_i = -dx
     g.y -= f * dy;
   });
@@ -243,7 +250,7 @@ void Step::collide_with_walls(double dt) {
     const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] != kMoving) continue;
     double vx = p.vx[i], vy = p.vy[i];
-    for_each_neighbour(nb.sorted, nb.set, i, dc, [&](std::size_t j, double dx, double dy, double r2) {
+    for_each_within(nb, i, dc, [&](std::size_t j, double dx, double dy, double r2) {
       if (p.kind[j] == kMoving || r2 == 0.0) return;  // for_each_neighbour passes r2 < d_c^2 only
       const double r = std::sqrt(r2);
       const double ex = dx / r, ey = dy / r;  // from j to i (dx = x_i - x_j)

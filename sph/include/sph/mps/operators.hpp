@@ -4,9 +4,12 @@
 // Every neighbour within r_e of particle i takes part (j != i), whatever its kind: walls and dummy particles
 // included (they exist to complete the sums near a wall, seed 2.7). The pair equations are in sph/mps/terms.hpp.
 // SI units, 2-D.
+#include <cmath>
 #include <cstddef>
 
 #include "sph/engine/cell_sort.hpp"
+#include "sph/engine/neighbour_list.hpp"
+#include "sph/engine/neighbours.hpp"
 #include "sph/engine/particle_set.hpp"
 #include "sph/mps/settings.hpp"
 #include "sph/mps/terms.hpp"
@@ -25,12 +28,39 @@ struct LatticeConstants {
 // Throws std::invalid_argument unless dx > 0 and re > dx (at least the first ring must be in reach).
 LatticeConstants lattice_constants(double dx, double re);
 
-// Where the operators look: a set sorted by its CellSortedSet with cells of side >= re, and the radius re [m].
+// Where the operators look: a set sorted by its CellSortedSet with cells of side >= re, and the radius re [m];
+// with `list`, the neighbour list built after that sort with radius re and the weight w_ij of each pair as its
+// value, valid while the positions are those of the sort (the stepper's passes read it instead of the cells: the
+// same neighbours in the same order and the same weights, so the same sums bit for bit).
 struct Neighbourhood {
   const CellSortedSet& sorted;
   const ParticleSet& set;
   double re;
+  const NeighbourList* list = nullptr;
 };
+
+// Every particle j != i within re of particle i with its weight: f(j, dx, dy, r2, w_ij), (dx, dy) = x_i - x_j as
+// for_each_neighbour gives it.
+template <class F>
+void for_each_weighted_neighbour(const Neighbourhood& nb, std::size_t i, F&& f) {
+  if (nb.list) {
+    for_each_listed_pair(*nb.list, nb.set, i, f);
+    return;
+  }
+  for_each_neighbour(nb.sorted, nb.set, i, nb.re, [&](std::size_t j, double dx, double dy, double r2) {
+    f(j, dx, dy, r2, terms::weight(std::sqrt(r2), nb.re));
+  });
+}
+
+// Every particle j != i within `radius` (<= re) of particle i at the current positions, through the list when
+// there is one (a pair must then have been within re at the sort): f(j, dx, dy, r2) as for_each_neighbour.
+template <class F>
+void for_each_within(const Neighbourhood& nb, std::size_t i, double radius, F&& f) {
+  if (nb.list)
+    for_each_listed_neighbour(*nb.list, nb.set, i, radius, f);
+  else
+    for_each_neighbour(nb.sorted, nb.set, i, radius, f);
+}
 
 struct Vector2 {
   double x = 0, y = 0;

@@ -1,0 +1,111 @@
+#pragma once
+// The neighbours of every particle of a sorted set within a radius, gathered once after a sort and read by the
+// passes that follow, with one value per pair computed at the gathering (e.g. the kernel weight of the pair's
+// distance). Each particle's list holds its neighbours j != i in the order for_each_neighbour visits them, so a sum
+// over the list equals the sum over the cells bit for bit. A pass over a list reads the ~50 neighbours of a
+// particle and their stored values instead of testing the ~144 candidates of its 3 x 3 cells.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "sph/engine/cell_sort.hpp"
+#include "sph/engine/neighbours.hpp"
+#include "sph/engine/particle_set.hpp"
+
+namespace sph {
+
+class NeighbourList {
+ public:
+  // Every pair of `set` closer than `radius` (the set sorted by `sorted`, cells of side >= radius), with the value
+  // pair_value(r2) of each pair (r2 its squared distance [m^2]). One OpenMP pass over the candidates; a second one
+  // only when a particle has more neighbours than the room per particle (which then grows and stays).
+  template <class PairValue>
+  void build(const CellSortedSet& sorted, const ParticleSet& set, double radius, PairValue&& pair_value) {
+    radius_ = radius;
+    if (stride_ == 0) stride_ = initial_stride;
+    count_.resize(set.size());
+    for (;;) {
+      j_.resize(set.size() * stride_);
+      value_.resize(set.size() * stride_);
+      const std::size_t most = gather(sorted, set, pair_value);
+      if (most <= stride_) return;
+      stride_ = most + stride_margin;
+    }
+  }
+
+  double radius() const { return radius_; }
+  std::size_t particles() const { return count_.size(); }
+  std::size_t count(std::size_t i) const { return count_[i]; }
+  const std::uint32_t* neighbours(std::size_t i) const { return j_.data() + i * stride_; }
+  const double* values(std::size_t i) const { return value_.data() + i * stride_; }
+  std::size_t memory_bytes() const {
+    return (j_.capacity() + count_.capacity()) * sizeof(std::uint32_t) + value_.capacity() * sizeof(double);
+  }
+
+ private:
+  static constexpr std::size_t initial_stride = 64;  // radius 4 dx on a square lattice: 48 neighbours
+  static constexpr std::size_t stride_margin = 16;
+
+  // Fills the lists that fit; returns the largest neighbour count.
+  template <class PairValue>
+  std::size_t gather(const CellSortedSet& sorted, const ParticleSet& set, PairValue& pair_value) {
+    const auto n = static_cast<std::int64_t>(set.size());
+    const std::size_t room = stride_;
+    std::size_t most = 0;
+#pragma omp parallel for schedule(static) reduction(max : most)
+    for (std::int64_t k = 0; k < n; ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      std::uint32_t* out = j_.data() + i * room;
+      double* value = value_.data() + i * room;
+      std::size_t c = 0;
+      for_each_neighbour(sorted, set, i, radius_, [&](std::size_t j, double, double, double r2) {
+        if (c < room) {
+          out[c] = static_cast<std::uint32_t>(j);
+          value[c] = pair_value(r2);
+        }
+        ++c;
+      });
+      count_[i] = static_cast<std::uint32_t>(std::min(c, room));
+      most = std::max(most, c);
+    }
+    return most;
+  }
+
+  double radius_ = 0;
+  std::size_t stride_ = 0;  // room per particle
+  std::vector<std::uint32_t> j_;  // particle i's neighbours in [i * stride_, i * stride_ + count_[i])
+  std::vector<double> value_;  // the pair values, in the same slots
+  std::vector<std::uint32_t> count_;
+};
+
+// Every listed neighbour j of particle i while the positions are those of the build: f(j, dx, dy, r2, value) with
+// (dx, dy) = (x_i - x_j, y_i - y_j), r2 = dx^2 + dy^2 recomputed from the positions, and the pair's stored value.
+template <class F>
+void for_each_listed_pair(const NeighbourList& list, const ParticleSet& set, std::size_t i, F&& f) {
+  const double xi = set.x[i], yi = set.y[i];
+  const double* x = set.x.data();
+  const double* y = set.y.data();
+  const std::uint32_t* j = list.neighbours(i);
+  const double* value = list.values(i);
+  const std::size_t n = list.count(i);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double dx = xi - x[j[k]], dy = yi - y[j[k]];
+    f(std::size_t{j[k]}, dx, dy, dx * dx + dy * dy, value[k]);
+  }
+}
+
+// Every listed neighbour j of particle i closer than `radius` (<= the list's radius) at the current positions,
+// f(j, dx, dy, r2) as for_each_neighbour. A pair that came closer than `radius` after the build but was not within
+// the list's radius then is not visited: the caller keeps the positions' change since the build below the
+// difference of the two radii.
+template <class F>
+void for_each_listed_neighbour(const NeighbourList& list, const ParticleSet& set, std::size_t i, double radius,
+                               F&& f) {
+  const double r2_max = radius * radius;
+  for_each_listed_pair(list, set, i, [&](std::size_t j, double dx, double dy, double r2, double) {
+    if (r2 < r2_max) f(j, dx, dy, r2);
+  });
+}
+
+}  // namespace sph
