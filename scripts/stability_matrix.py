@@ -270,6 +270,65 @@ def check_fails(report, threshold):
     return checks
 
 
+def check_mps_finished(report):
+    """Finished to its end time, the moving mass conserved (to 1e-9 relative)."""
+    mps = (report or {}).get("mps") or {}
+    mass = mps.get("mass_kg_per_m") or {}
+    start, end = mass.get("start"), mass.get("end")
+    return [(mps.get("status") == "ok" and mps.get("stopped_because") == "end_time",
+             f"mps status {mps.get('status')}, stopped because {mps.get('stopped_because')}"),
+            (start is not None and end is not None and abs(end - start) <= 1e-9 * start,
+             f"moving mass {fmt(start)} -> {fmt(end)} kg/m")]
+
+
+def mps_deposit(report):
+    deposit = ((report or {}).get("mps") or {}).get("deposit") or {}
+    return (deposit.get("front_x_m") or {}).get("end"), (deposit.get("wall_height_m") or {}).get("end"), \
+        deposit.get("max_speed_end_m_s")
+
+
+def mps_checks(stem, scene, result, report):
+    """The WC-MPS rows (issue 12): the viscosity cap at its ends, c0 too small, the time step at and beyond eq.
+    30's limit, a column of a few particles."""
+    if stem == "mps_viscosity_cap_refused":
+        checks = check_refused(result, ["analyses.mps.max_steps", "time steps", "viscosity_cap_Pa_s"])
+        m = re.search(r"needs about (\d+) time steps", " ".join(error_lines(result["output"])))
+        result["planned_steps"] = int(m.group(1)) if m else None
+        checks.append((result["planned_steps"] is not None and result["planned_steps"] > 5_000_000,
+                       f"planned steps stated: {result['planned_steps']}"))
+        return checks
+    if stem == "mps_cfl_beyond_limit":
+        return check_refused(result, ["analyses.mps.cfl", "(0, 1]"])
+    checks = [(result["status"] == 0, f"exit status {result['status']}")] + check_mps_finished(report)
+    warnings = ((report or {}).get("mps") or {}).get("warnings") or []
+    front, height, speed = mps_deposit(report)
+    if stem == "mps_sound_speed_too_small":
+        checks.append((any("analyses.mps.sound_speed_m_s" in w and "at least" in w for w in warnings),
+                       "report warns: " + (warnings[0] if warnings else "no warning")))
+        checks.append(("mps: warning:" in result["output"], "the warning is printed on stderr"))
+    elif stem == "mps_few_particles":
+        checks.append((any("analyses.mps.blocks[0]" in w and "particle_spacing_m" in w for w in warnings),
+                       "report warns: " + (warnings[0] if warnings else "no warning")))
+    elif stem in ("mps_viscosity_cap_high", "mps_cfl_at_limit"):
+        checks.append((speed is not None and speed < 0.05, f"deposit at rest: largest speed at the end {fmt(speed)} m/s"))
+        if stem == "mps_cfl_at_limit":
+            checks += mps_default_cfl_checks(stem, scene, front, height)
+    return checks
+
+
+def mps_default_cfl_checks(stem, scene, front, height):
+    """The same scene at the default C_r, run here: the deposit within 5 %."""
+    default = copy.deepcopy(scene)
+    del default["analyses"]["mps"]["cfl"]
+    report = reference_run(stem, default, 300, "run")
+    ref_front, ref_height, _ = mps_deposit(report)
+    checks = []
+    for what, got, ref in (("front", front, ref_front), ("height at the wall", height, ref_height)):
+        ok = got is not None and ref is not None and abs(got - ref) <= 0.05 * ref
+        checks.append((ok, f"{what} {fmt(got)} m vs {fmt(ref)} m at C_r = 0.2 (within 5 %)"))
+    return checks
+
+
 def case_checks(stem, scene, result, report, energy, results):
     """The physical checks of one case (see each scene's notes.sensible_outcome)."""
     if stem == "sph_stiff_1GPa_refused":
@@ -308,6 +367,9 @@ def case_checks(stem, scene, result, report, energy, results):
                 (ratio is not None and ratio > 1.05, f"energy_balance.ratio = {fmt(ratio)} (> 1.05: energy created)"),
                 (any("created energy" in w for w in sph.get("warnings", [])), "the report warns that energy was created"),
                 ("sph: warning:" in result["output"], "the warning is printed on stderr")]
+
+    if stem.startswith("mps_"):
+        return mps_checks(stem, scene, result, report)
 
     if stem.startswith("sph_collapse_a"):
         # true-2-D laws of Nguyen, Bui & Fukagawa (2015) for the aluminium-rod column; 10 % as in issue 14
@@ -456,21 +518,27 @@ def case_checks(stem, scene, result, report, energy, results):
     return checks
 
 
-def reference_run(stem, scene, timeout):
+def reference_run(stem, scene, timeout, mode="lem"):
     folder = os.path.join(ROOT, "runs", "stability", "_reference", stem)
     shutil.rmtree(folder, ignore_errors=True)
     os.makedirs(folder)
     scene_file = os.path.join(folder, "scene.json")
     with open(scene_file, "w") as f:
         json.dump(scene, f, indent=1)
-    run_program([program_path(), "lem", scene_file, "-o", os.path.join(folder, "out")], timeout,
+    run_program([program_path(), mode, scene_file, "-o", os.path.join(folder, "out")], timeout,
                 os.path.join(folder, "log.txt"))
     report, _ = load_report(os.path.join(folder, "out"))
     return report
 
 
 def pair_checks(results):
-    """Ramped vs sudden gravity on the same slope."""
+    """Ramped vs sudden gravity on the same slope; the WC-MPS viscosity cap at its two ends."""
+    low, high = results.get("mps_viscosity_cap_low"), results.get("mps_viscosity_cap_high")
+    if low and high:
+        (lf, lh, _), (hf, hh, _) = mps_deposit(low["report"]), mps_deposit(high["report"])
+        ok = None not in (lf, lh, hf, hh)
+        low["checks"].append((ok and lf > hf, f"front {fmt(lf)} m beyond the high cap's {fmt(hf)} m"))
+        low["checks"].append((ok and lh < hh, f"height at the wall {fmt(lh)} m below the high cap's {fmt(hh)} m"))
     sudden, ramped = results.get("sph_gravity_sudden"), results.get("sph_gravity_ramped")
     if not sudden or not ramped or not sudden.get("energy") or not ramped.get("energy"):
         return
@@ -499,6 +567,9 @@ def outcome_text(result):
     if s == 0:
         if result["report"] and "sph" in result["report"]:
             return f"finished ({result['report']['sph'].get('stopped_because')})"
+        if result["report"] and "mps" in result["report"]:
+            warnings = result["report"]["mps"].get("warnings") or []
+            return "finished" + (" with warning: " + " / ".join(warnings) if warnings else "")
         return "finished"
     if s == 2:
         lines = error_lines(result["output"])
@@ -530,6 +601,9 @@ def result_text(result):
         if fs:
             text += "; LEM " + ", ".join(f"{k} {fs_text(v)}" for k, v in fs.items())
         return text
+    if "mps" in report:
+        front, height, speed = mps_deposit(report)
+        return f"front {fmt(front)} m; height at the wall {fmt(height)} m; speed at the end {fmt(speed)} m/s"
     fs = lem_fs(report)
     return "FS " + ", ".join(f"{k} {fs_text(v)}" for k, v in fs.items())
 
@@ -538,6 +612,8 @@ def steps_text(result):
     report = result["report"]
     if report and "sph" in report:
         return f"{report['sph'].get('planned_steps')} / {report['sph'].get('steps')}"
+    if report and "mps" in report:
+        return f"- / {report['mps'].get('steps')}"
     if result.get("planned_steps"):
         return f"{result['planned_steps']} / 0"
     return "-"
@@ -550,44 +626,82 @@ def verdict(result):
     return ("sensible" if not failed else "**NOT sensible**: " + "; ".join(failed)), not failed
 
 
-def write_doc(results, command, doc_path):
-    lines = [BEGIN, "", f"Command: `{command}` (every case with `OMP_NUM_THREADS=1`).", ""]
-    lines += ["| case | probes | outcome | steps planned / done | energy | result | wall time | verdict |",
-              "|---|---|---|---|---|---|---|---|"]
-    for stem, r in results.items():
-        v, _ = verdict(r)
-        lines.append("| " + " | ".join(md_escape(x) for x in [
-            f"`{stem}`", r["probes"], outcome_text(r), steps_text(r), energy_text(r["energy"]), result_text(r),
-            f"{r['wall_s']:.1f} s ({r['max_rss_MiB']:.0f} MiB)", v]) + " |")
-    lines.append("")
-    lines.append("Checks per case (✓ passed, ✗ failed):")
-    lines.append("")
-    for stem, r in results.items():
-        items = [("✓ " if ok else "✗ ") + text for ok, text in r["checks"]]
-        if r["nulls"]:
-            items.append("✗ null/NaN at " + ", ".join(r["nulls"]))
-        else:
-            items.append("✓ no null or NaN number in the report" if r["report"] else "✓ no report (nothing written)")
-        lines.append(f"- `{stem}`: " + "; ".join(items))
-        if r.get("method_checks"):
-            lines.append("")
-            lines.append(f"  | method | FS | checks ({md_escape(r.get('reference', ''))}) |")
-            lines.append("  |---|---|---|")
-            fs = lem_fs(r["report"])
-            for method, items in r["method_checks"].items():
-                ok = all(o for o, _ in items)
-                lines.append(f"  | {method} | {fs_text(fs.get(method))} | " + ("sensible" if ok else "**NOT sensible**")
-                             + ": " + md_escape("; ".join(t for _, t in items)) + " |")
-            lines.append("")
-    lines += ["", END]
-    block = "\n".join(lines)
+def table_row(stem, r):
+    v, _ = verdict(r)
+    return "| " + " | ".join(md_escape(x) for x in [
+        f"`{stem}`", r["probes"], outcome_text(r), steps_text(r), energy_text(r["energy"]), result_text(r),
+        f"{r['wall_s']:.1f} s ({r['max_rss_MiB']:.0f} MiB)", v]) + " |"
+
+
+def check_lines(stem, r):
+    items = [("✓ " if ok else "✗ ") + text for ok, text in r["checks"]]
+    if r["nulls"]:
+        items.append("✗ null/NaN at " + ", ".join(r["nulls"]))
+    else:
+        items.append("✓ no null or NaN number in the report" if r["report"] else "✓ no report (nothing written)")
+    lines = [f"- `{stem}`: " + "; ".join(items)]
+    if r.get("method_checks"):
+        lines += ["", f"  | method | FS | checks ({md_escape(r.get('reference', ''))}) |", "  |---|---|---|"]
+        fs = lem_fs(r["report"])
+        for method, items in r["method_checks"].items():
+            ok = all(o for o, _ in items)
+            lines.append(f"  | {method} | {fs_text(fs.get(method))} | " + ("sensible" if ok else "**NOT sensible**")
+                         + ": " + md_escape("; ".join(t for _, t in items)) + " |")
+        lines.append("")
+    return lines
+
+
+def parse_block(block):
+    """The rows and the check lines of a generated block, by case, in their order."""
+    rows, checks, current = {}, {}, None
+    for line in block.splitlines():
+        m = re.match(r"^\| `([^`]+)` \|", line)
+        if m:
+            rows[m.group(1)] = line
+            continue
+        m = re.match(r"^- `([^`]+)`: ", line)
+        if m:
+            current = m.group(1)
+            checks[current] = [line]
+        elif current and line != END:
+            checks[current].append(line)
+    for stem in checks:
+        while checks[stem] and checks[stem][-1] == "":
+            checks[stem].pop()
+        if any(l.startswith("  |") for l in checks[stem]):
+            checks[stem].append("")
+    return rows, checks
+
+
+def write_doc(results, command, doc_path, merge=False):
+    """The table between the markers of doc_path: rewritten from `results`, or (merge) with the rows of these
+    cases replaced or added and every other case's row kept as it was."""
+    text = ""
     if os.path.exists(doc_path):
         with open(doc_path) as f:
             text = f.read()
-        if BEGIN in text and END in text:
-            text = text[:text.index(BEGIN)] + block + text[text.index(END) + len(END):]
-        else:
-            text = text.rstrip("\n") + "\n\n" + block + "\n"
+    has_block = BEGIN in text and END in text
+    rows, checks = parse_block(text[text.index(BEGIN):text.index(END)]) if merge and has_block else ({}, {})
+    for stem, r in results.items():
+        rows[stem] = table_row(stem, r)
+        checks[stem] = check_lines(stem, r)
+    stems = sorted(rows)
+    lines = [BEGIN, "", f"Command: `{command}` (every case with `OMP_NUM_THREADS=1`)."]
+    if merge and results:
+        lines.append("Rows of " + ", ".join(f"`{k}`" for k in results) + " updated by "
+                     f"`{command} {' '.join(os.path.relpath(r['scene_file'], ROOT) for r in results.values())}`.")
+    lines += ["", "| case | probes | outcome | steps planned / done | energy | result | wall time | verdict |",
+              "|---|---|---|---|---|---|---|---|"]
+    lines += [rows[k] for k in stems]
+    lines += ["", "Checks per case (✓ passed, ✗ failed):", ""]
+    for k in stems:
+        lines += checks.get(k, [])
+    lines += ["", END]
+    block = "\n".join(lines)
+    if has_block:
+        text = text[:text.index(BEGIN)] + block + text[text.index(END) + len(END):]
+    elif text:
+        text = text.rstrip("\n") + "\n\n" + block + "\n"
     else:
         text = "# Stability matrix\n\n" + block + "\n"
     with open(doc_path, "w") as f:
@@ -618,17 +732,19 @@ def main():
             scene = json.load(f)
         folder = os.path.join(out_root, stem)
         shutil.rmtree(folder, ignore_errors=True)
-        mode = "run" if "sph" in scene["analyses"] else "lem"
+        mode = "run" if "sph" in scene["analyses"] or "mps" in scene["analyses"] else "lem"
         print(f"stability-matrix: {stem} ({mode}) ...", file=sys.stderr, flush=True)
         # paths relative to the repository, so that messages and reports name them as a user would
         result = run_program([program_path(), mode, os.path.relpath(path, ROOT), "-o", os.path.relpath(folder, ROOT)],
                              args.timeout, folder + ".log")
-        result.update({"folder": folder, "timeout": args.timeout,
+        result.update({"folder": folder, "timeout": args.timeout, "scene_file": path,
                        "probes": scene.get("notes", {}).get("probes", scene.get("source", ""))})
         report, constants = load_report(folder)
         result["report"] = report
         result["nulls"] = (unexplained_nulls(report) if report else []) + [f"non-JSON constant {c}" for c in constants]
         result["energy"] = read_energy(folder)
+        if result["energy"] and "mps" in scene["analyses"]:
+            result["energy"]["balance"] = None  # the WC-MPS records no dissipated work: no balance to state
         result["checks"] = case_checks(stem, scene, result, report, result["energy"], results)
         results[stem] = result
     pair_checks(results)
@@ -638,7 +754,7 @@ def main():
         all_ok = all_ok and ok
         print(f"{stem:32s} {r['wall_s']:7.1f} s  {outcome_text(r)[:60]:60s}  {v[:120]}")
     if not args.no_doc:
-        write_doc(results, args.command, args.doc)
+        write_doc(results, args.command, args.doc, merge=bool(args.cases))
         print(f"stability-matrix: wrote {os.path.relpath(args.doc, ROOT)}", file=sys.stderr)
     return 0 if all_ok else 1
 

@@ -154,6 +154,8 @@ TEST_CASE("stability: refused cases stop before running, say why, and write noth
       {"sph_too_few_particles", {"analyses.sph.particle_spacing_m", "fewer than 4 particles", "at most 2.5 m"}},
       {"sph_walls_too_thin", {"analyses.sph.walls.layers", "at least 3 layers", "kernel support"}},
       {"sph_memory_exceeded", {"analyses.sph.particle_spacing_m", "GiB", "max_memory_GiB = 16"}},
+      {"mps_viscosity_cap_refused", {"analyses.mps.max_steps", "time steps", "viscosity_cap_Pa_s", "max_steps = 5000000"}},
+      {"mps_cfl_beyond_limit", {"analyses.mps.cfl", "(0, 1]", "1.5"}},
   };
   TemporaryFolder folder("stability-refusals");
   for (const auto& r : refusals) {
@@ -186,6 +188,17 @@ TEST_CASE("stability: the stiff-soil refusal states the planned step count", "[s
   CHECK(planned > 5e6);
 }
 
+TEST_CASE("stability: the WC-MPS refusal of a huge viscosity cap states the planned step count", "[stability][refusal][mps][cli]") {
+  // eq. 30 at rest: dt = C_r rho0 dx^2 / (2 d mu_cap) = 0.2 x 1500 x 0.0025^2 / (4 x 1e5) = 4.6875e-9 s (below the
+  // acoustic C_r dx / c0 = 2.5e-5 s); 0.6 s -> 1.28e8 steps.
+  TemporaryFolder folder("stability-mps-cap");
+  const Run run = run_case("run", case_file("mps_viscosity_cap_refused"), folder.path / "out");
+  const auto at = run.output.find("needs about ");
+  REQUIRE(at != std::string::npos);
+  const double planned = std::stod(run.output.substr(at + 12));
+  CHECK(planned == Approx(0.6 / (0.2 * 1500 * 0.0025 * 0.0025 / (4 * 1e5))).epsilon(1e-6));
+}
+
 TEST_CASE("stability: a spacing that would exceed the memory limit is refused before allocating", "[stability][refusal][cli]") {
   // 3.8e7 particles would need about 37 GiB; the refusal must come from the estimate, not from an allocation:
   // the program's peak memory stays that of a run that does nothing (`--version`), far below one particle array
@@ -199,6 +212,84 @@ TEST_CASE("stability: a spacing that would exceed the memory limit is refused be
   INFO("peak memory " << run.max_rss_MiB << " MiB, doing nothing " << baseline.max_rss_MiB << " MiB");
   CHECK(run.status == 2);
   CHECK(run.max_rss_MiB < baseline.max_rss_MiB + 100.0);
+}
+
+// ---- WC-MPS runs that must finish sensibly (the long one, the cap at 2000 Pa s, runs in scripts/stability-matrix) ----
+
+namespace {
+
+struct MpsOutcome {
+  json mps;  // report.json's "mps" block
+  std::string output;  // stdout and stderr
+  double front = 0, wall_height = 0, speed_end = 0;  // the deposit at the end [m, m, m/s]
+};
+
+MpsOutcome run_mps_case(const TemporaryFolder& folder, const std::string& stem, const json& patch = json::object()) {
+  json scene = read_json(case_file(stem));
+  scene["analyses"]["mps"].merge_patch(patch);
+  const fs::path file = folder.path / (stem + ".json");
+  std::ofstream(file) << scene.dump(1);
+  const fs::path out = folder.path / stem;
+  const Run run = run_case("run", file, out);
+  INFO(run.output);
+  REQUIRE(run.status == 0);
+  MpsOutcome o;
+  o.output = run.output;
+  o.mps = read_json(out / "report.json")["mps"];
+  CHECK(o.mps["status"] == "ok");
+  CHECK(o.mps["stopped_because"] == "end_time");
+  CHECK(o.mps["mass_kg_per_m"]["end"].get<double>() ==
+        Approx(o.mps["mass_kg_per_m"]["start"].get<double>()).epsilon(1e-12));
+  o.front = o.mps["deposit"]["front_x_m"]["end"].get<double>();
+  o.wall_height = o.mps["deposit"]["wall_height_m"]["end"].get<double>();
+  o.speed_end = o.mps["deposit"]["max_speed_end_m_s"].get<double>();
+  return o;
+}
+
+bool warns(const MpsOutcome& o, const std::string& words) {
+  for (const auto& w : o.mps["warnings"])
+    if (w.get<std::string>().find(words) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("stability: the WC-MPS collapse at eq. 30's time-step limit, with c0 too small, with a column of a few "
+          "particles and with the viscosity cap at 1 Pa s finishes, conserves mass and warns where it should",
+          "[stability][mps][cli]") {
+  TemporaryFolder folder("stability-mps");
+  // the same 10 mm collapse at the default C_r = 0.2 is the reference of the limit and of the low cap
+  const MpsOutcome base = run_mps_case(folder, "mps_cfl_at_limit", {{"cfl", 0.2}});
+  CHECK(base.mps["warnings"].empty());
+  CHECK(base.speed_end < 0.05);  // at rest
+  {
+    INFO("C_r = 1 (eq. 30's limit): five times fewer steps, the same deposit within 5 %");
+    const MpsOutcome limit = run_mps_case(folder, "mps_cfl_at_limit");
+    CHECK(limit.mps["steps"].get<double>() < 0.25 * base.mps["steps"].get<double>());
+    CHECK(limit.front == Approx(base.front).epsilon(0.05));
+    CHECK(limit.wall_height == Approx(base.wall_height).epsilon(0.05));
+    CHECK(limit.speed_end < 0.05);
+  }
+  {
+    INFO("c0 = 2 m/s: the sound-speed rule broken, said in the report and on stderr");
+    const MpsOutcome slow = run_mps_case(folder, "mps_sound_speed_too_small");
+    CHECK(slow.mps["max_speed_m_s"].get<double>() > 0.2);
+    CHECK(warns(slow, "analyses.mps.sound_speed_m_s"));
+    CHECK(warns(slow, "at least"));
+    CHECK(slow.output.find("mps: warning: analyses.mps.sound_speed_m_s") != std::string::npos);
+  }
+  {
+    INFO("a column 3 particles high: the thin-block warning");
+    const MpsOutcome few = run_mps_case(folder, "mps_few_particles");
+    CHECK(warns(few, "analyses.mps.blocks[0]: 3 particles across"));
+    CHECK(few.front > 0.1);  // it still spreads
+  }
+  {
+    INFO("the viscosity cap at 1 Pa s: the column flows farther and ends lower than with the default 200 Pa s");
+    const MpsOutcome low = run_mps_case(folder, "mps_viscosity_cap_low");
+    CHECK(low.front > base.front + 0.02);
+    CHECK(low.wall_height < base.wall_height - 0.005);
+  }
 }
 
 // ---- SPH runs that must finish (or stop) sensibly ----

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "coupling/analyses/sph_stage.hpp"
 #include "coupling/analyses/stage.hpp"
@@ -41,6 +42,23 @@ double max_speed(const sph::ParticleSet& p) {
   for (std::size_t i = 0; i < p.size(); ++i)
     if (p.kind[i] == 0) v = std::max(v, std::hypot(p.vx[i], p.vy[i]));
   return v;
+}
+
+// A block fewer than r_e/dx particles across (its width or its height): every particle's r_e reaches past both of
+// its faces, so no particle has a full neighbourhood and the operators are truncated throughout.
+std::vector<std::string> thin_block_warnings(const MpsAnalysis& a) {
+  std::vector<std::string> out;
+  const double dx = a.settings.particle_spacing, across_needed = a.settings.re_over_dx;
+  for (std::size_t k = 0; k < a.blocks.size(); ++k) {
+    const TankRectangle& b = a.blocks[k];
+    const double across = std::min(b.x_max - b.x_min, b.y_max - b.y_min) / dx;
+    if (across >= across_needed) continue;
+    out.push_back("analyses.mps.blocks[" + std::to_string(k) + "]: " + format_number(std::floor(across + 1e-9)) +
+                  " particles across, fewer than re_over_dx = " + format_number(across_needed) +
+                  ": every particle's r_e reaches past both faces of the block, no particle has a full "
+                  "neighbourhood and the results are crude; use a smaller particle_spacing_m");
+  }
+  return out;
 }
 
 // --resume: the model continues from the run folder's checkpoint; the monitors keep the rows written before it and
@@ -93,7 +111,9 @@ MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
     fastest = std::max(fastest, max_speed(model.particles));
   });
   result.max_speed_run = fastest;
-  result.sound_speed_warning = sph::mps::sound_speed_problem(a.settings.sound_speed, fastest);
+  result.warnings = thin_block_warnings(a);
+  const std::string sound = sph::mps::sound_speed_problem(a.settings.sound_speed, fastest);
+  if (!sound.empty()) result.warnings.push_back("analyses.mps.sound_speed_m_s: " + sound);
   if (monitors.table().times.back() < model.state.time) monitors.sample(model.particles, model.state.time);
   result.mass_end = moving_mass(model.particles);
   result.front_end = contact_front(model.particles, dx);
@@ -127,7 +147,7 @@ StageOutcome run_mps_stage(const Scene& scene, StageContext& context) {
       *options.log << "mps: " << result.moving_particles << " particles, " << result.summary.steps
                    << " steps to t = " << result.summary.simulated_time << " s; front x = " << result.front_end
                    << " m, height at the left wall " << result.wall_height_end << " m\n";
-      if (!result.sound_speed_warning.empty()) *options.log << "mps: warning: " << result.sound_speed_warning << "\n";
+      for (const std::string& w : result.warnings) *options.log << "mps: warning: " << w << "\n";
     }
   } catch (const std::exception& error) {
     outcome.status = ExitStatus::failed;

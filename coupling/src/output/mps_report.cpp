@@ -26,7 +26,7 @@ nlohmann::json mps_report(const MpsStageResult& r) {
                   {"max_speed_end_m_s", r.max_speed_end}};
   j["max_speed_m_s"] = r.max_speed_run;
   j["warnings"] = nlohmann::json::array();
-  if (!r.sound_speed_warning.empty()) j["warnings"].push_back(r.sound_speed_warning);
+  for (const std::string& w : r.warnings) j["warnings"].push_back(w);
   j["frames_written"] = r.summary.frames_written;
   nlohmann::json columns = nlohmann::json::array({"time_s"});
   for (const std::string& c : r.monitors.columns) columns.push_back(c);

@@ -1,8 +1,13 @@
 // analyses.mps: settings, materials, tank, blocks and monitors of the WC-MPS (docs/scene-format.md).
 #include "coupling/scene/mps_analysis.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <exception>
 #include <set>
+#include <sstream>
+
+#include "sph/mps/terms.hpp"
 
 namespace coupling {
 
@@ -101,7 +106,43 @@ void read_block_material(JsonReader& b, const std::vector<MpsMaterial>& material
   if (name) b.diagnostics().error(b.path_of("material"), "unknown material \"" + *name + "\" (known: " + known + ")");
 }
 
+// A run planned to need more than max_steps time steps is refused before it starts, with the figures.
+void refuse_too_many_steps(JsonReader& r, const MpsAnalysis& a) {
+  const MpsPlan plan = plan_mps(a);
+  if (!(plan.planned_steps > a.max_steps)) return;
+  const sph::mps::Settings& s = a.settings;
+  std::ostringstream why;
+  why << "the run needs about " << std::llround(std::min(plan.planned_steps, 1e18)) << " time steps (eq. 30: time step "
+      << plan.time_step << " s for end_time_s = " << s.end_time << " s; ";
+  if (plan.viscous_limit)
+    why << "the viscous limit cfl rho0 dx^2 / (4 mu) with mu = " << plan.viscosity
+        << " Pa s, the viscosity_cap_Pa_s a granular material reaches at rest), more than max_steps = "
+        << std::llround(a.max_steps)
+        << "; lower viscosity_cap_Pa_s, use a larger particle_spacing_m or a shorter end_time_s, or raise max_steps";
+  else
+    why << "the acoustic limit cfl dx / c0 with sound_speed_m_s = " << s.sound_speed << " m/s), more than max_steps = "
+        << std::llround(a.max_steps)
+        << "; use a larger particle_spacing_m or a shorter end_time_s, or raise max_steps";
+  r.diagnostics().error(r.path_of("max_steps"), why.str());
+}
+
 }  // namespace
+
+MpsPlan plan_mps(const MpsAnalysis& a) {
+  const sph::mps::Settings& s = a.settings;
+  MpsPlan plan;
+  for (const std::uint16_t k : a.block_material) {
+    if (k >= a.materials.size()) continue;
+    const sph::mps::Material& m = a.materials[k].material;
+    const bool granular = m.type == sph::mps::Material::Type::granular;
+    plan.viscosity = std::max(plan.viscosity, granular ? s.viscosity_cap : m.viscosity);
+  }
+  plan.time_step = sph::mps::terms::time_step(s.cfl, s.particle_spacing, s.sound_speed, 0.0, s.rest_density,
+                                              plan.viscosity);
+  plan.viscous_limit = plan.time_step < s.cfl * s.particle_spacing / s.sound_speed;
+  plan.planned_steps = s.end_time / plan.time_step;
+  return plan;
+}
 
 MpsAnalysis read_mps_analysis(JsonReader& mps) {
   MpsAnalysis a;
@@ -111,13 +152,16 @@ MpsAnalysis read_mps_analysis(JsonReader& mps) {
   read_tank_rectangles(mps, "blocks", a.tank, a.blocks,
                        [&](JsonReader& b) { read_block_material(b, a.materials, a); });
   read_tank_monitors(mps, a.monitors, true);
+  a.max_steps = mps.number_or("max_steps", a.max_steps, Bounds::at_least(1.0));
   mps.finish();
   try {
     a.settings.validate();
     for (const MpsMaterial& m : a.materials) m.material.validate();
   } catch (const std::exception& error) {
     mps.diagnostics().error(mps.path(), error.what());
+    return a;
   }
+  if (mps.diagnostics().empty()) refuse_too_many_steps(mps, a);
   return a;
 }
 

@@ -49,7 +49,7 @@ const char* stress_divergence_key(StressDivergence s) { return s == StressDiverg
 std::string sound_speed_problem(double c0, double u_max) {
   if (terms::sound_speed_sufficient(c0, u_max)) return {};
   std::ostringstream s;
-  s << "mps: sound_speed = " << c0 << " m/s is below " << terms::sound_speed_factor << " x the largest flow speed ("
+  s << "sound_speed = " << c0 << " m/s is below " << terms::sound_speed_factor << " x the largest flow speed ("
     << u_max << " m/s): the density error exceeds about 1 %; allowed: at least " << terms::sound_speed_factor * u_max
     << " m/s";
   return s.str();

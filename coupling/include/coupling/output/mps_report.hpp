@@ -23,7 +23,7 @@ struct MpsStageResult {
   double front_start = 0, front_end = 0, wall_height_start = 0, wall_height_end = 0;
   double max_speed_end = 0;  // [m/s] the largest particle speed at the end (the deposit is at rest when small)
   double max_speed_run = 0;  // [m/s] over the whole run, for the sound-speed rule c0 >= 10 |u|max
-  std::string sound_speed_warning;  // empty when the rule held
+  std::vector<std::string> warnings;  // the sound-speed rule broken, blocks too thin for r_e (report "warnings")
   MonitorTable monitors;
 };
 

@@ -25,7 +25,19 @@ struct MpsAnalysis {
   std::vector<TankRectangle> blocks;  // material at rest at t = 0 (released at once: no gate)
   std::vector<std::uint16_t> block_material;  // index into materials, one per block
   TankMonitors monitors;
+  double max_steps = 5.0e6;  // a run planned to need more time steps is refused before it starts
 };
+
+// The first time step of eq. 30 with everything at rest (|u| = 0; the largest viscosity of the blocks' materials
+// at rest: the cap for a granular material, which the capped law reaches at |D| = 0 when N < 1 and never exceeds,
+// a water's own viscosity) and the steps it plans for end_time_s.
+struct MpsPlan {
+  double time_step = 0;  // [s]
+  double viscosity = 0;  // mu_max at rest [Pa s]
+  double planned_steps = 0;
+  bool viscous_limit = false;  // the viscous bound rho0 dx^2 / (2 d mu) sets the step, not dx / c0
+};
+MpsPlan plan_mps(const MpsAnalysis& a);
 
 // Reads analyses.mps; faults go to the reader's diagnostics with their JSON paths.
 MpsAnalysis read_mps_analysis(JsonReader& mps);
