@@ -33,6 +33,11 @@ fs::path write_scene(const fs::path& dir, const std::string& name, const nlohman
   return file;
 }
 
+nlohmann::json case_json(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
 nlohmann::json case_file(const std::string& name) {
   std::ifstream in(std::string(SPHSLOPE_SOURCE_DIR) + "/cases/" + name);
   return nlohmann::json::parse(in);
@@ -116,6 +121,58 @@ TEST_CASE("study: elastic column converges to the closed-form stress", "[study][
     CHECK(again.str().find("dx = 0.1 m already done") != std::string::npos);
     CHECK(again.str().find("sph:") == std::string::npos);  // nothing was run again
     CHECK(resumed.study["runs"][1]["errors_vs_reference"][0].get<double>() == fine);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("study: the WC-MPS dry collapse is measured against the 2-D scaling laws", "[study][mps]") {
+  // Lube et al. / Lajeunesse et al. (2005), shared/references/fluids-granular.md section 4: L = l0 (1 + 1.5 a) =
+  // 0.1 (1 + 1.5 x 0.6) = 0.19 m; the height at the wall stays h0 = 0.06 m for a < 0.7.
+  const fs::path dir = fresh_dir("mps");
+  StudyOptions options;
+  options.spacings = {0.01, 0.02};
+  options.output_dir = dir;
+  std::ostringstream log;
+  options.log = &log;
+  const fs::path scene = fs::path(SPHSLOPE_SOURCE_DIR) / "cases/mps_dry_collapse_lajeunesse.json";
+  const StudyResult r = run_study(scene, options);
+  INFO(log.str());
+  REQUIRE(r.status == ExitStatus::ok);
+  const auto& study = r.study;
+  CHECK(study["reference_case"] == "mps_dry_collapse");
+  CHECK(study["quantities"][0]["key"] == "runout_m");
+  CHECK(study["quantities"][0]["reference"].get<double>() == Approx(0.19).epsilon(1e-12));
+  CHECK(study["quantities"][1]["key"] == "wall_height_m");
+  CHECK(study["quantities"][1]["reference"].get<double>() == Approx(0.06).epsilon(1e-12));
+  REQUIRE(study["runs"].size() == 2u);
+  CHECK(study["runs"][0]["particles"].get<int>() == 15);  // 5 x 3 at 20 mm
+  CHECK(study["runs"][1]["particles"].get<int>() == 60);  // 10 x 6 at 10 mm
+  // each error is the run's own report against the law
+  for (std::size_t k = 0; k < 2; ++k) {
+    const auto& run = study["runs"][k];
+    const nlohmann::json report = case_json(dir / run["folder"].get<std::string>() / "report.json");
+    const double front = report["mps"]["deposit"]["front_x_m"]["end"].get<double>();
+    const double height = report["mps"]["deposit"]["wall_height_m"]["end"].get<double>();
+    CHECK(run["values"][0].get<double>() == front);
+    CHECK(run["errors_vs_reference"][0].get<double>() == Approx(std::fabs(front - 0.19) / 0.19).epsilon(1e-12));
+    CHECK(run["errors_vs_reference"][1].get<double>() == Approx(std::fabs(height - 0.06) / 0.06).epsilon(1e-12));
+  }
+  CHECK(fs::exists(dir / "figures" / "error_vs_runtime.svg"));
+
+  {
+    INFO("a column the reference does not cover is refused");
+    nlohmann::json tall = case_json(scene);
+    tall["analyses"]["mps"]["blocks"][0]["y_max_m"] = 0.1;  // a = 1
+    options.output_dir = dir / "tall";
+    const StudyResult refused = run_study(write_scene(dir, "tall.json", tall), options);
+    REQUIRE(refused.status == ExitStatus::invalid_input);
+    CHECK(refused.errors.front().find("covers a < 0.7") != std::string::npos);
+    nlohmann::json away = case_json(scene);
+    away["analyses"]["mps"]["blocks"][0]["x_min_m"] = 0.05;
+    away["analyses"]["mps"]["blocks"][0]["x_max_m"] = 0.15;
+    const StudyResult moved = run_study(write_scene(dir, "away.json", away), options);
+    REQUIRE(moved.status == ExitStatus::invalid_input);
+    CHECK(moved.errors.front().find("against the tank's left wall") != std::string::npos);
   }
   fs::remove_all(dir);
 }

@@ -128,7 +128,9 @@ int print_study(const std::filesystem::path& scene_file, const std::filesystem::
   std::printf("\n");
   for (const auto& run : study["runs"]) {
     std::printf("%10.4g %10s %10s %10.1f", run["particle_spacing_m"].get<double>(),
-                run.contains("soil_particles") ? run["soil_particles"].dump().c_str() : "-",
+                run.contains("soil_particles")                                ? run["soil_particles"].dump().c_str()
+                : run.contains("particles") && run["particles"].is_number() ? run["particles"].dump().c_str()
+                                                                              : "-",
                 run.contains("steps") ? run["steps"].dump().c_str() : "-", run.value("wall_seconds", 0.0));
     for (std::size_t q = 0; q < study["quantities"].size(); ++q) {
       const auto& e = run["errors_vs_reference"][q];
@@ -249,7 +251,7 @@ void add_study_command(CLI::App& app, CommandLine& cli) {
   cli.study = app.add_subcommand(
       "study", "Error against run time: run the scene at several particle spacings and measure each monitored "
                "quantity against its reference (DIR/study.json, DIR/figures/error_vs_runtime.svg).");
-  cli.study->add_option("SCENE", cli.scene_file, "Scene file with analyses.sph (a slope section, or one column body)")
+  cli.study->add_option("SCENE", cli.scene_file, "Scene file with analyses.sph (a slope section, or one column body) or analyses.mps (one granular column)")
       ->required()
       ->type_name("FILE");
   cli.study->add_option("--spacings", cli.spacings, "Particle spacings in metres, comma-separated, e.g. 0.4,0.2,0.1")

@@ -164,11 +164,15 @@ RunRecord run_one_spacing(const Scene& scene, const nlohmann::json& document, co
   entry["status"] = run.status == ExitStatus::ok ? "ok" : run.status == ExitStatus::failed ? "failed" : "refused";
   entry["errors"] = run.errors;
   entry["wall_seconds"] = record.seconds;
-  if (run.report.is_object() && run.report.contains("sph")) {
-    const nlohmann::json& sph = run.report["sph"];
+  for (const char* analysis : {"sph", "mps"}) {
+    if (!run.report.is_object() || !run.report.contains(analysis)) continue;
+    const nlohmann::json& block = run.report[analysis];
     for (const char* key : {"soil_particles", "particles", "steps", "simulated_time_s", "stopped_because"})
-      if (sph.contains(key)) entry[key] = sph[key];
-    if (sph.contains("seconds")) entry["sph_seconds"] = sph["seconds"];
+      if (block.contains(key)) entry[key] = block[key];
+    if (block.contains("particles") && block["particles"].is_object())  // mps: {moving, wall}
+      entry["particles"] = block["particles"].value("moving", nlohmann::json());
+    if (block.contains("seconds")) entry["sph_seconds"] = block["seconds"];
+    if (block.contains("wall_s")) entry["mps_seconds"] = block["wall_s"];
   }
   // A run that did not finish (interrupted, blown up) measures nothing: its state is not the case's result.
   record.values = record.ok ? read_values(setup, run)

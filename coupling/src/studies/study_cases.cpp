@@ -20,6 +20,16 @@ constexpr const char* true_2d_collapse_source =
     "columns (the material of Bui et al. 2008); h_f/h_0 = 1 for a < 0.65, h_0/h_f = 1.42 a^(2/3) above; "
     "(d - d_0)/d_0 = 3.25 a^0.96 for 0.65 < a < 1.5 and 3.80 a^0.73 for a > 1.5";
 
+// The dry collapse of the WC-MPS (issue 12): the 2-D scaling laws of Lube et al. (2005) and Lajeunesse et al.
+// (2005) as quoted in shared/references/fluids-granular.md section 4 (the quotes disagree: lambda 1.2 to 1.8).
+constexpr const char* slump_law_source =
+    "Lube et al. (2005) and Lajeunesse, Monnier & Homsy (2005, Phys. Fluids 17:103302), 2-D scaling laws as quoted "
+    "in shared/references/fluids-granular.md section 4: (L - l0)/l0 = lambda a for small a, lambda 1.2 to 1.8 "
+    "(the quotes disagree; the reference takes the middle, 1.5; the band 1.2-1.8 is L = 0.172-0.208 m for the "
+    "seed's column, a = 0.6, l0 = 0.1 m); the column's top corner "
+    "stays in place, so the height at the wall is h0, for a below about 0.7";
+constexpr double slump_lambda = 1.5, slump_max_aspect = 0.7;
+
 double polygon_min(const std::vector<slope::Point>& polygon, double slope::Point::*coordinate) {
   double v = std::numeric_limits<double>::infinity();
   for (const auto& p : polygon) v = std::min(v, p.*coordinate);
@@ -200,18 +210,56 @@ std::optional<double> number_at(const nlohmann::json& j, std::initializer_list<c
 
 std::optional<double> finite(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
 
+// The WC-MPS dry collapse: one granular block against the tank's left wall, on its floor.
+CaseSetup mps_case(const Scene& scene) {
+  const MpsAnalysis& a = *scene.analyses.mps;
+  const bool one_granular_block =
+      a.blocks.size() == 1 &&
+      a.materials[a.block_material[0]].material.type == sph::mps::Material::Type::granular;
+  if (!one_granular_block)
+    throw SceneError({"study: analyses.mps: the dry-collapse reference needs exactly one block, of a granular "
+                      "material"});
+  const TankRectangle& b = a.blocks[0];
+  if (std::fabs(b.x_min - a.tank.x_min) > 1e-9 || std::fabs(b.y_min - a.tank.y_min) > 1e-9)
+    throw SceneError({"study: analyses.mps.blocks[0]: the dry-collapse reference needs the column against the "
+                      "tank's left wall and on its floor (x_min_m = " + format_number(a.tank.x_min) +
+                      ", y_min_m = " + format_number(a.tank.y_min) + ")"});
+  const double length = b.x_max - b.x_min, height = b.y_max - b.y_min, aspect = height / length;
+  if (!(aspect < slump_max_aspect))
+    throw SceneError({"study: analyses.mps.blocks[0]: aspect ratio h0/l0 = " + format_number(aspect) +
+                      ": the dry-collapse reference (the height at the wall stays h0) covers a < 0.7"});
+  CaseSetup setup;
+  setup.kind = CaseKind::mps_dry_collapse;
+  setup.kind_key = "mps_dry_collapse";
+  const double runout = length * (1.0 + slump_lambda * aspect);
+  setup.quantities = {
+      {"runout_m", "distance from the left wall to the deposit's front, L (m)", runout, slump_law_source,
+       "2-D scaling laws (Lube, Lajeunesse 2005)", "|value - reference| / reference", runout},
+      {"wall_height_m", "height of the deposit at the left wall (m)", height, slump_law_source,
+       "2-D scaling laws (Lube, Lajeunesse 2005)", "|value - reference| / reference", height},
+  };
+  setup.parameters = {{"initial_length_m", length}, {"initial_height_m", height}, {"aspect_ratio", aspect},
+                      {"wall_x_m", a.tank.x_min}, {"lambda", slump_lambda}};
+  return setup;
+}
+
 }  // namespace
 
 CaseSetup setup_case(const Scene& scene) {
+  if (scene.analyses.mps) return mps_case(scene);
   if (!scene.analyses.sph)
-    throw SceneError({"study: the scene has no analyses.sph (the study runs it at each --spacings value, replacing "
-                      "analyses.sph.particle_spacing_m)"});
+    throw SceneError({"study: the scene has no analyses.sph or analyses.mps (the study runs it at each --spacings "
+                      "value, replacing its particle_spacing_m)"});
   if (scene.section) return slope_case(scene);
   if (scene.bodies) return particle_case(scene);
   throw SceneError({"study: the scene has neither a section nor bodies"});
 }
 
 nlohmann::json scene_at_spacing(const Scene& scene, nlohmann::json document, double spacing) {
+  if (scene.analyses.mps) {
+    document["analyses"]["mps"]["particle_spacing_m"] = spacing;
+    return document;
+  }
   document["analyses"]["sph"]["particle_spacing_m"] = spacing;
   if (scene.section) {
     if (!document["analyses"].contains("lem")) document["analyses"]["lem"] = nlohmann::json::object();
@@ -251,6 +299,12 @@ std::vector<std::optional<double>> read_values(const CaseSetup& setup, const Wor
       values[0] = number_at(report, {"sph", "deposit", "final_length_m"});
       values[1] = number_at(report, {"sph", "deposit", "final_height_m"});
       break;
+    case CaseKind::mps_dry_collapse: {
+      const auto front = number_at(report, {"mps", "deposit", "front_x_m", "end"});
+      if (front) values[0] = *front - setup.parameters["wall_x_m"].get<double>();
+      values[1] = number_at(report, {"mps", "deposit", "wall_height_m", "end"});
+      break;
+    }
   }
   return values;
 }

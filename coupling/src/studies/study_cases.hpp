@@ -14,7 +14,7 @@
 
 namespace coupling::study_detail {
 
-enum class CaseKind { slope_failure_surface, elastic_column, column_collapse };
+enum class CaseKind { slope_failure_surface, elastic_column, column_collapse, mps_dry_collapse };
 
 struct Quantity {
   std::string key;                 // e.g. "exit_x_m"
