@@ -174,14 +174,25 @@ TEST_CASE("stability: refused cases stop before running, say why, and write noth
   }
 }
 
+namespace {
+
+// Runs a case that must be refused for its step count and returns the count its message states ("needs about N").
+double refused_planned_steps(const std::string& stem) {
+  TemporaryFolder folder("stability-steps");
+  const Run run = run_case("run", case_file(stem), folder.path / "out");
+  INFO(run.output);
+  CHECK(run.status == 2);
+  const auto at = run.output.find("needs about ");
+  REQUIRE(at != std::string::npos);
+  return std::stod(run.output.substr(at + 12));
+}
+
+}  // namespace
+
 TEST_CASE("stability: the stiff-soil refusal states the planned step count", "[stability][refusal][cli]") {
   // E = 1 GPa, nu = 0.25, rho = 2100 kg/m3: P-wave speed sqrt(M / rho) = 756 m/s (M = E (1 - nu) / ((1 + nu)
   // (1 - 2 nu))); dt = cfl h / (c (1 + 1.2 alpha)) = 0.2 x 0.024 / (756 x 1.12) = 5.67e-6 s; 60 s -> 1.06e7 steps.
-  TemporaryFolder folder("stability-stiff");
-  const Run run = run_case("run", case_file("sph_stiff_1GPa_refused"), folder.path / "out");
-  const auto at = run.output.find("needs about ");
-  REQUIRE(at != std::string::npos);
-  const double planned = std::stod(run.output.substr(at + 12));
+  const double planned = refused_planned_steps("sph_stiff_1GPa_refused");
   const double c = std::sqrt(1e9 * 0.75 / (1.25 * 0.5) / (20.601e3 / 9.81));
   const double expected = 60.0 / (0.2 * 1.2 * 0.02 / (c * 1.12));
   CHECK(planned == Approx(expected).epsilon(1e-3));
@@ -191,11 +202,7 @@ TEST_CASE("stability: the stiff-soil refusal states the planned step count", "[s
 TEST_CASE("stability: the WC-MPS refusal of a huge viscosity cap states the planned step count", "[stability][refusal][mps][cli]") {
   // eq. 30 at rest: dt = C_r rho0 dx^2 / (2 d mu_cap) = 0.2 x 1500 x 0.0025^2 / (4 x 1e5) = 4.6875e-9 s (below the
   // acoustic C_r dx / c0 = 2.5e-5 s); 0.6 s -> 1.28e8 steps.
-  TemporaryFolder folder("stability-mps-cap");
-  const Run run = run_case("run", case_file("mps_viscosity_cap_refused"), folder.path / "out");
-  const auto at = run.output.find("needs about ");
-  REQUIRE(at != std::string::npos);
-  const double planned = std::stod(run.output.substr(at + 12));
+  const double planned = refused_planned_steps("mps_viscosity_cap_refused");
   CHECK(planned == Approx(0.6 / (0.2 * 1500 * 0.0025 * 0.0025 / (4 * 1e5))).epsilon(1e-6));
 }
 
