@@ -251,7 +251,7 @@ void Step::collide_with_walls(double dt) {
     if (p.kind[i] != kMoving) continue;
     double vx = p.vx[i], vy = p.vy[i];
     for_each_within(nb, i, dc, [&](std::size_t j, double dx, double dy, double r2) {
-      if (p.kind[j] == kMoving || r2 == 0.0) return;  // for_each_neighbour passes r2 < d_c^2 only
+      if (p.kind[j] == kMoving || r2 == 0.0) return;  // for_each_within passes r2 < d_c^2 only
       const double r = std::sqrt(r2);
       const double ex = dx / r, ey = dy / r;  // from j to i (dx = x_i - x_j)
       const double vn = vx * ex + vy * ey;
