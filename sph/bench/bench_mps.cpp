@@ -34,8 +34,9 @@ int main(int argc, char** argv) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("bench-mps: dry collapse, %zu grains + %zu wall and dummy particles, dx = %.3g m, r_e = %.1f dx\n",
               grains, model.particles.size() - grains, st.particle_spacing, st.re_over_dx);
-  std::printf("threads %d  steps %d  wall %.3f s  %.3f ms/step  particle-steps/s %.4g  (t = %.4g s)\n",
+  std::printf("threads %d  steps %d  wall %.3f s  %.3f ms/step  particle-steps/s %.4g  (t = %.4g s, candidates "
+              "listed %llu times)\n",
               omp_get_max_threads(), steps, wall, 1e3 * wall / steps, static_cast<double>(grains) * steps / wall,
-              model.state.time);
+              model.state.time, static_cast<unsigned long long>(step.candidate_listings()));
   return 0;
 }

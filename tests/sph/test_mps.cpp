@@ -504,8 +504,11 @@ TEST_CASE("mps fields register once in the particle set", "[mps]") {
   set.add(0.0, 0.0, 1.0, 1500.0, 0, sph::ParticleKind::soil);
   const sph::mps::Fields a = sph::mps::Fields::register_in(set);
   const sph::mps::Fields b = sph::mps::Fields::register_in(set);
-  CHECK(set.field_count() == 5);
+  CHECK(set.field_count() == 7);  // pressure, the two listing positions and four derived fields
   CHECK(a.pressure == b.pressure);
+  CHECK(a.x_listed == b.x_listed);
+  CHECK(set.spec(a.x_listed).checkpoint);
+  CHECK_FALSE(set.spec(a.x_listed).write_vtu);
   CHECK(a.viscosity == b.viscosity);
   CHECK(set.spec(a.pressure).checkpoint);
   CHECK_FALSE(set.spec(a.number_density).checkpoint);

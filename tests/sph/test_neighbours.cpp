@@ -1,5 +1,6 @@
-// The engine's neighbour iteration (sph/engine/neighbours.hpp) within one particle set and across two, against an
-// O(N^2) search: every pair closer than the radius is visited exactly once, with the right separation.
+// The engine's neighbour iteration (sph/engine/neighbours.hpp) within one particle set and across two, and its
+// neighbour lists (sph/engine/neighbour_list.hpp), against an O(N^2) search: every pair closer than the radius is
+// visited exactly once, with the right separation.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "sph/engine/cell_sort.hpp"
+#include "sph/engine/neighbour_list.hpp"
 #include "sph/engine/neighbours.hpp"
 
 namespace {
@@ -77,4 +79,45 @@ TEST_CASE("neighbour iteration across two sets finds the other set's particles n
     sph::for_each_neighbour_at(sorted_water, water, x, y, radius, [&](std::size_t, double, double, double) { ++n; });
     CHECK(n == 0);
   }
+}
+
+TEST_CASE("a neighbour list drawn from wider candidates holds every pair within the radius after a move less than "
+          "half the margin, in the candidates' order, with its pair values",
+          "[sph][neighbours]") {
+  sph::ParticleSet set = scattered(800, 0.0, 1.0, 0.0, 0.5, 17);
+  const double radius = 0.05, margin = 0.02;
+  sph::CellSortedSet sorted;
+  sorted.reserve(set);
+  sorted.sort(set, radius + margin);
+  sph::NeighbourList candidates(false);
+  candidates.build(sorted, set, radius + margin, [](double) { return 0.0; });
+  // every particle moves by just under margin / 2 in a random direction
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI);
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    const double a = angle(rng);
+    set.x[i] += 0.499 * margin * std::cos(a);
+    set.y[i] += 0.499 * margin * std::sin(a);
+  }
+  sph::NeighbourList list;
+  list.build_from(candidates, set, radius, [](double r2) { return 2.0 * r2; });
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    std::vector<std::size_t> found;
+    sph::for_each_listed_pair(list, set, i, [&](std::size_t j, double, double, double r2, double value) {
+      found.push_back(j);
+      CHECK(value == 2.0 * r2);
+    });
+    CHECK(std::is_sorted(found.begin(), found.end()));  // the candidates' order: the sort's cells, row-major
+    REQUIRE(found == brute(set, set.x[i], set.y[i], radius, i));
+    pairs += found.size();
+  }
+  CHECK(pairs > 1000);
+  // moved by more than the margin, the candidates miss pairs: the bound above is what the caller must keep
+  for (std::size_t i = 0; i < set.size(); ++i) set.x[i] += (i % 2 == 0 ? 1.5 : -1.5) * margin;
+  list.build_from(candidates, set, radius, [](double r2) { return r2; });
+  std::size_t missing = 0;
+  for (std::size_t i = 0; i < set.size(); ++i)
+    missing += brute(set, set.x[i], set.y[i], radius, i).size() - list.count(i);
+  CHECK(missing > 0);
 }

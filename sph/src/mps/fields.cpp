@@ -5,6 +5,8 @@ namespace sph::mps {
 Fields Fields::register_in(ParticleSet& set) {
   Fields f;
   f.pressure = set.add_field({"pressure", true, true});
+  f.x_listed = set.add_field({"mps_x_listed", true, false});
+  f.y_listed = set.add_field({"mps_y_listed", true, false});
   f.number_density = set.add_field({"number_density", false, true});
   f.smoothed_pressure = set.add_field({"smoothed_pressure", false, true});
   f.viscosity = set.add_field({"viscosity", false, true});

@@ -15,11 +15,17 @@ namespace sph::mps {
 namespace {
 using Index = std::int64_t;  // OpenMP loop index
 constexpr std::uint8_t kMoving = static_cast<std::uint8_t>(ParticleKind::soil);
+// The candidates' margin beyond r_e in spacings: at the time step of eq. 30 (cfl 0.2, c0 >= 10 |u|max) a particle
+// moves at most 0.02 dx per step, so the candidates last at least a dozen steps.
+constexpr double list_skin = 0.5;
 }  // namespace
 
 struct Step::Impl {
-  CellSortedSet sorted;
-  NeighbourList list;  // the pairs within r_e after the last sort
+  CellSortedSet sorted;  // by cells of side r_e + s at the last listing of the candidates
+  NeighbourList candidates{false};  // the pairs within r_e + s at the listing positions (fields x/y_listed)
+  bool candidates_listed = false;
+  std::uint64_t listings = 0;
+  NeighbourList list;  // the pairs within r_e at the current positions, with w_ij
   FieldId x_start = 0, y_start = 0;  // r^m during a step [m] (workspace, reordered with the set)
   std::vector<double> fx, fy;  // the non-pressure forces of the predictor [N/m^3]
   std::vector<double> weight_above;  // the hydrostatic p' of every particle [Pa] (effective_pressure hydrostatic)
@@ -42,13 +48,60 @@ Neighbourhood Step::neighbourhood() const {
   return {impl_->sorted, model_.particles, model_.settings.effective_radius(), &impl_->list};
 }
 
-// Sorts by cells of side r_e and lists every pair within r_e with its weight w_ij: the passes until the next sort
-// read the list at the positions of the sort (the wall collision reads it after the corrector's small move: a pair
-// closer than d_c < r_e then was within r_e at the sort).
-void Step::sort() {
+double Step::skin() const { return list_skin * model_.settings.particle_spacing; }
+
+// Sorts by cells of side r_e + s, lists the candidates within r_e + s and keeps their positions.
+void Step::list_candidates() {
+  ParticleSet& p = model_.particles;
+  const double radius = model_.settings.effective_radius() + skin();
+  impl_->sorted.sort(p, radius);
+  impl_->candidates.build(impl_->sorted, p, radius, [](double) { return 0.0; });
+  impl_->candidates_listed = true;
+  ++impl_->listings;
+}
+
+std::uint64_t Step::candidate_listings() const { return impl_->listings; }
+
+// A resumed run: the set is in the order of the sort at the stored listing positions, so sorting at those
+// positions again keeps the order (the sort is stable) and the candidates come out as they were.
+void Step::relist_candidates_at_stored_positions() {
+  ParticleSet& p = model_.particles;
+  std::swap(p.x, p.field(model_.fields.x_listed));
+  std::swap(p.y, p.field(model_.fields.y_listed));
+  list_candidates();
+  std::swap(p.x, p.field(model_.fields.x_listed));
+  std::swap(p.y, p.field(model_.fields.y_listed));
+}
+
+bool Step::moved_beyond_half_skin() const {
+  const ParticleSet& p = model_.particles;
+  const double* xl = p.field(model_.fields.x_listed).data();
+  const double* yl = p.field(model_.fields.y_listed).data();
+  double d2 = 0;
+  const auto n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static) reduction(max : d2)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const double dx = p.x[i] - xl[i], dy = p.y[i] - yl[i];
+    d2 = std::max(d2, dx * dx + dy * dy);
+  }
+  const double half = 0.5 * skin();
+  return d2 > half * half;
+}
+
+// The pairs within r_e at the current positions with w_ij, from the candidates (listed again when needed): the
+// passes until the next call read them (the wall collision reads them after the corrector's small move: a pair
+// closer than d_c < r_e then was within r_e at r*).
+void Step::list_neighbours() {
+  if (!impl_->candidates_listed || moved_beyond_half_skin()) {
+    list_candidates();
+    ParticleSet& p = model_.particles;
+    p.field(model_.fields.x_listed) = p.x;
+    p.field(model_.fields.y_listed) = p.y;
+  }
   const double re = model_.settings.effective_radius();
-  impl_->sorted.sort(model_.particles, re);
-  impl_->list.build(impl_->sorted, model_.particles, re, [re](double r2) { return terms::weight(std::sqrt(r2), re); });
+  impl_->list.build_from(impl_->candidates, model_.particles, re,
+                         [re](double r2) { return terms::weight(std::sqrt(r2), re); });
 }
 
 void Step::initialise() {
@@ -56,7 +109,8 @@ void Step::initialise() {
   impl_->sorted.reserve(p);
   for (std::size_t i = 0; i < p.size(); ++i)
     if (p.kind[i] != kMoving) p.vx[i] = p.vy[i] = 0.0;  // walls are fixed
-  sort();
+  if (model_.state.rates_valid) relist_candidates_at_stored_positions();  // a resumed run
+  list_neighbours();
   viscosities();  // mu of the current state, for the first time step
   model_.state.rates_valid = true;  // the carried state is p^m (checkpointed) and the positions and velocities
 }
@@ -267,10 +321,10 @@ void Step::collide_with_walls(double dt) {
 }
 
 void Step::advance(double dt) {
-  sort();
+  list_neighbours();
   viscosities();
   predict(dt);
-  sort();
+  list_neighbours();
   equation_of_state();
   correct(dt);
   collide_with_walls(dt);

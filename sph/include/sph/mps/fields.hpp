@@ -1,7 +1,6 @@
 #pragma once
 // The WC-MPS state block in the engine's particle set: the arrays it registers by name (seed 2.11, step b-f), and
 // a view of raw pointers for the per-particle loops (valid until the next sort or particle addition).
-// The stepper that fills them is not written yet (docs/mps.md, "Not yet").
 #include "sph/engine/particle_set.hpp"
 
 namespace sph::mps {
@@ -9,6 +8,9 @@ namespace sph::mps {
 struct Fields {
   // state (checkpointed): p^m feeds the predictor's (1 - alpha) grad p^m of the next step (seed eq. 28)
   FieldId pressure;  // [Pa]
+  // the positions at which the stepper last listed the candidate neighbours [m]: a resumed run lists the same ones
+  // (sph/mps/stepper.hpp, "neighbour lists")
+  FieldId x_listed, y_listed;
   // written to frames, recomputed every step
   FieldId number_density;  // n* at the predicted positions [-] (seed eq. 6, 13)
   FieldId smoothed_pressure;  // p' of the yield stress [Pa] (seed eq. 20, A4)

@@ -1,12 +1,12 @@
 #pragma once
 // One time step of the WC-MPS (seed 2.11, eqs. 27-30), on the engine's Stepper interface:
-//   a  sort by cells of side r_e at r^m
+//   a  the neighbours within r_e at r^m (below)
 //   b  p' = Shepard-smoothed p^m (eq. 20, clamped >= 0) or the hydrostatic weight above (eqs. 18-19, the setting
 //      effective_pressure), the strain rate D (eq. 17)
 //   c  mu_i: the material's constant viscosity (water) or the capped regularised Herschel-Bulkley law (granular)
 //   d  <div tau>^m (eq. 22, or eq. 23 with stress_divergence indirect) and <grad p>^m (eq. 24)
 //   e  u* = u^m + (dt/rho0)(rho0 g + <div tau>^m - (1 - alpha) <grad p>^m) (eq. 28); r* = r^m + u* dt
-//   f  sort at r*; n*; p^{m+1} = Tait(n*), 0 at the free surface n* <= beta n0 (eqs. 13, 15)
+//   f  the neighbours within r_e at r*; n*; p^{m+1} = Tait(n*), 0 at the free surface n* <= beta n0 (eqs. 13, 15)
 //   g  u^{m+1} = u* - alpha (dt/rho0) <grad p>^{m+1} (eqs. 27, 29)
 //   h  r^{m+1} = r^m + u^{m+1} dt (A24)
 //   i  collision with the wall particles: a moving particle closer than wall_collision_distance dx to a wall or
@@ -14,7 +14,13 @@
 // Wall particles (kind wall) are fixed, at zero velocity (no-slip); the layer next to the flow carries the EOS
 // pressure of its own number density, the outer (dummy) layers only complete the number density and the viscous
 // sums (pressure 0, out of the pressure gradient). docs/mps.md gives the decisions.
+// Neighbour lists: every pass reads the list of the pairs within r_e at the current positions with their weights
+// w_ij, refreshed at r^m and at r* from a list of candidates within r_e + s (s = list_skin dx). The candidates are
+// listed again, after a sort by cells of side r_e + s, only when a particle has moved more than s/2 since they
+// were listed (then no pair within r_e can be missing). The listing positions are part of the checkpoint: a
+// resumed run lists the same candidates in the same order and continues bit for bit.
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -39,12 +45,18 @@ class Step : public Stepper {
   Health check_health() const override;
 
   const LatticeConstants& lattice() const { return lattice_; }
+  // How often the candidates were listed (each time after a sort) since this stepper was made.
+  std::uint64_t candidate_listings() const;
 
   struct Impl;
 
  private:
   Neighbourhood neighbourhood() const;
-  void sort();
+  void list_neighbours();
+  void list_candidates();
+  void relist_candidates_at_stored_positions();
+  bool moved_beyond_half_skin() const;
+  double skin() const;
   void viscosities();
   void hydrostatic_pressures();
   void predict(double dt);
