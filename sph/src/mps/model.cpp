@@ -39,6 +39,7 @@ Model::Model(const Settings& s, std::vector<Material> m)
   if (materials.empty()) throw std::invalid_argument("mps model: materials is empty; allowed: at least one");
   for (const Material& mat : materials) mat.validate();
   dummy = particles.add_field({"dummy", true, true});
+  gate = particles.add_field({"gate", true, false});
 }
 
 std::size_t add_block(Model& model, double x_min, double y_min, double x_max, double y_max, std::uint16_t material) {
@@ -70,6 +71,34 @@ std::size_t add_box(Model& model, double x_min, double x_max, double y_min, doub
     dummy[i] = outer ? 1.0 : 0.0;
   }
   return count;
+}
+
+double gate_thickness(const Settings& s) {
+  return std::ceil(s.effective_radius() / s.particle_spacing - 1e-9) * s.particle_spacing;
+}
+
+std::size_t add_gate(Model& model, double x_min, double y_min, double height, std::uint16_t material) {
+  if (material >= model.materials.size()) throw std::invalid_argument("mps add_gate: no such material");
+  const Settings& st = model.settings;
+  const double dx = st.particle_spacing;
+  const auto layers = static_cast<std::size_t>(std::llround(gate_thickness(st) / dx));
+  const auto rows = static_cast<std::size_t>(std::llround(height / dx));
+  if (rows == 0) throw std::invalid_argument("mps add_gate: height below one spacing");
+  ParticleSet& p = model.particles;
+  const std::size_t first = p.size();
+  p.reserve(first + layers * rows);
+  for (std::size_t k = 0; k < layers; ++k)
+    for (std::size_t l = 0; l < rows; ++l)
+      p.add(x_min + (static_cast<double>(k) + 0.5) * dx, y_min + (static_cast<double>(l) + 0.5) * dx,
+            model.particle_mass(), st.rest_density, material, ParticleKind::wall);
+  std::vector<double>& dummy = p.field(model.dummy);
+  std::vector<double>& gate = p.field(model.gate);
+  for (std::size_t i = first; i < p.size(); ++i) {
+    const std::size_t k = (i - first) / rows;
+    dummy[i] = k == 0 || k + 1 == layers ? 0.0 : 1.0;
+    gate[i] = 1.0;
+  }
+  return p.size() - first;
 }
 
 }  // namespace sph::mps

@@ -1,5 +1,7 @@
 #include "sph/mps/settings.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -96,6 +98,12 @@ void Settings::validate() const {
        "0 (off) or above 0.5 and below 1 (default 0.75)");
   need(wall_collision_restitution >= 0 && wall_collision_restitution <= 1, "wall_collision_restitution",
        wall_collision_restitution, "out of range", "0 to 1 (default 0)");
+  need(std::isfinite(gate_lift_speed) && gate_lift_speed >= 0, "gate_lift_speed", gate_lift_speed,
+       "not a speed", ">= 0 m/s (0: the gate stays)");
+  need(std::isfinite(gate_lift_distance) && gate_lift_distance >= 0, "gate_lift_distance", gate_lift_distance,
+       "not a distance", ">= 0 m");
 }
+
+double Settings::gate_rise(double t) const { return std::min(gate_lift_speed * t, gate_lift_distance); }
 
 }  // namespace sph::mps

@@ -107,8 +107,9 @@ void Step::list_neighbours() {
 void Step::initialise() {
   ParticleSet& p = model_.particles;
   impl_->sorted.reserve(p);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] != kMoving) p.vx[i] = p.vy[i] = 0.0;  // walls are fixed
+  const double* gate = p.field(model_.gate).data();
+  for (std::size_t i = 0; i < p.size(); ++i)  // walls are fixed; the gate keeps its (checkpointed) velocity
+    if (p.kind[i] != kMoving && gate[i] == 0.0) p.vx[i] = p.vy[i] = 0.0;
   if (model_.state.rates_valid) relist_candidates_at_stored_positions();  // a resumed run
   list_neighbours();
   viscosities();  // mu of the current state, for the first time step
@@ -217,11 +218,17 @@ void Step::predict(double dt) {
     impl_->fx[i] = terms::predicted_velocity(p.vx[i], dt, rho, bx, v.x, g.x, alpha);
     impl_->fy[i] = terms::predicted_velocity(p.vy[i], dt, rho, by, v.y, g.y, alpha);
   }
+  const double* gate = p.field(model_.gate).data();
+  const double rise = gate_rise(dt);
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
     xs[i] = p.x[i];
     ys[i] = p.y[i];
+    if (gate[i] != 0.0) {  // the gate is at its new height at r* and stays there
+      p.vy[i] = rise / dt;
+      p.y[i] += rise;
+    }
     if (p.kind[i] != kMoving) continue;
     p.vx[i] = impl_->fx[i];
     p.vy[i] = impl_->fy[i];
@@ -261,6 +268,7 @@ void Step::correct(double dt) {
   const Settings& st = model_.settings;
   const double* xs = p.field(impl_->x_start).data();
   const double* ys = p.field(impl_->y_start).data();
+  const double* gate = p.field(model_.gate).data();
   impl_->fx.assign(p.size(), 0.0);
   impl_->fy.assign(p.size(), 0.0);
   const auto n = static_cast<Index>(p.size());
@@ -275,9 +283,9 @@ void Step::correct(double dt) {
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    if (p.kind[i] != kMoving) {
+    if (p.kind[i] != kMoving) {  // walls back to r^m; the gate at its new height (predict)
       p.x[i] = xs[i];
-      p.y[i] = ys[i];
+      if (gate[i] == 0.0) p.y[i] = ys[i];
       continue;
     }
     p.vx[i] += impl_->fx[i];
@@ -308,7 +316,7 @@ void Step::collide_with_walls(double dt) {
       if (p.kind[j] == kMoving || r2 == 0.0) return;  // for_each_within passes r2 < d_c^2 only
       const double r = std::sqrt(r2);
       const double ex = dx / r, ey = dy / r;  // from j to i (dx = x_i - x_j)
-      const double vn = vx * ex + vy * ey;
+      const double vn = (vx - p.vx[j]) * ex + (vy - p.vy[j]) * ey;  // relative to the wall particle (the gate moves)
       if (vn >= 0.0) return;
       vx -= kick * vn * ex;
       vy -= kick * vn * ey;
@@ -332,6 +340,12 @@ void Step::advance(double dt) {
   model_.state.step += 1;
 }
 
+// How far the gate rises over the next dt [m].
+double Step::gate_rise(double dt) const {
+  const Settings& st = model_.settings;
+  return st.gate_rise(model_.state.time + dt) - st.gate_rise(model_.state.time);
+}
+
 double Step::stable_time_step() const {
   const ParticleSet& p = model_.particles;
   const Settings& st = model_.settings;
@@ -345,6 +359,7 @@ double Step::stable_time_step() const {
     u2 = std::max(u2, p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
     mu_max = std::max(mu_max, mu[i]);
   }
+  if (st.gate_rise(model_.state.time) < st.gate_lift_distance) u2 = std::max(u2, st.gate_lift_speed * st.gate_lift_speed);
   return terms::time_step(st.cfl, st.particle_spacing, st.sound_speed, std::sqrt(u2), st.rest_density, mu_max);
 }
 

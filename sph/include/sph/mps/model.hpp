@@ -37,6 +37,7 @@ struct Model {
   RunState state;
   Fields fields;
   FieldId dummy;  // 1 for the dummy wall particles (number density only), else 0 (checkpointed)
+  FieldId gate;  // 1 for the particles of the gate (add_gate), else 0 (checkpointed)
 
   Arrays arrays() { return Arrays(particles, fields); }
   double particle_mass() const { return settings.rest_density * settings.particle_spacing * settings.particle_spacing; }
@@ -51,5 +52,13 @@ std::size_t add_block(Model& model, double x_min, double y_min, double x_max, do
 // on their own number density); the outer layers are dummy particles (number density and viscous term only,
 // pressure 0, out of the pressure gradient). Returns the count of all of them.
 std::size_t add_box(Model& model, double x_min, double x_max, double y_min, double height, std::uint16_t material);
+
+// A gate: fixed wall particles in a vertical slab ceil(r_e/dx) spacings thick from x_min to the right, from y_min up
+// `height`, on the lattice of the blocks; its two faces are wall particles (EOS pressure), the layers between them
+// dummy particles, so that material on either side sees a full neighbourhood. It rises as settings.gate_rise says
+// (the stepper moves it; no-slip: its velocity enters the viscous sums). Returns the count.
+std::size_t add_gate(Model& model, double x_min, double y_min, double height, std::uint16_t material);
+// The gate's thickness [m] (ceil(r_e/dx) spacings).
+double gate_thickness(const Settings& s);
 
 }  // namespace sph::mps

@@ -91,6 +91,13 @@ struct Settings : EngineSettings {
   // all particles (distance 0.5 dx, coefficient 0.5 [X], seed 2.13).
   double wall_collision_distance = 0.75;
   double wall_collision_restitution = 0.0;  // fully inelastic: the code lineage's coefficient 0.5 = (1 + e)/2 [I]
+  // The gate (add_gate) rises at gate_lift_speed [m/s] from t = 0 until it has risen gate_lift_distance [m], then
+  // stays there; speed 0: it stays where it is. The seed's collapse gate is "lifted vertically and quickly at speed
+  // v_g", the value not given (A12: a few m/s).
+  double gate_lift_speed = 0.0;
+  double gate_lift_distance = 0.0;
+  // How far the gate has risen at time t [m]: min(gate_lift_speed t, gate_lift_distance).
+  double gate_rise(double t) const;
   // The engine's `cfl` (default 0.2) is the C_r of eq. 30 (the seed: 0.1-0.25); allowed (0, 1] here.
 
   double effective_radius() const { return re_over_dx * particle_spacing; }  // r_e [m]

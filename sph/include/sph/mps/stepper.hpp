@@ -10,8 +10,9 @@
 //   g  u^{m+1} = u* - alpha (dt/rho0) <grad p>^{m+1} (eqs. 27, 29)
 //   h  r^{m+1} = r^m + u^{m+1} dt (A24)
 //   i  collision with the wall particles: a moving particle closer than wall_collision_distance dx to a wall or
-//      dummy particle and approaching it loses (1 + e) times its normal velocity towards it (docs/mps.md, S7)
-// Wall particles (kind wall) are fixed, at zero velocity (no-slip); the layer next to the flow carries the EOS
+//      dummy particle and approaching it (relative to its velocity) loses (1 + e) times its normal velocity towards it (docs/mps.md, S7)
+// Wall particles (kind wall) are fixed, at zero velocity (no-slip), but for the gate's, which rise as
+// Settings::gate_rise says (at r* and r^{m+1} at the new height, their velocity the rise over dt); the layer next to the flow carries the EOS
 // pressure of its own number density, the outer (dummy) layers only complete the number density and the viscous
 // sums (pressure 0, out of the pressure gradient). docs/mps.md gives the decisions.
 // Neighbour lists: every pass reads the list of the pairs within r_e at the current positions with their weights
@@ -38,7 +39,8 @@ class Step : public Stepper {
   Step& operator=(const Step&) = delete;
 
   void initialise() override;
-  // eq. 30: C_r min(dx/(c0 + |u|max), rho0 dx^2/(2 d mu_max)), |u|max and mu_max over the moving particles.
+  // eq. 30: C_r min(dx/(c0 + |u|max), rho0 dx^2/(2 d mu_max)), |u|max and mu_max over the moving particles (and
+  // |u|max at least the gate's speed while it rises).
   double stable_time_step() const override;
   void advance(double dt) override;
   Energies energies() const override;
@@ -64,6 +66,7 @@ class Step : public Stepper {
   void correct(double dt);
   void collide_with_walls(double dt);
   Vector2 pressure_gradient(std::size_t i, const double* p) const;
+  double gate_rise(double dt) const;
   double gravity_x() const;
   double gravity_y() const;
 
