@@ -94,6 +94,9 @@ const BadScene bad_scenes[] = {
     {"mps_unknown_material_type.json", "check",
      "analyses.mps.materials[0].type: expected \"granular\" or \"water\", got \"clay\""},
     {"mps_viscosity_cap_zero.json", "check", "analyses.mps.viscosity_cap_Pa_s"},
+    {"mps_gate_overlaps_block.json", "check",
+     "analyses.mps.gate.x_m: the gate from 0.09 to 0.1 m overlaps blocks[0]"},
+    {"mps_gate_negative_speed.json", "check", "analyses.mps.gate.lift_speed_m_s: must be > 0"},
     {"mps_unknown_effective_pressure.json", "check",
      "analyses.mps.effective_pressure: expected \"smoothed\" or \"hydrostatic\", got \"lithostatic\""},
     // Valid on its own; only the search itself finds that the limits admit no slip circle.
@@ -442,4 +445,43 @@ TEST_CASE("sphslope run on an mps scene writes the mps block and monitors.csv", 
         Approx(deposit["wall_height_m"]["end"].get<double>()).margin(1e-6));
   CHECK(again["monitors"]["rows"] == mps["monitors"]["rows"]);
   CHECK(again["max_speed_m_s"].get<double>() == Approx(mps["max_speed_m_s"].get<double>()).margin(1e-9));
+}
+
+// cases/mps_dry_collapse_gate.json at dx = 10 mm to 0.2 s, once with its gate lifted at 0.5 m/s instead of 2 m/s and
+// once without the gate: the report echoes the gate (the tank's height as its travel), the wall particles include
+// its 4 x 12, and the slow gate holds the front back (the stepper's test measures 9 % at 0.2 s).
+TEST_CASE("sphslope run on an mps scene with a gate builds it, echoes it and holds the front back", "[cli][mps]") {
+  TemporaryFolder folder("mps_gate");
+  std::ifstream in(source_path("cases/mps_dry_collapse_gate.json"));
+  nlohmann::json scene = nlohmann::json::parse(in);
+  nlohmann::json& mps = scene["analyses"]["mps"];
+  mps["particle_spacing_m"] = 0.01;
+  mps["end_time_s"] = 0.2;
+  mps["output_interval_s"] = 0.0;
+  mps["gate"]["lift_speed_m_s"] = 0.5;
+  auto run = [&](const std::string& name) {
+    const fs::path file = folder.path / (name + ".json");
+    std::ofstream(file) << scene.dump();
+    const fs::path out = folder.path / name;
+    const ProgramRun result = run_program("run " + quoted(file.string()) + " -o " + quoted(out.string()));
+    INFO(result.output);
+    REQUIRE(result.status == 0);
+    std::ifstream report_file(out / "report.json");
+    return nlohmann::json::parse(report_file)["mps"];
+  };
+  const nlohmann::json gated = run("gated");
+  mps.erase("gate");
+  const nlohmann::json released = run("released");
+  REQUIRE(gated["status"] == "ok");
+  REQUIRE(released["status"] == "ok");
+  CHECK(gated["gate"]["x_m"].get<double>() == Approx(0.1));
+  CHECK(gated["gate"]["lift_speed_m_s"].get<double>() == Approx(0.5));
+  CHECK(gated["gate"]["lift_distance_m"].get<double>() == Approx(0.12));
+  CHECK_FALSE(released.contains("gate"));
+  CHECK(gated["particles"]["wall"].get<int>() == released["particles"]["wall"].get<int>() + 4 * 12);
+  const double gated_front = gated["deposit"]["front_x_m"]["end"].get<double>();
+  const double released_front = released["deposit"]["front_x_m"]["end"].get<double>();
+  INFO("front at 0.2 s: gated " << gated_front << " m, released " << released_front << " m");
+  CHECK(gated_front < 0.95 * released_front);
+  CHECK(gated["mass_kg_per_m"]["end"].get<double>() == Approx(released["mass_kg_per_m"]["end"].get<double>()));
 }

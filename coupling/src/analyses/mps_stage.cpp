@@ -32,6 +32,7 @@ sph::mps::Model build_mps_model(const MpsAnalysis& a) {
   }
   // the walls' material index only labels them (their viscosity is never used)
   sph::mps::add_box(model, a.tank.x_min, a.tank.x_max, a.tank.y_min, a.tank.height, 0);
+  if (a.gate_x) sph::mps::add_gate(model, *a.gate_x, a.tank.y_min, a.tank.height, 0);
   return model;
 }
 
@@ -93,6 +94,10 @@ MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
   result.effective_radius = a.settings.effective_radius();
   result.sound_speed = a.settings.sound_speed;
   result.viscosity_cap = a.settings.viscosity_cap;
+  result.gate = a.gate_x.has_value();
+  result.gate_x = a.gate_x.value_or(0.0);
+  result.gate_lift_speed = a.settings.gate_lift_speed;
+  result.gate_lift_distance = a.settings.gate_lift_distance;
   result.moving_particles = model.particles.count(sph::ParticleKind::soil);
   result.wall_particles = model.particles.size() - result.moving_particles;
   result.mass_start = moving_mass(model.particles);

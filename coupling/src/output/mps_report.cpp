@@ -16,6 +16,8 @@ nlohmann::json mps_report(const MpsStageResult& r) {
   j["effective_radius_m"] = r.effective_radius;
   j["sound_speed_m_s"] = r.sound_speed;
   j["viscosity_cap_Pa_s"] = r.viscosity_cap;
+  if (r.gate)
+    j["gate"] = {{"x_m", r.gate_x}, {"lift_speed_m_s", r.gate_lift_speed}, {"lift_distance_m", r.gate_lift_distance}};
   j["particles"] = {{"moving", r.moving_particles}, {"wall", r.wall_particles}};
   j["steps"] = r.summary.steps;
   j["simulated_time_s"] = r.summary.simulated_time;

@@ -106,6 +106,37 @@ void read_block_material(JsonReader& b, const std::vector<MpsMaterial>& material
   if (name) b.diagnostics().error(b.path_of("material"), "unknown material \"" + *name + "\" (known: " + known + ")");
 }
 
+// analyses.mps.gate {x_m, lift_speed_m_s}: a gate of the tank's height and r_e thick from x_m to the right, inside
+// the tank and clear of every block, lifted from t = 0 at the speed until it has risen the tank's height.
+void read_gate(JsonReader& mps, MpsAnalysis& a) {
+  auto g = mps.object("gate", Need::optional, "an object {x_m, lift_speed_m_s}");
+  if (!g) return;
+  const auto x = g->number("x_m", Need::required);
+  const auto speed = g->number("lift_speed_m_s", Need::required, Bounds::positive());
+  g->finish();
+  if (!x || !speed) return;
+  const double thickness = sph::mps::gate_thickness(a.settings);
+  const double x_max = *x + thickness;
+  if (*x < a.tank.x_min || x_max > a.tank.x_max) {
+    g->diagnostics().error(g->path_of("x_m"), "the gate (" + format_number(thickness) +
+                                                  " m thick, ceil(r_e/dx) spacings, from x_m to the right) must lie "
+                                                  "inside the tank: x_m from " + format_number(a.tank.x_min) +
+                                                  " to " + format_number(a.tank.x_max - thickness) + " m");
+    return;
+  }
+  for (std::size_t k = 0; k < a.blocks.size(); ++k)
+    if (a.blocks[k].x_max > *x + 1e-9 && a.blocks[k].x_min < x_max - 1e-9) {
+      g->diagnostics().error(g->path_of("x_m"), "the gate from " + format_number(*x) + " to " + format_number(x_max) +
+                                                    " m overlaps blocks[" + std::to_string(k) +
+                                                    "]; put it at a block's face (its thickness is ceil(r_e/dx) "
+                                                    "spacings)");
+      return;
+    }
+  a.gate_x = *x;
+  a.settings.gate_lift_speed = *speed;
+  a.settings.gate_lift_distance = a.tank.height;
+}
+
 // A run planned to need more than max_steps time steps is refused before it starts, with the figures.
 void refuse_too_many_steps(JsonReader& r, const MpsAnalysis& a) {
   const MpsPlan plan = plan_mps(a);
@@ -137,8 +168,8 @@ MpsPlan plan_mps(const MpsAnalysis& a) {
     const bool granular = m.type == sph::mps::Material::Type::granular;
     plan.viscosity = std::max(plan.viscosity, granular ? s.viscosity_cap : m.viscosity);
   }
-  plan.time_step = sph::mps::terms::time_step(s.cfl, s.particle_spacing, s.sound_speed, 0.0, s.rest_density,
-                                              plan.viscosity);
+  plan.time_step = sph::mps::terms::time_step(s.cfl, s.particle_spacing, s.sound_speed, s.gate_lift_speed,
+                                              s.rest_density, plan.viscosity);
   plan.viscous_limit = plan.time_step < s.cfl * s.particle_spacing / s.sound_speed;
   plan.planned_steps = s.end_time / plan.time_step;
   return plan;
@@ -151,6 +182,7 @@ MpsAnalysis read_mps_analysis(JsonReader& mps) {
   read_tank(mps, a.tank);
   read_tank_rectangles(mps, "blocks", a.tank, a.blocks,
                        [&](JsonReader& b) { read_block_material(b, a.materials, a); });
+  read_gate(mps, a);
   read_tank_monitors(mps, a.monitors, true);
   a.max_steps = mps.number_or("max_steps", a.max_steps, Bounds::at_least(1.0));
   mps.finish();

@@ -425,6 +425,9 @@ std::string summarize(const Scene& scene) {
     out << "MPS tank x " << format_number(m.tank.x_min) << " to " << format_number(m.tank.x_max) << " m, "
         << m.blocks.size() << " block" << (m.blocks.size() == 1 ? "" : "s") << " of " << m.materials.size()
         << " material" << (m.materials.size() == 1 ? "" : "s");
+    if (m.gate_x)
+      out << ", a gate at x = " << format_number(*m.gate_x) << " m lifted at "
+          << format_number(m.settings.gate_lift_speed) << " m/s";
     if (scene.section || scene.body_count) out << "; ";
   }
   if (scene.body_count) {

@@ -16,6 +16,8 @@ struct MpsStageResult {
   std::string regularisation, interaction_viscosity, effective_pressure, stress_divergence;  // the settings' keys
   double particle_spacing = 0, effective_radius = 0;  // dx, r_e [m]
   double sound_speed = 0, viscosity_cap = 0;  // c0 [m/s], mu_cap [Pa s]
+  bool gate = false;  // analyses.mps.gate given: its face [m], lifting speed [m/s] and travel [m]
+  double gate_x = 0, gate_lift_speed = 0, gate_lift_distance = 0;
   std::size_t moving_particles = 0, wall_particles = 0;
   double mass_start = 0, mass_end = 0;  // [kg/m] of the moving particles
   // The deposit: its front (the farthest particle still within 1.5 dx of the next one, plus dx/2) and its height

@@ -4,6 +4,7 @@
 // Every key, unit and default is in docs/scene-format.md; the defaults come from sph::mps::Settings and
 // sph::mps::HerschelBulkley. Single phase for now: every particle has the rest density rest_density_kg_m3.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct MpsAnalysis {
   Tank tank;
   std::vector<TankRectangle> blocks;  // material at rest at t = 0 (released at once: no gate)
   std::vector<std::uint16_t> block_material;  // index into materials, one per block
+  std::optional<double> gate_x;  // the gate's face on the blocks' side [m] (absent: material released at once)
   TankMonitors monitors;
   double max_steps = 5.0e6;  // a run planned to need more time steps is refused before it starts
 };
