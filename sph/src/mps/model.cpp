@@ -73,15 +73,15 @@ std::size_t add_box(Model& model, double x_min, double x_max, double y_min, doub
   return count;
 }
 
-double gate_thickness(const Settings& s) {
-  return std::ceil(s.effective_radius() / s.particle_spacing - 1e-9) * s.particle_spacing;
+double gate_thickness(const Settings& s) {  // as add_box's walls: the layers that cover 2h = r_e
+  return wall_layers_for(s.particle_spacing, 0.5 * s.effective_radius()) * s.particle_spacing;
 }
 
 std::size_t add_gate(Model& model, double x_min, double y_min, double height, std::uint16_t material) {
   if (material >= model.materials.size()) throw std::invalid_argument("mps add_gate: no such material");
   const Settings& st = model.settings;
   const double dx = st.particle_spacing;
-  const auto layers = static_cast<std::size_t>(std::llround(gate_thickness(st) / dx));
+  const auto layers = static_cast<std::size_t>(wall_layers_for(dx, 0.5 * st.effective_radius()));
   const auto rows = static_cast<std::size_t>(std::llround(height / dx));
   if (rows == 0) throw std::invalid_argument("mps add_gate: height below one spacing");
   ParticleSet& p = model.particles;

@@ -1,7 +1,6 @@
 #include "sph/mps/settings.hpp"
 
 #include <algorithm>
-
 #include <cmath>
 #include <sstream>
 #include <stdexcept>

@@ -359,7 +359,8 @@ double Step::stable_time_step() const {
     u2 = std::max(u2, p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
     mu_max = std::max(mu_max, mu[i]);
   }
-  if (st.gate_rise(model_.state.time) < st.gate_lift_distance) u2 = std::max(u2, st.gate_lift_speed * st.gate_lift_speed);
+  if (st.gate_rise(model_.state.time) < st.gate_lift_distance)  // the gate still rises
+    u2 = std::max(u2, st.gate_lift_speed * st.gate_lift_speed);
   return terms::time_step(st.cfl, st.particle_spacing, st.sound_speed, std::sqrt(u2), st.rest_density, mu_max);
 }
 

@@ -137,16 +137,8 @@ void for_each_listed_neighbour(const NeighbourList& list, const ParticleSet& set
 template <class PairValue>
 void NeighbourList::build_from(const NeighbourList& wider, const ParticleSet& set, double radius,
                                PairValue&& pair_value) {
-  const double r2_max = radius * radius;
   fill(set.size(), radius, pair_value, [&](std::size_t i, auto&& emit) {
-    const double xi = set.x[i], yi = set.y[i];
-    const double* x = set.x.data();
-    const double* y = set.y.data();
-    const std::uint32_t* j = wider.neighbours(i);
-    for (std::size_t k = 0, n = wider.count(i); k < n; ++k) {
-      const double dx = xi - x[j[k]], dy = yi - y[j[k]], r2 = dx * dx + dy * dy;
-      if (r2 < r2_max) emit(std::size_t{j[k]}, r2);
-    }
+    for_each_listed_neighbour(wider, set, i, radius, [&](std::size_t j, double, double, double r2) { emit(j, r2); });
   });
 }
 

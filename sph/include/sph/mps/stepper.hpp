@@ -10,11 +10,12 @@
 //   g  u^{m+1} = u* - alpha (dt/rho0) <grad p>^{m+1} (eqs. 27, 29)
 //   h  r^{m+1} = r^m + u^{m+1} dt (A24)
 //   i  collision with the wall particles: a moving particle closer than wall_collision_distance dx to a wall or
-//      dummy particle and approaching it (relative to its velocity) loses (1 + e) times its normal velocity towards it (docs/mps.md, S7)
+//      dummy particle and approaching it (relative to its velocity) loses (1 + e) times its normal velocity towards
+//      it (docs/mps.md, S7)
 // Wall particles (kind wall) are fixed, at zero velocity (no-slip), but for the gate's, which rise as
-// Settings::gate_rise says (at r* and r^{m+1} at the new height, their velocity the rise over dt); the layer next to the flow carries the EOS
-// pressure of its own number density, the outer (dummy) layers only complete the number density and the viscous
-// sums (pressure 0, out of the pressure gradient). docs/mps.md gives the decisions.
+// Settings::gate_rise says (at r* and r^{m+1} at the new height, their velocity the rise over dt); the layer next to
+// the flow carries the EOS pressure of its own number density, the outer (dummy) layers only complete the number
+// density and the viscous sums (pressure 0, out of the pressure gradient). docs/mps.md gives the decisions.
 // Neighbour lists: every pass reads the list of the pairs within r_e at the current positions with their weights
 // w_ij, refreshed at r^m and at r* from a list of candidates within r_e + s (s = list_skin dx). The candidates are
 // listed again, after a sort by cells of side r_e + s, only when a particle has moved more than s/2 since they
