@@ -504,7 +504,7 @@ TEST_CASE("mps fields register once in the particle set", "[mps]") {
   set.add(0.0, 0.0, 1.0, 1500.0, 0, sph::ParticleKind::soil);
   const sph::mps::Fields a = sph::mps::Fields::register_in(set);
   const sph::mps::Fields b = sph::mps::Fields::register_in(set);
-  CHECK(set.field_count() == 7);  // pressure, the two listing positions and four derived fields
+  CHECK(set.field_count() == 9);  // pressure, the two listing positions and six derived fields
   CHECK(a.pressure == b.pressure);
   CHECK(a.x_listed == b.x_listed);
   CHECK(set.spec(a.x_listed).checkpoint);

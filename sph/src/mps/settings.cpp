@@ -39,6 +39,14 @@ const char* effective_pressure_key(EffectivePressure p) {
   return p == EffectivePressure::smoothed ? "smoothed" : "hydrostatic";
 }
 
+PorePressure pore_pressure_from(const std::string& key) {
+  if (key == "none") return PorePressure::none;
+  if (key == "hydrostatic") return PorePressure::hydrostatic;
+  throw std::invalid_argument("mps pore pressure '" + key + "': expected \"none\" or \"hydrostatic\"");
+}
+
+const char* pore_pressure_key(PorePressure p) { return p == PorePressure::none ? "none" : "hydrostatic"; }
+
 StressDivergence stress_divergence_from(const std::string& key) {
   if (key == "direct") return StressDivergence::direct;
   if (key == "indirect") return StressDivergence::indirect;

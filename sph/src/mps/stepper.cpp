@@ -30,6 +30,12 @@ struct Step::Impl {
   std::vector<double> fx, fy;  // the non-pressure forces of the predictor [N/m^3]
   std::vector<double> weight_above;  // the hydrostatic p' of every particle [Pa] (effective_pressure hydrostatic)
   std::vector<double> sxx, syy, sxy;  // each particle's viscous stress 2 mu D [Pa] (stress_divergence indirect)
+  std::vector<double> density;  // each material's reference density rho_i [kg/m^3] (seed eq. 26)
+  std::vector<double> grain_fraction;  // each material's phi0 (water 0)
+  std::vector<std::uint8_t> granular;  // 1 for each granular material
+  bool mixture = false;  // materials of different densities: the EOS takes the mixture density <rho>
+  double pore_density = 0;  // rho_w of the pore pressure (PorePressure::hydrostatic), else 0
+  std::vector<double> depth;  // each particle's depth below the moving material's surface [m] (hydrostatic p', pores)
 };
 
 Step::Step(Model& model) : model_(model), impl_(std::make_unique<Impl>()) {
@@ -37,6 +43,19 @@ Step::Step(Model& model) : model_(model), impl_(std::make_unique<Impl>()) {
   lattice_ = lattice_constants(model.settings.particle_spacing, model.settings.effective_radius());
   impl_->x_start = model.particles.add_field({"mps_x_start", false, false});
   impl_->y_start = model.particles.add_field({"mps_y_start", false, false});
+  for (std::size_t m = 0; m < model.materials.size(); ++m) {
+    impl_->density.push_back(model.density_of(m));
+    impl_->grain_fraction.push_back(model.grain_fraction_of(m));
+    impl_->granular.push_back(model.materials[m].type == Material::Type::granular ? 1 : 0);
+  }
+  impl_->mixture = !model.single_density();
+  if (model.settings.pore_pressure == PorePressure::hydrostatic)
+    impl_->pore_density = model.density_of(model.water_material().value());
+}
+
+// A particle's material index, clamped to the table (a set built elsewhere may carry larger labels on its walls).
+std::size_t Step::material_of(std::size_t i) const {
+  return std::min<std::size_t>(model_.particles.material[i], impl_->density.size() - 1);
 }
 
 Step::~Step() = default;
@@ -116,20 +135,34 @@ void Step::initialise() {
   model_.state.rates_valid = true;  // the carried state is p^m (checkpointed) and the positions and velocities
 }
 
-// [M25] with [M24] (eqs. 18-19), the hydrostatic p' of every particle: rho0 |g| (h + dx/2) below the moving
-// material's surface; 0 for a wall particle with no moving particle above it.
+// [M24] (eq. 19): every particle's depth below the highest moving particle's centre within dx in x [m].
+void Step::depths_below_surface() {
+  const ParticleSet& p = model_.particles;
+  std::vector<std::uint8_t> surface(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) surface[i] = p.kind[i] == kMoving ? 1 : 0;
+  impl_->depth = depth_below_surface(p, surface, model_.settings.particle_spacing);
+}
+
+// [M25] (eq. 18), the hydrostatic p' of every particle: rho_i |g| (h + dx/2) below the moving material's surface
+// (rho_i its material's density); 0 for a wall particle with no moving particle above it.
 void Step::hydrostatic_pressures() {
   const ParticleSet& p = model_.particles;
   const Settings& st = model_.settings;
-  std::vector<std::uint8_t> surface(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) surface[i] = p.kind[i] == kMoving ? 1 : 0;
+  const std::vector<double>& h = impl_->depth;
   std::vector<double>& w = impl_->weight_above;
-  w = depth_below_surface(p, surface, st.particle_spacing);
+  w.assign(p.size(), 0.0);
   const double g = std::hypot(gravity_x(), gravity_y());
   for (std::size_t i = 0; i < p.size(); ++i)
-    w[i] = p.kind[i] == kMoving || w[i] > 0
-               ? hydrostatic_pressure(st.rest_density, g, w[i] + 0.5 * st.particle_spacing)
+    w[i] = p.kind[i] == kMoving || h[i] > 0
+               ? hydrostatic_pressure(impl_->density[material_of(i)], g, h[i] + 0.5 * st.particle_spacing)
                : 0.0;
+}
+
+// A6, PorePressure::hydrostatic: rho_w |g| (h + dx/2) for a granular particle, else 0 [Pa].
+double Step::pore_pressure(std::size_t i) const {
+  if (impl_->pore_density == 0 || !impl_->granular[material_of(i)]) return 0.0;
+  const double g = std::hypot(gravity_x(), gravity_y());
+  return hydrostatic_pressure(impl_->pore_density, g, impl_->depth[i] + 0.5 * model_.settings.particle_spacing);
 }
 
 // Steps b and c at r^m: p' (Shepard, clamped >= 0, from p^m; or hydrostatic), then each particle's viscosity by
@@ -142,6 +175,7 @@ void Step::viscosities() {
   const auto n = static_cast<Index>(p.size());
   const bool hydrostatic = st.effective_pressure == EffectivePressure::hydrostatic;
   const bool indirect = st.stress_divergence == StressDivergence::indirect;
+  if (hydrostatic || impl_->pore_density > 0) depths_below_surface();
   if (hydrostatic) hydrostatic_pressures();
   if (indirect) {
     impl_->sxx.assign(p.size(), 0.0);
@@ -151,9 +185,9 @@ void Step::viscosities() {
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    a.smoothed_pressure[i] =
-        hydrostatic ? impl_->weight_above[i] : std::max(smoothed_pressure(nb, i, a.pressure), 0.0);
-    const Material& mat = model_.materials[std::min<std::size_t>(p.material[i], model_.materials.size() - 1)];
+    const double total = hydrostatic ? impl_->weight_above[i] : smoothed_pressure(nb, i, a.pressure);
+    a.smoothed_pressure[i] = std::max(total - pore_pressure(i), 0.0);
+    const Material& mat = model_.materials[material_of(i)];
     const bool water = mat.type == Material::Type::water;
     if (water && !indirect) {
       a.viscosity[i] = mat.viscosity;
@@ -199,8 +233,7 @@ void Step::predict(double dt) {
   const Arrays a = model_.arrays();
   const Settings& st = model_.settings;
   const Neighbourhood nb = neighbourhood();
-  const double rho = st.rest_density, alpha = st.pressure_split;
-  const double bx = rho * gravity_x(), by = rho * gravity_y();
+  const double alpha = st.pressure_split, gx = gravity_x(), gy = gravity_y();
   double* xs = p.field(impl_->x_start).data();
   double* ys = p.field(impl_->y_start).data();
   impl_->fx.assign(p.size(), 0.0);
@@ -215,8 +248,9 @@ void Step::predict(double dt) {
             ? stress_divergence(nb, i, impl_->sxx.data(), impl_->syy.data(), impl_->sxy.data(), lattice_.n0)
             : viscous_force(nb, i, p.vx.data(), p.vy.data(), a.viscosity, lattice_, st.interaction_viscosity);
     const Vector2 g = pressure_gradient(i, a.pressure);
-    impl_->fx[i] = terms::predicted_velocity(p.vx[i], dt, rho, bx, v.x, g.x, alpha);
-    impl_->fy[i] = terms::predicted_velocity(p.vy[i], dt, rho, by, v.y, g.y, alpha);
+    const double rho = impl_->density[material_of(i)];  // rho_i, the phase's density (eqs. 25-26)
+    impl_->fx[i] = terms::predicted_velocity(p.vx[i], dt, rho, rho * gx, v.x, g.x, alpha);
+    impl_->fy[i] = terms::predicted_velocity(p.vy[i], dt, rho, rho * gy, v.y, g.y, alpha);
   }
   const double* gate = p.field(model_.gate).data();
   const double rise = gate_rise(dt);
@@ -247,6 +281,7 @@ void Step::equation_of_state() {
   const double* dummy = p.field(model_.dummy).data();
   const double n0 = lattice_.n0;
   number_densities(nb, a.number_density);
+  mixture_densities();
   const auto count = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < count; ++k) {
@@ -255,9 +290,43 @@ void Step::equation_of_state() {
     const bool surface = terms::is_free_surface(n, n0, st.surface_beta);
     a.free_surface[i] = surface ? 1.0 : 0.0;
     // negative EOS pressure is clipped to 0 (the code lineage's choice; docs/mps.md decision S2)
-    const double eos = terms::pressure(n, n0, st.rest_density, st.sound_speed, st.tait_gamma, st.surface_beta);
+    const double rho = a.mixture_density[i];
+    const double eos = terms::pressure(n, n0, rho, st.sound_speed, st.tait_gamma, st.surface_beta);
     a.pressure[i] = dummy[i] != 0.0 ? 0.0 : std::max(eos, 0.0);
-    p.rho[i] = terms::density_from_number_density(st.rest_density, n, n0);
+    p.rho[i] = terms::density_from_number_density(rho, n, n0);
+  }
+}
+
+// Seed 2.10 at r*: the mixture density <rho>_i = sum rho_j w_ij / sum w_ij and the volume fraction
+// phi_i = sum phi0_j w_ij / sum w_ij over the moving particles j, a moving i itself with w = 1; a wall particle with
+// no moving neighbour keeps its material's values. With one density (the single-phase model) <rho>_i is the
+// material's density exactly and phi_i its phi0.
+void Step::mixture_densities() {
+  const ParticleSet& p = model_.particles;
+  const Arrays a = model_.arrays();
+  const Neighbourhood nb = neighbourhood();
+  const Impl& im = *impl_;
+  const auto n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const std::size_t m = material_of(i);
+    a.mixture_density[i] = im.density[m];
+    a.volume_fraction[i] = im.grain_fraction[m];
+    if (!im.mixture) continue;
+    const bool moving = p.kind[i] == kMoving;
+    double sum_w = moving ? 1.0 : 0.0;
+    double rho = moving ? im.density[m] : 0.0, phi = moving ? im.grain_fraction[m] : 0.0;
+    for_each_weighted_neighbour(nb, i, [&](std::size_t j, double, double, double, double w) {
+      if (p.kind[j] != kMoving) return;
+      const std::size_t mj = material_of(j);
+      sum_w += w;
+      rho += im.density[mj] * w;
+      phi += im.grain_fraction[mj] * w;
+    });
+    if (sum_w == 0.0) continue;
+    a.mixture_density[i] = rho / sum_w;
+    a.volume_fraction[i] = phi / sum_w;
   }
 }
 
@@ -277,8 +346,9 @@ void Step::correct(double dt) {
     const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] != kMoving) continue;
     const Vector2 g = pressure_gradient(i, a.pressure);
-    impl_->fx[i] = terms::velocity_correction(dt, st.rest_density, g.x, st.pressure_split);
-    impl_->fy[i] = terms::velocity_correction(dt, st.rest_density, g.y, st.pressure_split);
+    const double rho = impl_->density[material_of(i)];
+    impl_->fx[i] = terms::velocity_correction(dt, rho, g.x, st.pressure_split);
+    impl_->fy[i] = terms::velocity_correction(dt, rho, g.y, st.pressure_split);
   }
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
@@ -350,18 +420,21 @@ double Step::stable_time_step() const {
   const ParticleSet& p = model_.particles;
   const Settings& st = model_.settings;
   const double* mu = p.field(model_.fields.viscosity).data();
-  double u2 = 0, mu_max = 0;
+  double u2 = 0, mu_max = 0;  // mu_max: the largest mu_i rho0 / rho_i, the kinematic viscosity times rho0
+  const double rho0 = st.rest_density;
+  const Impl& im = *impl_;
   const auto n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static) reduction(max : u2, mu_max)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] != kMoving) continue;
     u2 = std::max(u2, p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
-    mu_max = std::max(mu_max, mu[i]);
+    const double rho = im.density[material_of(i)];
+    mu_max = std::max(mu_max, rho == rho0 ? mu[i] : mu[i] * (rho0 / rho));
   }
   if (st.gate_rise(model_.state.time) < st.gate_lift_distance)  // the gate still rises
     u2 = std::max(u2, st.gate_lift_speed * st.gate_lift_speed);
-  return terms::time_step(st.cfl, st.particle_spacing, st.sound_speed, std::sqrt(u2), st.rest_density, mu_max);
+  return terms::time_step(st.cfl, st.particle_spacing, st.sound_speed, std::sqrt(u2), rho0, mu_max);
 }
 
 Energies Step::energies() const { return moving_energies(model_.particles, model_.settings); }

@@ -16,13 +16,16 @@ struct Fields {
   FieldId smoothed_pressure;  // p' of the yield stress [Pa] (seed eq. 20, A4)
   FieldId viscosity;  // effective viscosity mu_i [Pa s] (seed eq. 16, capped)
   FieldId free_surface;  // 1 where n* <= beta n0 (pressure 0), else 0 (seed eq. 15)
+  // two phases (seed 2.10), at r*: the mixture density <rho> = sum rho_j w / sum w over the moving particles, i
+  // itself with w = 1 (the EOS prefactor) [kg/m^3], and the grains' volume fraction phi = sum phi0_j w / sum w [-]
+  FieldId mixture_density, volume_fraction;
 
   // Registers the block (or finds it, if already registered) in `set`.
   static Fields register_in(ParticleSet& set);
 };
 
 struct Arrays {
-  double *pressure, *number_density, *smoothed_pressure, *viscosity, *free_surface;
+  double *pressure, *number_density, *smoothed_pressure, *viscosity, *free_surface, *mixture_density, *volume_fraction;
   Arrays(ParticleSet& set, const Fields& f);
 };
 

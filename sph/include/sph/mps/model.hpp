@@ -1,10 +1,12 @@
 #pragma once
 // A WC-MPS model (issue 12; docs/mps.md): the particle set (moving particles of kind 0, fixed wall particles of
 // kind 1, the outer wall layers marked as dummy particles), its run state, the settings, the materials and the MPS
-// state block; and the builders that fill it. Single phase: every particle has the settings' rest density rho0.
-// SI units, 2-D.
+// state block; and the builders that fill it. Each material is a phase with its own reference density (seed eq. 26:
+// water rho_f, sediment the bulk density rho_b); one material, or all of one density, is the single-phase model
+// with the settings' rest density rho0 unless the material sets its own. SI units, 2-D.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "sph/engine/particle_set.hpp"
@@ -21,6 +23,13 @@ struct Material {
   Type type = Type::water;
   double viscosity = 1.0e-3;  // [Pa s] constant viscosity of the water type (water at 20 C)
   HerschelBulkley granular;  // the regularised Herschel-Bulkley law of the granular type (rheology.hpp)
+  // The phase's reference density [kg/m^3] (seed eq. 26: rho_f for water, the bulk density
+  // rho_b = phi0 rho_g + (1 - phi0) rho_f for saturated sediment, phi0 rho_g for dry grains); 0: the settings'
+  // rest_density. It is the particles' mass over dx^2, the EOS prefactor and the rho_i of the momentum equation.
+  double density = 0.0;
+  // phi0, the grains' share of the volume (granular type; water 0): the volume fraction phi = sum phi0_j w / sum w
+  // written to the frames (seed 2.10). Default 0.6 (seed A12, A22: the dry collapse's packing).
+  double grain_volume_fraction = 0.6;
 
   static Material water(double mu = 1.0e-3);
   static Material granular_material(const HerschelBulkley& hb = {});
@@ -40,7 +49,18 @@ struct Model {
   FieldId gate;  // 1 for the particles of the gate (add_gate), else 0 (checkpointed)
 
   Arrays arrays() { return Arrays(particles, fields); }
-  double particle_mass() const { return settings.rest_density * settings.particle_spacing * settings.particle_spacing; }
+  // The reference density of material m [kg/m^3] (Material::density, or the settings' rest_density when 0).
+  double density_of(std::size_t m) const;
+  // phi0 of material m (0 for water).
+  double grain_fraction_of(std::size_t m) const;
+  // The first water material, if any (the pore water of PorePressure::hydrostatic).
+  std::optional<std::size_t> water_material() const;
+  // True when every material has the same reference density: the single-phase model (no mixture density).
+  bool single_density() const;
+  // The mass of a particle of material m [kg per m of depth]: its density times dx^2.
+  double particle_mass(std::size_t m) const {
+    return density_of(m) * settings.particle_spacing * settings.particle_spacing;
+  }
 };
 
 // Moving particles on the cell-centred lattice (anchor at the origin) inside [x_min, x_max] x [y_min, y_max], at

@@ -38,6 +38,17 @@ enum class EffectivePressure {
   hydrostatic,
 };
 
+// The pore pressure taken off p' for the granular particles (seed A6: the paper does not say how submerged
+// sediment is treated).
+enum class PorePressure {
+  none,  // "none" (default; the paper as printed): p' of the sediment is the total pressure
+  // "hydrostatic": p' - rho_w |g| (h + dx/2) clamped at 0 for the granular particles, h the depth of the particle's
+  // centre below the highest moving particle (water or sediment) within dx in x, rho_w the water material's density:
+  // the weight of the water column above and in the pores, so that a saturated bed carries its buoyant weight
+  // (rho_b - rho_w) g h. Needs a water material.
+  hydrostatic,
+};
+
 // The divergence of the viscous stress in the momentum equation (seed eqs. 22-23, Figs 10-11).
 enum class StressDivergence {
   // "direct" (default): eq. 22, the MPS Laplacian with the pair viscosity, (2d/(lambda n0)) sum mu_ij (u_j - u_i) w;
@@ -75,6 +86,7 @@ struct Settings : EngineSettings {
   double viscosity_cap = 200.0;
   Regularisation regularisation = Regularisation::consistent;  // A2
   EffectivePressure effective_pressure = EffectivePressure::smoothed;
+  PorePressure pore_pressure = PorePressure::none;  // A6
   StressDivergence stress_divergence = StressDivergence::direct;
   InteractionViscosity interaction_viscosity = InteractionViscosity::harmonic_mean;
   // alpha of eqs. 28-29 (A23): the share of the pressure force taken at the new time level, "typically 0.5"
@@ -113,6 +125,9 @@ const char* regularisation_key(Regularisation r);
 // "smoothed" / "hydrostatic". Throws std::invalid_argument on other names.
 EffectivePressure effective_pressure_from(const std::string& key);
 const char* effective_pressure_key(EffectivePressure p);
+// "none" / "hydrostatic". Throws std::invalid_argument on other names.
+PorePressure pore_pressure_from(const std::string& key);
+const char* pore_pressure_key(PorePressure p);
 // "direct" / "indirect". Throws std::invalid_argument on other names.
 StressDivergence stress_divergence_from(const std::string& key);
 const char* stress_divergence_key(StressDivergence s);

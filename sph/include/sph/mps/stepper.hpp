@@ -61,7 +61,11 @@ class Step : public Stepper {
   bool moved_beyond_half_skin() const;
   double skin() const;
   void viscosities();
+  void depths_below_surface();
   void hydrostatic_pressures();
+  double pore_pressure(std::size_t i) const;
+  void mixture_densities();
+  std::size_t material_of(std::size_t i) const;
   void predict(double dt);
   void equation_of_state();
   void correct(double dt);
