@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -97,6 +98,10 @@ const BadScene bad_scenes[] = {
     {"mps_gate_overlaps_block.json", "check",
      "analyses.mps.gate.x_m: the gate from 0.09 to 0.1 m overlaps blocks[0]"},
     {"mps_gate_negative_speed.json", "check", "analyses.mps.gate.lift_speed_m_s: must be > 0"},
+    {"mps_profile_after_end.json", "check", "analyses.mps.profiles.times_s[1]: must be in (0, 1] (got 1.5)"},
+    {"mps_pore_pressure_without_water.json", "check",
+     "analyses.mps.pore_pressure: \"hydrostatic\" takes the pore water's density from a material of type \"water\""},
+    {"mps_negative_density.json", "check", "analyses.mps.materials[1].density_kg_m3: must be > 0 (got -1324)"},
     {"mps_unknown_effective_pressure.json", "check",
      "analyses.mps.effective_pressure: expected \"smoothed\" or \"hydrostatic\", got \"lithostatic\""},
     // Valid on its own; only the search itself finds that the limits admit no slip circle.
@@ -484,4 +489,81 @@ TEST_CASE("sphslope run on an mps scene with a gate builds it, echoes it and hol
   INFO("front at 0.2 s: gated " << gated_front << " m, released " << released_front << " m");
   CHECK(gated_front < 0.95 * released_front);
   CHECK(gated["mass_kg_per_m"]["end"].get<double>() == Approx(released["mass_kg_per_m"]["end"].get<double>()));
+}
+
+// cases/mps_erodible_dam_break_fraccarollo.json at dx = 10 mm (1250 sediment and 1000 water particles) run to 0.3 s,
+// then continued to 0.5 s with --resume: the profile taken at 0.25 s before the stop is kept in profiles.csv, the
+// one at 0.5 s added. Each phase keeps its mass in the tank (none leaks through the walls); the front stays behind
+// Ritter's clear-water front 2 sqrt(g h0) t (an upper bound); the negative wave's quarter-depth point has moved
+// upstream but not past the head of the Ritter fan, sqrt(g h) t from the dam (at this spacing the reservoir's slosh
+// moves that point by up to 27 % of the fan's distance: docs/mps.md section 8); the bed at the dam is scoured by
+// more than one spacing (measured 12-13 mm).
+TEST_CASE("sphslope run on the erodible dam break writes profiles and the dam-break figures, and resumes",
+          "[cli][mps][e2e]") {
+  TemporaryFolder folder("mps_dam_break");
+  std::ifstream in(source_path("cases/mps_erodible_dam_break_fraccarollo.json"));
+  nlohmann::json scene = nlohmann::json::parse(in);
+  nlohmann::json& mps = scene["analyses"]["mps"];
+  mps["particle_spacing_m"] = 0.01;
+  mps["output_interval_s"] = 0.0;
+  mps["end_time_s"] = 0.3;
+  mps["profiles"]["times_s"] = {0.25, 0.5};
+  const fs::path first = folder.path / "first.json", file = folder.path / "dam_break.json";
+  std::ofstream(first) << scene.dump();
+  mps["end_time_s"] = 0.5;
+  std::ofstream(file) << scene.dump();
+  const fs::path out = folder.path / "out";
+  const ProgramRun part = run_program("run " + quoted(first.string()) + " -o " + quoted(out.string()));
+  INFO(part.output);
+  REQUIRE(part.status == 2);  // refused: the profile at 0.5 s lies beyond end_time_s = 0.3 s
+  mps["profiles"]["times_s"] = {0.25};
+  mps["end_time_s"] = 0.3;
+  std::ofstream(first) << scene.dump();
+  mps["profiles"]["times_s"] = {0.25, 0.5};
+  mps["end_time_s"] = 0.5;
+  std::ofstream(file) << scene.dump();
+  REQUIRE(run_program("run " + quoted(first.string()) + " -o " + quoted(out.string())).status == 0);
+  const ProgramRun resumed = run_program("run " + quoted(file.string()) + " -o " + quoted(out.string()) + " --resume");
+  INFO(resumed.output);
+  REQUIRE(resumed.status == 0);
+  std::ifstream report_file(out / "report.json");
+  const nlohmann::json r = nlohmann::json::parse(report_file)["mps"];
+  REQUIRE(r["status"] == "ok");
+  CHECK(r["pore_pressure"] == "hydrostatic");
+  CHECK(r["warnings"].empty());  // c0 = 30 m/s against a largest speed of about 2 m/s
+  REQUIRE(r["phases"].size() == 2);
+  CHECK(r["phases"][0]["mass_in_tank_kg_per_m"]["start"].get<double>() == Approx(1000.0 * 1.0 * 0.1));
+  CHECK(r["phases"][1]["mass_in_tank_kg_per_m"]["start"].get<double>() == Approx(1324.0 * 2.5 * 0.05));
+  for (const nlohmann::json& phase : r["phases"])
+    CHECK(phase["mass_in_tank_kg_per_m"]["end"].get<double>() ==
+          Approx(phase["mass_in_tank_kg_per_m"]["start"].get<double>()));
+  std::ifstream csv(out / "profiles.csv");
+  std::string line;
+  std::getline(csv, line);
+  CHECK(line == "time_s,x_m,surface_m,bed_m");
+  int rows = 0, early = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    if (std::stod(line) < 0.3) ++early;
+  }
+  CHECK(rows == 2 * 125);  // bins 2 dx wide over 2.5 m, at two times
+  CHECK(early == 125);  // the profile at 0.25 s, taken before the stop, kept
+  std::ifstream svg(out / "profiles.svg");
+  CHECK(std::string(std::istreambuf_iterator<char>(svg), {}).find("<svg") != std::string::npos);
+  const nlohmann::json& at = r["dam_break"]["at"];
+  REQUIRE(at.size() == 2);
+  CHECK(r["dam_break"]["water_depth_m"].get<double>() == Approx(0.1));
+  for (const nlohmann::json& f : at) {
+    const double t = f["time_s"].get<double>();
+    INFO("t = " << t << " s: " << f.dump());
+    CHECK(f["front_x_m"].get<double>() > 1.1);
+    CHECK(f["front_x_m"].get<double>() < f["ritter_front_x_m"].get<double>());
+    REQUIRE(f["negative_wave_x_m"].is_number());
+    // the quarter-depth point has moved upstream, but no farther than the fan's head, sqrt(g h) t from the dam
+    const double measured = 1.0 - f["negative_wave_x_m"].get<double>();
+    const double head = std::sqrt(9.81 * f["depth_ahead_m"].get<double>()) * t;
+    CHECK(measured > 0.25 * head);
+    CHECK(measured < head);
+    CHECK(f["scour_m"].get<double>() > 0.01);
+  }
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "coupling/analyses/sph_stage.hpp"
+#include "coupling/analyses/mps_profiles.hpp"
 #include "coupling/analyses/stage.hpp"
 #include "coupling/analyses/tank_monitors.hpp"
 #include "coupling/output/mps_report.hpp"
@@ -37,6 +38,22 @@ sph::mps::Model build_mps_model(const MpsAnalysis& a) {
 }
 
 double moving_mass(const sph::ParticleSet& p) { return p.total_mass(sph::ParticleKind::soil); }  // kind 0
+
+// The mass of the moving particles of material m inside the tank (its walls' inner faces, up to any height).
+double phase_mass_in_tank(const sph::ParticleSet& p, std::uint16_t m, const Tank& tank) {
+  double mass = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == 0 && p.material[i] == m && p.x[i] > tank.x_min && p.x[i] < tank.x_max && p.y[i] > tank.y_min)
+      mass += p.mass[i];
+  return mass;
+}
+
+std::vector<std::uint8_t> granular_flags(const MpsAnalysis& a) {
+  std::vector<std::uint8_t> out;
+  for (const MpsMaterial& m : a.materials)
+    out.push_back(m.material.type == sph::mps::Material::Type::granular ? 1 : 0);
+  return out;
+}
 
 double max_speed(const sph::ParticleSet& p) {
   double v = 0;
@@ -101,17 +118,28 @@ MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
   result.moving_particles = model.particles.count(sph::ParticleKind::soil);
   result.wall_particles = model.particles.size() - result.moving_particles;
   result.mass_start = moving_mass(model.particles);
+  result.pore_pressure = sph::mps::pore_pressure_key(a.settings.pore_pressure);
+  for (std::uint16_t m = 0; m < a.materials.size(); ++m)
+    result.phases.push_back({a.materials[m].name, model.density_of(m), phase_mass_in_tank(model.particles, m, a.tank),
+                             0.0});
+  ProfileObserver profiles(a.profile_times, a.tank, dx, granular_flags(a));
+  const Profile start_profile = measure_profile(model.particles, a.tank, dx, granular_flags(a), 0.0);
   const double wall_x = a.tank.x_min + 0.5 * dx;  // the centres of the lattice column against the left wall
   result.front_start = contact_front(model.particles, dx);
   result.wall_height_start = surface_at(model.particles, wall_x, dx, a.tank.y_min) - a.tank.y_min;
   TankMonitorObserver monitors(a.monitors, a.tank, dx);
   monitors.sample(model.particles, 0.0);
   double fastest = options.resume ? resume_mps(options, model, monitors) : 0.0;
+  if (options.resume) {
+    std::ifstream csv(*options.output_dir / "profiles.csv");
+    profiles.restore(std::string(std::istreambuf_iterator<char>(csv), {}), model.state.time);
+  }
   sph::RunOptions run_options;
   if (options.output_dir) run_options.output_dir = options.output_dir->string();
   run_options.progress_interval_wall_s = 2.0;
   sph::RunCallbacks callbacks = run_callbacks(options.log, "mps");
   callbacks.observers.push_back(&monitors);
+  callbacks.observers.push_back(&profiles);
   result.summary = sph::mps::run(model, run_options, callbacks, [&](const sph::mps::Step&, const sph::RunState&) {
     fastest = std::max(fastest, max_speed(model.particles));
   });
@@ -125,6 +153,13 @@ MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
   result.wall_height_end = surface_at(model.particles, wall_x, dx, a.tank.y_min) - a.tank.y_min;
   result.max_speed_end = max_speed(model.particles);
   result.monitors = std::move(monitors.table());
+  for (std::uint16_t m = 0; m < a.materials.size(); ++m)
+    result.phases[m].mass_end = phase_mass_in_tank(model.particles, m, a.tank);
+  result.profiles = profiles.profiles();
+  result.dam_x = a.dam_x;
+  if (a.dam_x)
+    for (const Profile& p : result.profiles)
+      result.dam_break.push_back(dam_break_figures(start_profile, p, *a.dam_x, dx, std::abs(a.settings.gravity_y)));
   return result;
 }
 
@@ -138,8 +173,15 @@ StageOutcome run_mps_stage(const Scene& scene, StageContext& context) {
   try {
     const MpsStageResult result = run_mps(*scene.analyses.mps, options);
     out.report["mps"] = mps_report(result);
-    if (options.output_dir)
+    if (options.output_dir) {
       sph::write_file_atomically(*options.output_dir / "monitors.csv", monitors_csv(result.monitors));
+      if (!result.profiles.empty()) {
+        const MpsAnalysis& a = *scene.analyses.mps;
+        sph::write_file_atomically(*options.output_dir / "profiles.csv", profiles_csv(result.profiles));
+        sph::write_file_atomically(*options.output_dir / "profiles.svg",
+                                   profiles_svg(result.profiles, a.tank, scene.name, a.dam_x));
+      }
+    }
     if (result.summary.stopped_because == "interrupted") {
       outcome.status = ExitStatus::failed;
       outcome.errors.push_back("mps: the run was interrupted at t = " + format_number(result.summary.simulated_time) +

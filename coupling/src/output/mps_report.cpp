@@ -1,7 +1,13 @@
 // The "mps" block of report.json (coupling/output/mps_report.hpp).
 #include "coupling/output/mps_report.hpp"
 
+#include <cmath>
+
 namespace coupling {
+
+namespace {
+nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+}  // namespace
 
 nlohmann::json mps_report(const MpsStageResult& r) {
   nlohmann::json j;
@@ -33,6 +39,32 @@ nlohmann::json mps_report(const MpsStageResult& r) {
   nlohmann::json columns = nlohmann::json::array({"time_s"});
   for (const std::string& c : r.monitors.columns) columns.push_back(c);
   j["monitors"] = {{"file", "monitors.csv"}, {"columns", columns}, {"rows", r.monitors.times.size()}};
+  j["pore_pressure"] = r.pore_pressure;
+  j["phases"] = nlohmann::json::array();
+  for (const MpsStageResult::Phase& p : r.phases)
+    j["phases"].push_back({{"material", p.name},
+                           {"density_kg_m3", p.density},
+                           {"mass_in_tank_kg_per_m", {{"start", p.mass_start}, {"end", p.mass_end}}}});
+  if (!r.profiles.empty()) {
+    nlohmann::json times = nlohmann::json::array();
+    for (const Profile& p : r.profiles) times.push_back(p.time);
+    j["profiles"] = {{"file", "profiles.csv"}, {"figure", "profiles.svg"}, {"times_s", times}};
+  }
+  if (r.dam_x) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const DamBreakFigures& f : r.dam_break)
+      rows.push_back({{"time_s", f.time},
+                      {"front_x_m", f.front_x},
+                      {"ritter_front_x_m", f.ritter_front_x},
+                      {"level_ahead_m", finite_or_null(f.level_ahead)},
+                      {"depth_ahead_m", finite_or_null(f.depth_ahead)},
+                      {"negative_wave_x_m", finite_or_null(f.negative_wave_x)},
+                      {"ritter_negative_wave_x_m", finite_or_null(f.ritter_negative_wave_x)},
+                      {"bed_at_dam_m", f.bed_at_dam},
+                      {"scour_m", f.bed_at_dam_start - f.bed_at_dam}});
+    const double depth = r.dam_break.empty() ? 0.0 : r.dam_break.front().depth;
+    j["dam_break"] = {{"dam_x_m", *r.dam_x}, {"water_depth_m", depth}, {"at", rows}};
+  }
   return j;
 }
 

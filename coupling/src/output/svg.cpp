@@ -74,17 +74,19 @@ std::string number(double v) {
 }
 }  // namespace
 
-SvgCanvas::SvgCanvas(double x_min, double x_max, double y_min, double y_max, double width_px)
+SvgCanvas::SvgCanvas(double x_min, double x_max, double y_min, double y_max, double width_px,
+                     double vertical_exaggeration)
     : x_min_(x_min), x_max_(x_max), y_min_(y_min), y_max_(y_max) {
   if (!(x_max_ > x_min_)) x_max_ = x_min_ + 1.0;
   if (!(y_max_ > y_min_)) y_max_ = y_min_ + 1.0;
   plot_w_ = width_px;
   scale_ = plot_w_ / (x_max_ - x_min_);
-  plot_h_ = scale_ * (y_max_ - y_min_);
+  y_scale_ = vertical_exaggeration > 0 ? scale_ * vertical_exaggeration : scale_;
+  plot_h_ = y_scale_ * (y_max_ - y_min_);
 }
 
 double SvgCanvas::px(double x) const { return left_ + (x - x_min_) * scale_; }
-double SvgCanvas::py(double y) const { return top_ + (y_max_ - y) * scale_; }
+double SvgCanvas::py(double y) const { return top_ + (y_max_ - y) * y_scale_; }
 
 void SvgCanvas::polyline(const std::vector<slope::Point>& points, const std::string& stroke, double width,
                          const std::string& dash, const std::string& fill) {

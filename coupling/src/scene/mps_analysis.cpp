@@ -14,6 +14,7 @@ namespace coupling {
 namespace {
 
 constexpr SizeLimit materials_limit{100, "materials", "each block names one of them"};
+constexpr SizeLimit profile_times_limit{1000, "times", "each time writes one profile of the whole tank"};
 
 // An optional string key naming one of a setting's choices; `from` throws on any other name.
 template <typename Choice>
@@ -44,6 +45,7 @@ void read_numerics(JsonReader& r, sph::mps::Settings& s) {
   read_choice(r, "regularisation", "\"consistent\" or \"as_printed\"", sph::mps::regularisation_from, s.regularisation);
   read_choice(r, "effective_pressure", "\"smoothed\" or \"hydrostatic\"", sph::mps::effective_pressure_from,
               s.effective_pressure);
+  read_choice(r, "pore_pressure", "\"none\" or \"hydrostatic\"", sph::mps::pore_pressure_from, s.pore_pressure);
   read_choice(r, "stress_divergence", "\"direct\" or \"indirect\"", sph::mps::stress_divergence_from,
               s.stress_divergence);
   read_choice(r, "interaction_viscosity", "\"harmonic_mean\" or \"own\"", sph::mps::interaction_viscosity_from,
@@ -66,14 +68,17 @@ MpsMaterial read_material(JsonReader& m) {
     hb.friction_angle_deg = m.number_or("friction_angle_deg", hb.friction_angle_deg, Bounds::half_open(0.0, 90.0));
     hb.cohesion = 1.0e3 * m.number_or("cohesion_kPa", 0.0, Bounds::non_negative());
     out.material = sph::mps::Material::granular_material(hb);
+    out.material.grain_volume_fraction =
+        m.number_or("grain_volume_fraction", out.material.grain_volume_fraction, Bounds{0.0, false, 1.0, true});
   } else {
     if (!type.empty())
       m.diagnostics().error(m.path_of("type"), "expected \"granular\" or \"water\", got \"" + type + "\"");
     // without a known type the other keys cannot be checked: one error, not one per key
     for (const char* key : {"viscosity_Pa_s", "consistency_Pa_sN", "flow_index", "regularisation_growth_s",
-                            "friction_angle_deg", "cohesion_kPa"})
+                            "friction_angle_deg", "cohesion_kPa", "grain_volume_fraction"})
       m.allow(key);
   }
+  out.material.density = m.number_or("density_kg_m3", 0.0, Bounds::positive());  // 0: rest_density_kg_m3
   return out;
 }
 
@@ -137,6 +142,35 @@ void read_gate(JsonReader& mps, MpsAnalysis& a) {
   a.settings.gate_lift_distance = a.tank.height;
 }
 
+// analyses.mps.profiles {times_s, dam_x_m}: the profile times inside (0, end_time_s], and the dam inside the tank.
+void read_profiles(JsonReader& mps, MpsAnalysis& a) {
+  auto pr = mps.object("profiles", Need::optional, "an object {times_s, dam_x_m}");
+  if (!pr) return;
+  if (const nlohmann::json* times = pr->array("times_s", Need::required, 1, profile_times_limit)) {
+    for (std::size_t k = 0; k < times->size(); ++k) {
+      const std::string path = index_path(pr->path_of("times_s"), k);
+      const auto t = read_number((*times)[k], path, pr->diagnostics(), Bounds{0.0, false, a.settings.end_time, true});
+      if (!t) continue;
+      if (!a.profile_times.empty() && *t <= a.profile_times.back())
+        pr->diagnostics().error(path, "times must increase (got " + format_number(*t) + " after " +
+                                          format_number(a.profile_times.back()) + ")");
+      a.profile_times.push_back(*t);
+    }
+  }
+  if (auto x = pr->number("dam_x_m", Need::optional, Bounds::open(a.tank.x_min, a.tank.x_max))) a.dam_x = *x;
+  pr->finish();
+}
+
+// pore_pressure "hydrostatic" takes the pore water's density from a water material.
+void check_pore_water(JsonReader& mps, const MpsAnalysis& a) {
+  if (a.settings.pore_pressure != sph::mps::PorePressure::hydrostatic) return;
+  for (const MpsMaterial& m : a.materials)
+    if (m.material.type == sph::mps::Material::Type::water) return;
+  mps.diagnostics().error(mps.path_of("pore_pressure"), "\"hydrostatic\" takes the pore water's density from a "
+                                                          "material of type \"water\", and materials has none; "
+                                                          "add one or use \"none\"");
+}
+
 // A run planned to need more than max_steps time steps is refused before it starts, with the figures.
 void refuse_too_many_steps(JsonReader& r, const MpsAnalysis& a) {
   const MpsPlan plan = plan_mps(a);
@@ -162,11 +196,12 @@ void refuse_too_many_steps(JsonReader& r, const MpsAnalysis& a) {
 MpsPlan plan_mps(const MpsAnalysis& a) {
   const sph::mps::Settings& s = a.settings;
   MpsPlan plan;
-  for (const std::uint16_t k : a.block_material) {
+  for (const std::uint16_t k : a.block_material) {  // the largest mu rho0 / rho_i, as the stepper takes it
     if (k >= a.materials.size()) continue;
     const sph::mps::Material& m = a.materials[k].material;
     const bool granular = m.type == sph::mps::Material::Type::granular;
-    plan.viscosity = std::max(plan.viscosity, granular ? s.viscosity_cap : m.viscosity);
+    const double density = m.density > 0 ? m.density : s.rest_density;
+    plan.viscosity = std::max(plan.viscosity, (granular ? s.viscosity_cap : m.viscosity) * (s.rest_density / density));
   }
   plan.time_step = sph::mps::terms::time_step(s.cfl, s.particle_spacing, s.sound_speed, s.gate_lift_speed,
                                               s.rest_density, plan.viscosity);
@@ -184,6 +219,8 @@ MpsAnalysis read_mps_analysis(JsonReader& mps) {
                        [&](JsonReader& b) { read_block_material(b, a.materials, a); });
   read_gate(mps, a);
   read_tank_monitors(mps, a.monitors, true);
+  read_profiles(mps, a);
+  check_pore_water(mps, a);
   a.max_steps = mps.number_or("max_steps", a.max_steps, Bounds::at_least(1.0));
   mps.finish();
   try {

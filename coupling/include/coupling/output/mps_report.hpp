@@ -1,11 +1,13 @@
 #pragma once
 // The "mps" block of report.json, from the typed result of the mps stage (docs/scene-format.md, report "mps").
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/analyses/mps_profiles.hpp"
 #include "coupling/output/monitor_table.hpp"
 #include "sph/engine/run_loop.hpp"
 
@@ -27,6 +29,18 @@ struct MpsStageResult {
   double max_speed_run = 0;  // [m/s] over the whole run, for the sound-speed rule c0 >= 10 |u|max
   std::vector<std::string> warnings;  // the sound-speed rule broken, blocks too thin for r_e (report "warnings")
   MonitorTable monitors;
+  std::string pore_pressure;  // the setting's key
+  // Each material (phase): its name, reference density [kg/m^3] and the mass of its moving particles inside the
+  // tank at the start and at the end [kg per m of depth] (a particle never changes phase: they differ only when
+  // particles have left the tank)
+  struct Phase {
+    std::string name;
+    double density = 0, mass_start = 0, mass_end = 0;
+  };
+  std::vector<Phase> phases;
+  std::vector<Profile> profiles;  // analyses.mps.profiles (profiles.csv, profiles.svg)
+  std::vector<DamBreakFigures> dam_break;  // with profiles.dam_x_m: one per profile
+  std::optional<double> dam_x;
 };
 
 nlohmann::json mps_report(const MpsStageResult& result);

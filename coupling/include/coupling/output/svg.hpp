@@ -25,11 +25,13 @@ double nice_step(double span, int target_ticks);
 class SvgCanvas {
  public:
   // World window [x_min, x_max] x [y_min, y_max] drawn `width_px` wide; margins around it for axes and legend.
-  SvgCanvas(double x_min, double x_max, double y_min, double y_max, double width_px = 900.0);
+  // y is drawn `vertical_exaggeration` times the scale of x (1: equal scales; say so in the figure when not 1).
+  SvgCanvas(double x_min, double x_max, double y_min, double y_max, double width_px = 900.0,
+            double vertical_exaggeration = 1.0);
 
   double px(double x) const;  // world x → pixel
   double py(double y) const;  // world y → pixel (y up)
-  double scale() const { return scale_; }  // pixels per metre
+  double scale() const { return scale_; }  // pixels per metre in x
 
   void polyline(const std::vector<slope::Point>& points, const std::string& stroke, double width,
                 const std::string& dash = "", const std::string& fill = "none");
@@ -55,7 +57,7 @@ class SvgCanvas {
 
  private:
   double x_min_, x_max_, y_min_, y_max_;
-  double scale_;
+  double scale_, y_scale_;
   double left_ = 70.0, right_ = 140.0, top_ = 40.0, bottom_ = 55.0;
   double plot_w_, plot_h_;
   std::ostringstream body_;

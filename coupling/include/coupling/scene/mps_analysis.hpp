@@ -27,6 +27,10 @@ struct MpsAnalysis {
   std::vector<std::uint16_t> block_material;  // index into materials, one per block
   std::optional<double> gate_x;  // the gate's face on the blocks' side [m] (absent: material released at once)
   TankMonitors monitors;
+  // analyses.mps.profiles: the times at which the surface and bed profiles are taken [s] (ascending), and the dam's
+  // x [m] for the dam-break figures (coupling/analyses/mps_profiles.hpp)
+  std::vector<double> profile_times;
+  std::optional<double> dam_x;
   double max_steps = 5.0e6;  // a run planned to need more time steps is refused before it starts
 };
 
@@ -35,7 +39,7 @@ struct MpsAnalysis {
 // a water's own viscosity) and the steps it plans for end_time_s.
 struct MpsPlan {
   double time_step = 0;  // [s]
-  double viscosity = 0;  // mu_max at rest [Pa s]
+  double viscosity = 0;  // mu_max rho0 / rho_i at rest [Pa s] (the phase of the smallest kinematic viscosity)
   double planned_steps = 0;
   bool viscous_limit = false;  // the viscous bound rho0 dx^2 / (2 d mu) sets the step, not dx / c0
 };
