@@ -5,9 +5,11 @@
 //      effective_pressure), the strain rate D (eq. 17)
 //   c  mu_i: the material's constant viscosity (water) or the capped regularised Herschel-Bulkley law (granular)
 //   d  <div tau>^m (eq. 22, or eq. 23 with stress_divergence indirect) and <grad p>^m (eq. 24)
-//   e  u* = u^m + (dt/rho0)(rho0 g + <div tau>^m - (1 - alpha) <grad p>^m) (eq. 28); r* = r^m + u* dt
-//   f  the neighbours within r_e at r*; n*; p^{m+1} = Tait(n*), 0 at the free surface n* <= beta n0 (eqs. 13, 15)
-//   g  u^{m+1} = u* - alpha (dt/rho0) <grad p>^{m+1} (eqs. 27, 29)
+//   e  u* = u^m + (dt/rho_i)(rho_i g + <div tau>^m - (1 - alpha) <grad p>^m) (eq. 28), rho_i the particle's phase
+//      density (eqs. 25-26); r* = r^m + u* dt
+//   f  the neighbours within r_e at r*; n*; the mixture density <rho> (seed 2.10); p^{m+1} = Tait(n*) with the
+//      prefactor <rho> c0^2 / gamma, 0 at the free surface n* <= beta n0 (eqs. 13, 15)
+//   g  u^{m+1} = u* - alpha (dt/rho_i) <grad p>^{m+1} (eqs. 27, 29)
 //   h  r^{m+1} = r^m + u^{m+1} dt (A24)
 //   i  collision with the wall particles: a moving particle closer than wall_collision_distance dx to a wall or
 //      dummy particle and approaching it (relative to its velocity) loses (1 + e) times its normal velocity towards
@@ -40,7 +42,8 @@ class Step : public Stepper {
   Step& operator=(const Step&) = delete;
 
   void initialise() override;
-  // eq. 30: C_r min(dx/(c0 + |u|max), rho0 dx^2/(2 d mu_max)), |u|max and mu_max over the moving particles (and
+  // eq. 30: C_r min(dx/(c0 + |u|max), rho0 dx^2/(2 d mu_max)), |u|max and mu_max = max mu_i rho0/rho_i over the
+  // moving particles (and
   // |u|max at least the gate's speed while it rises).
   double stable_time_step() const override;
   void advance(double dt) override;
