@@ -168,6 +168,7 @@ TEST_CASE("MPS materials of different densities: particle mass, mixture density 
   CHECK(below < 1324.0);
   CHECK(above > 1000.0);
   CHECK(above < 1162.0);
-  CHECK(at(0.105, 0.095, phi) == Approx(0.6 * (below - 1000.0) / 324.0).epsilon(1e-9));  // phi = phi0 (<rho> - rho_f) / (rho_b - rho_f)
+  // phi = phi0 (<rho> - rho_f) / (rho_b - rho_f)
+  CHECK(at(0.105, 0.095, phi) == Approx(0.6 * (below - 1000.0) / 324.0).epsilon(1e-9));
   CHECK(at(0.105, -0.005, rho) == Approx(1324.0).epsilon(1e-9));  // the floor under the bed: the grains'
 }

@@ -42,8 +42,8 @@ double mean_near(const Profile& p, const std::vector<double>& values, double x, 
 
 }  // namespace
 
-Profile measure_profile(const sph::ParticleSet& p, const Tank& tank, double dx, const std::vector<std::uint8_t>& granular,
-                        double time) {
+Profile measure_profile(const sph::ParticleSet& p, const Tank& tank, double dx,
+                        const std::vector<std::uint8_t>& granular, double time) {
   const std::size_t bins = bin_count(tank, dx);
   std::vector<std::vector<double>> all(bins), grains(bins);
   for (std::size_t i = 0; i < p.size(); ++i) {

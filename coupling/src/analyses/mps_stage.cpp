@@ -99,15 +99,13 @@ double resume_mps(const WorkflowOptions& options, sph::mps::Model& model, TankMo
   return fastest;
 }
 
-MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
-  sph::mps::Model model = build_mps_model(a);
-  const double dx = a.settings.particle_spacing;
-  MpsStageResult result;
+// The settings the report echoes.
+void echo_settings(const MpsAnalysis& a, MpsStageResult& result) {
   result.regularisation = sph::mps::regularisation_key(a.settings.regularisation);
   result.interaction_viscosity = sph::mps::interaction_viscosity_key(a.settings.interaction_viscosity);
   result.effective_pressure = sph::mps::effective_pressure_key(a.settings.effective_pressure);
   result.stress_divergence = sph::mps::stress_divergence_key(a.settings.stress_divergence);
-  result.particle_spacing = dx;
+  result.particle_spacing = a.settings.particle_spacing;
   result.effective_radius = a.settings.effective_radius();
   result.sound_speed = a.settings.sound_speed;
   result.viscosity_cap = a.settings.viscosity_cap;
@@ -115,10 +113,17 @@ MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
   result.gate_x = a.gate_x.value_or(0.0);
   result.gate_lift_speed = a.settings.gate_lift_speed;
   result.gate_lift_distance = a.settings.gate_lift_distance;
+  result.pore_pressure = sph::mps::pore_pressure_key(a.settings.pore_pressure);
+}
+
+MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
+  sph::mps::Model model = build_mps_model(a);
+  const double dx = a.settings.particle_spacing;
+  MpsStageResult result;
+  echo_settings(a, result);
   result.moving_particles = model.particles.count(sph::ParticleKind::soil);
   result.wall_particles = model.particles.size() - result.moving_particles;
   result.mass_start = moving_mass(model.particles);
-  result.pore_pressure = sph::mps::pore_pressure_key(a.settings.pore_pressure);
   for (std::uint16_t m = 0; m < a.materials.size(); ++m)
     result.phases.push_back({a.materials[m].name, model.density_of(m), phase_mass_in_tank(model.particles, m, a.tank),
                              0.0});

@@ -24,8 +24,8 @@ struct Profile {
 
 // The profile of the moving particles (kind 0) in bins 2 dx wide from the tank's x_min; `granular[m]` says whether
 // material m is granular (the bed).
-Profile measure_profile(const sph::ParticleSet& p, const Tank& tank, double dx, const std::vector<std::uint8_t>& granular,
-                        double time);
+Profile measure_profile(const sph::ParticleSet& p, const Tank& tank, double dx,
+                        const std::vector<std::uint8_t>& granular, double time);
 
 // Takes a profile at the first step at or after each of `times` [s] (ascending).
 class ProfileObserver : public sph::Observer {
