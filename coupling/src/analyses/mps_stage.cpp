@@ -127,8 +127,9 @@ MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
   for (std::uint16_t m = 0; m < a.materials.size(); ++m)
     result.phases.push_back({a.materials[m].name, model.density_of(m), phase_mass_in_tank(model.particles, m, a.tank),
                              0.0});
-  ProfileObserver profiles(a.profile_times, a.tank, dx, granular_flags(a));
-  const Profile start_profile = measure_profile(model.particles, a.tank, dx, granular_flags(a), 0.0);
+  const std::vector<std::uint8_t> granular = granular_flags(a);
+  ProfileObserver profiles(a.profile_times, a.tank, dx, granular);
+  const Profile start_profile = measure_profile(model.particles, a.tank, dx, granular, 0.0);
   const double wall_x = a.tank.x_min + 0.5 * dx;  // the centres of the lattice column against the left wall
   result.front_start = contact_front(model.particles, dx);
   result.wall_height_start = surface_at(model.particles, wall_x, dx, a.tank.y_min) - a.tank.y_min;

@@ -35,6 +35,7 @@ struct Step::Impl {
   std::vector<std::uint8_t> granular;  // 1 for each granular material
   bool mixture = false;  // materials of different densities: the EOS takes the mixture density <rho>
   double pore_density = 0;  // rho_w of the pore pressure (PorePressure::hydrostatic), else 0
+  double gravity = 0;  // |g| at the current step [m/s^2] (the pore pressure)
   std::vector<double> depth;  // each particle's depth below the moving material's surface [m] (hydrostatic p', pores)
 };
 
@@ -161,8 +162,8 @@ void Step::hydrostatic_pressures() {
 // A6, PorePressure::hydrostatic: rho_w |g| (h + dx/2) for a granular particle, else 0 [Pa].
 double Step::pore_pressure(std::size_t i) const {
   if (impl_->pore_density == 0 || !impl_->granular[material_of(i)]) return 0.0;
-  const double g = std::hypot(gravity_x(), gravity_y());
-  return hydrostatic_pressure(impl_->pore_density, g, impl_->depth[i] + 0.5 * model_.settings.particle_spacing);
+  const double depth = impl_->depth[i] + 0.5 * model_.settings.particle_spacing;
+  return hydrostatic_pressure(impl_->pore_density, impl_->gravity, depth);
 }
 
 // Steps b and c at r^m: p' (Shepard, clamped >= 0, from p^m; or hydrostatic), then each particle's viscosity by
@@ -175,6 +176,7 @@ void Step::viscosities() {
   const auto n = static_cast<Index>(p.size());
   const bool hydrostatic = st.effective_pressure == EffectivePressure::hydrostatic;
   const bool indirect = st.stress_divergence == StressDivergence::indirect;
+  impl_->gravity = std::hypot(gravity_x(), gravity_y());
   if (hydrostatic || impl_->pore_density > 0) depths_below_surface();
   if (hydrostatic) hydrostatic_pressures();
   if (indirect) {
