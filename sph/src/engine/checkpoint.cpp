@@ -122,7 +122,8 @@ void read_checkpoint(const std::string& path, ParticleSet& set, RunState& state,
   const auto hdx = r.get<double>();
   std::vector<std::string_view> own_names;
   set.for_each_checkpointed_double_array([&](std::string_view name, auto&) { own_names.push_back(name); });
-  if (n != set.size() || ndouble != own_names.size() || nmat != expected.materials ||
+  const bool count_differs = n != set.size() && !(expected.particles_may_leave && n <= set.size());
+  if (count_differs || ndouble != own_names.size() || nmat != expected.materials ||
       dx != expected.particle_spacing || hdx != expected.h_over_dx)
     throw std::runtime_error("checkpoint " + path + " does not belong to this model (particles " + std::to_string(n) +
                              " vs " + std::to_string(set.size()) + ", materials " + std::to_string(nmat) + " vs " +

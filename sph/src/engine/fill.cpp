@@ -1,9 +1,11 @@
 #include "sph/engine/fill.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace sph {
 
@@ -39,6 +41,88 @@ bool point_in_polygon(const std::vector<Point>& poly, double x, double y) {
     }
   }
   return in;
+}
+
+double distance_to_polygon_edges(const std::vector<Point>& poly, double x, double y) {
+  double best = std::numeric_limits<double>::infinity();
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const double ex = poly[i].x - poly[j].x, ey = poly[i].y - poly[j].y, len2 = ex * ex + ey * ey;
+    double t = len2 > 0 ? ((x - poly[j].x) * ex + (y - poly[j].y) * ey) / len2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    best = std::min(best, std::hypot(x - poly[j].x - t * ex, y - poly[j].y - t * ey));
+  }
+  return best;
+}
+
+double polygon_area(const std::vector<Point>& poly) {
+  double twice = 0;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) twice += poly[j].x * poly[i].y - poly[i].x * poly[j].y;
+  return 0.5 * std::abs(twice);
+}
+
+namespace {
+
+// Row k of edge a -> b of a counter-clockwise polygon: the points spaced about dx on the edge moved inward (to the
+// left) by (k + 1/2) dx, over the edge's length (the ends are settled by the keep rules of boundary_layer_points).
+void edge_row(const Point& a, const Point& b, double offset, double dx, std::vector<Point>& out) {
+  const double ex = b.x - a.x, ey = b.y - a.y, len = std::hypot(ex, ey);
+  if (!(len > 0)) return;
+  const double tx = ex / len, ty = ey / len, nx = -ty, ny = tx;  // inward normal of a counter-clockwise polygon
+  const auto count = static_cast<int>(std::max(1.0, std::round(len / dx)));
+  const double step = len / count;
+  for (int m = 0; m < count; ++m) {
+    const double s = (m + 0.5) * step;
+    out.push_back({a.x + s * tx + offset * nx, a.y + s * ty + offset * ny});
+  }
+}
+
+std::int64_t cell_key(std::int64_t a, std::int64_t b) { return (a << 32) ^ (b & 0xffffffffLL); }
+
+}  // namespace
+
+std::vector<Point> boundary_layer_points(const std::vector<Point>& polygon, double dx, int layers) {
+  if (polygon.size() < 3) throw std::invalid_argument("boundary layer fill: a polygon needs at least 3 vertices");
+  if (!(dx > 0) || layers < 1) throw std::invalid_argument("boundary layer fill: dx > 0 and layers >= 1 needed");
+  std::vector<Point> poly = polygon;
+  double twice = 0;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+    twice += poly[j].x * poly[i].y - poly[i].x * poly[j].y;
+  if (twice < 0) std::reverse(poly.begin(), poly.end());  // counter-clockwise: the inside is on the left
+  std::vector<Point> kept;
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> grid;  // kept points by cell of side dx
+  const double too_close2 = 0.36 * dx * dx;
+  const double tolerance = 1e-9 * dx;
+  for (int k = 0; k < layers; ++k) {
+    const double offset = (k + 0.5) * dx;
+    std::vector<Point> row;
+    for (std::size_t i = 0; i < poly.size(); ++i) edge_row(poly[i], poly[(i + 1) % poly.size()], offset, dx, row);
+    std::size_t added = 0;
+    for (const Point& q : row) {
+      if (!point_in_polygon(poly, q.x, q.y)) continue;
+      if (distance_to_polygon_edges(poly, q.x, q.y) < offset - tolerance) continue;
+      const std::int64_t cx = static_cast<std::int64_t>(std::floor(q.x / dx));
+      const std::int64_t cy = static_cast<std::int64_t>(std::floor(q.y / dx));
+      bool crowded = false;
+      for (std::int64_t a = cx - 1; a <= cx + 1 && !crowded; ++a)
+        for (std::int64_t b = cy - 1; b <= cy + 1 && !crowded; ++b) {
+          const auto cell = grid.find(cell_key(a, b));
+          if (cell == grid.end()) continue;
+          for (const std::size_t o : cell->second)
+            if ((kept[o].x - q.x) * (kept[o].x - q.x) + (kept[o].y - q.y) * (kept[o].y - q.y) < too_close2) {
+              crowded = true;
+              break;
+            }
+        }
+      if (crowded) continue;
+      grid[cell_key(cx, cy)].push_back(kept.size());
+      kept.push_back(q);
+      ++added;
+    }
+    if (added == 0) break;  // the rows have met in the middle: the polygon is full
+  }
+  return kept;
 }
 
 std::vector<Point> lattice_points_in_polygon(const std::vector<Point>& polygon, double dx, Point anchor) {

@@ -33,6 +33,21 @@ void ParticleSet::reserve(std::size_t n) {
   for_each_array([n](auto& a) { a.reserve(n); });
 }
 
+std::size_t ParticleSet::remove(const std::vector<std::uint8_t>& drop) {
+  if (drop.size() != size()) throw std::invalid_argument("ParticleSet::remove: one flag per particle expected");
+  const std::size_t n = size();
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < n; ++i) kept += drop[i] == 0;
+  if (kept == n) return 0;
+  for_each_array([&](auto& a) {
+    std::size_t at = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (drop[i] == 0) a[at++] = a[i];
+    a.resize(kept);
+  });
+  return n - kept;
+}
+
 std::size_t ParticleSet::count(ParticleKind k) const {
   return static_cast<std::size_t>(std::count(kind.begin(), kind.end(), static_cast<std::uint8_t>(k)));
 }

@@ -25,6 +25,9 @@ struct CheckpointFingerprint {
   std::uint32_t materials = 0;
   double particle_spacing = 0;  // [m]
   double h_over_dx = 0;
+  // Particles may have left the model since it was built (a physics that removes particles leaving its domain):
+  // the checkpoint's particle count is then taken as it is, not compared with the model's.
+  bool particles_may_leave = false;
 };
 
 void write_checkpoint(const std::string& path, const ParticleSet& particles, const RunState& state,

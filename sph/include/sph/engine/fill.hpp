@@ -25,6 +25,19 @@ std::vector<Point> lattice_points_in_polygon(const std::vector<Point>& polygon, 
 
 bool point_in_polygon(const std::vector<Point>& polygon, double x, double y);
 
+// The shortest distance from (x, y) to the polygon's edges (closed; either orientation) [m].
+double distance_to_polygon_edges(const std::vector<Point>& polygon, double x, double y);
+
+// The area of a simple polygon (either orientation) [m^2].
+double polygon_area(const std::vector<Point>& polygon);
+
+// Points in rows parallel to the edges of a simple polygon, inside it: row k (k = 0 .. layers - 1) at the distance
+// (k + 1/2) dx from its edge, spaced about dx along it, so that a slanted face is smooth (a lattice fill would
+// make it a staircase). A point is kept where it is inside the polygon, no closer than (k + 1/2) dx to any other
+// edge (it belongs to row k) and further than 0.6 dx from the points already kept (where rows of two edges meet).
+// For walls and rigid bodies of any shape; `layers` large enough fills the polygon.
+std::vector<Point> boundary_layer_points(const std::vector<Point>& polygon, double dx, int layers);
+
 // Appends soil particles at the given points: mass = density dx^2 (per metre width). Returns the count.
 std::size_t add_soil(ParticleSet& particles, const std::vector<Point>& points, double dx, std::uint16_t material,
                      double density);

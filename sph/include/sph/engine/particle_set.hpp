@@ -45,6 +45,9 @@ class ParticleSet {
   std::size_t add(double px, double py, double particle_mass, double density, std::uint16_t material_id,
                   ParticleKind particle_kind);
   void reserve(std::size_t n);
+  // Removes the particles i with drop[i] != 0 from every array (core and registered), keeping the order of the
+  // others (drop has size()). Returns how many were removed. Indices held elsewhere are invalid afterwards.
+  std::size_t remove(const std::vector<std::uint8_t>& drop);
 
   // --- registered fields ---------------------------------------------------------------------------------------
   // Registers a per-particle array (zero for the particles already present), or returns the existing one of that
