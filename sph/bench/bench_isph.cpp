@@ -3,7 +3,9 @@
 // Prints wall time, steps and fluid particle-steps per second for the thread count given by OMP_NUM_THREADS, and
 // the front against Martin & Moyce (1952, n^2 = 2; T = sqrt(2) t sqrt(g/a), Z = x/a, a = 1 m).
 // Usage: bench-isph [dx (default 0.01)] [explicit|iterative (default iterative)] [end time s (default 0.5)]
-//                   [solver tolerance (default: the settings' 1e-8)]
+//                   [solver tolerance (default: the settings' 1e-8)] [cfl (default: the settings')]
+//                   [solves per step (default: the settings' wall_passes)] [diagonal|multigrid (default: the
+//                   settings' preconditioner)]
 #include <omp.h>
 
 #include <cmath>
@@ -21,6 +23,9 @@ int main(int argc, char** argv) {
   st.pressure_mode = sph::fluid::pressure_mode_from(argc > 2 ? argv[2] : "iterative");
   st.end_time = argc > 3 ? std::atof(argv[3]) : 0.5;
   if (argc > 4) st.solver_tolerance = std::atof(argv[4]);
+  if (argc > 5) st.cfl = std::atof(argv[5]);
+  if (argc > 6) st.wall_passes = std::atoi(argv[6]);
+  if (argc > 7) st.preconditioner = sph::fluid::preconditioner_from(argv[7]);
   const double a = 1.0;
   sph::fluid::Model model = sph::fluid::make_dam_break(st, a, 2.0, 4.0);
   long long iterations = 0;
@@ -40,9 +45,10 @@ int main(int argc, char** argv) {
   const double T = std::sqrt(2.0) * model.state.time * std::sqrt(sphslope::standard_gravity / a);
   std::printf(
       "bench-isph: dam break 1 m x 2 m in a 4 m tank, %zu fluid + %zu wall particles, dx = %.3g m, "
-      "h/dx = %.2f, pressure %s (%s, tolerance %.0e)\n",
+      "h/dx = %.2f, cfl %.3g, pressure %s (%s, %s preconditioner, tolerance %.0e, %d solves per step)\n",
       sum.soil_particles, sum.particles - sum.soil_particles, st.particle_spacing, st.h_over_dx,
-      sph::fluid::pressure_mode_key(st.pressure_mode), sph::fluid::linear_solver_key(st.solver), st.solver_tolerance);
+      st.cfl, sph::fluid::pressure_mode_key(st.pressure_mode), sph::fluid::linear_solver_key(st.solver),
+      sph::fluid::preconditioner_key(st.preconditioner), st.solver_tolerance, st.wall_passes);
   std::printf(
       "threads %d  t = %.4g s (%s)  steps %llu  wall %.2f s  %.3f ms/step  particle-steps/s %.4g  "
       "solver iterations/step %.1f  max density error %.3g\n",

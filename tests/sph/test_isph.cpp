@@ -54,7 +54,12 @@ TEST_CASE("ISPH pressure equation: CG, BiCGSTAB and repeated Jacobi sweeps reach
   const PoissonSystem s = chain_system(12, exact);
   for (LinearSolver solver : {LinearSolver::conjugate_gradient, LinearSolver::bicgstab}) {
     std::vector<double> p(exact.size(), 0.0);
-    const SolveReport rep = solve_pressure(s, solver, 1e-12, 500, p);
+    SolverChoice choice;
+    choice.solver = solver;
+    choice.preconditioner = Preconditioner::diagonal;
+    choice.tolerance = 1e-12;
+    choice.max_iterations = 500;
+    const SolveReport rep = solve_pressure(s, choice, p);
     CHECK(rep.converged);
     CHECK(rep.unknowns == 11);
     CHECK(max_abs_diff(p, exact) < 1e-8);

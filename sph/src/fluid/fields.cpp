@@ -8,6 +8,9 @@ Fields Fields::register_in(ParticleSet& set) {
   f.provisional_density = set.add_field({"provisional_density", false, true});
   f.kernel_density = set.add_field({"kernel_density", false, true});
   f.free_surface = set.add_field({"free_surface", false, true});
+  f.body_travel = set.add_field({"body_travel", true, false});
+  f.body_speed = set.add_field({"body_speed", true, false});
+  f.body_acceleration = set.add_field({"body_acceleration", true, false});
   f.x_start = set.add_field({"step_start_x", false, false});
   f.y_start = set.add_field({"step_start_y", false, false});
   f.vx_start = set.add_field({"step_start_vx", false, false});

@@ -8,8 +8,11 @@
 #endif
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
+#include "multigrid.hpp"
 #include "terms.hpp"
 
 namespace sph::fluid {
@@ -43,45 +46,102 @@ std::vector<std::uint32_t> number_unknowns(const PoissonSystem& s, std::vector<s
 }
 
 // M p = b with M_ii = -S_B, M_ij = B_ij (unknown j), b_i = -s_i - sum_{j given} B_ij P_j: symmetric positive
-// definite for equal masses.
+// definite for equal masses. Written straight into the compressed rows, one row per unknown in parallel, the
+// diagonal first and then the neighbours in the pair list's order: the columns of a row are not sorted, which the
+// matrix-vector products of the Krylov solvers and the preconditioners do not need.
 void assemble(const PoissonSystem& s, const std::vector<double>& given, const std::vector<std::uint32_t>& row,
               const std::vector<std::uint32_t>& particle_of_row, SparseMatrix& m, Eigen::VectorXd& b) {
   const auto nu = static_cast<Eigen::Index>(particle_of_row.size());
-  m.resize(nu, nu);
-  Eigen::VectorXi per_row(nu);
+  std::vector<int> row_start(static_cast<std::size_t>(nu) + 1, 0);
+#pragma omp parallel for schedule(static)
   for (Eigen::Index r = 0; r < nu; ++r) {
     const std::uint32_t i = particle_of_row[static_cast<std::size_t>(r)];
-    per_row[r] = static_cast<int>(s.start[i + 1] - s.start[i]) + 1;
+    int count = 1;  // the diagonal
+    for (std::uint32_t k = s.start[i]; k < s.start[i + 1]; ++k) count += s.role[s.col[k]] == PressureRole::unknown;
+    row_start[static_cast<std::size_t>(r) + 1] = count;
   }
-  m.reserve(per_row);
+  for (std::size_t r = 0; r < static_cast<std::size_t>(nu); ++r) row_start[r + 1] += row_start[r];
+  m.resize(nu, nu);
+  m.resizeNonZeros(row_start.back());
+  std::copy(row_start.begin(), row_start.end(), m.outerIndexPtr());
+  int* cols = m.innerIndexPtr();
+  double* values = m.valuePtr();
   b.resize(nu);
+#pragma omp parallel for schedule(static)
   for (Eigen::Index r = 0; r < nu; ++r) {
     const std::uint32_t i = particle_of_row[static_cast<std::size_t>(r)];
+    int at = row_start[static_cast<std::size_t>(r)];
+    const int diagonal_at = at++;
     double diag = 0, rhs = -s.source[i];
     for (std::uint32_t k = s.start[i]; k < s.start[i + 1]; ++k) {
       const std::uint32_t j = s.col[k];
       diag -= s.coef[k];
-      if (s.role[j] == PressureRole::unknown)
-        m.insert(r, row[j]) = s.coef[k];
-      else
+      if (s.role[j] == PressureRole::unknown) {
+        cols[at] = static_cast<int>(row[j]);
+        values[at++] = s.coef[k];
+      } else {
         rhs -= s.coef[k] * given[j];
+      }
     }
-    m.insert(r, r) = diag;
+    cols[diagonal_at] = static_cast<int>(r);
+    values[diagonal_at] = diag;
     b[r] = rhs;
   }
-  m.makeCompressed();
 }
 
 template <class Solver>
 SolveReport run_solver(Solver& solver, const SparseMatrix& m, const Eigen::VectorXd& b, Eigen::VectorXd& p,
-                       double tolerance, int max_iterations) {
-  solver.setTolerance(tolerance);
-  solver.setMaxIterations(max_iterations);
+                       const SolverChoice& choice) {
+  solver.setTolerance(choice.tolerance);
+  solver.setMaxIterations(choice.max_iterations);
   solver.compute(m);
   p = solver.solveWithGuess(b, p);
   SolveReport rep;
   rep.iterations = static_cast<int>(solver.iterations());
   rep.converged = solver.info() == Eigen::Success;
+  return rep;
+}
+
+// The multigrid's first aggregation cells of the unknowns: squares of the system's aggregate size.
+void set_aggregation_cells(const PoissonSystem& s, const std::vector<std::uint32_t>& particle_of_row,
+                           AggregationMultigrid& mg) {
+  std::vector<std::int32_t> cx(particle_of_row.size()), cy(particle_of_row.size());
+  if (s.x.size() != s.size() || !(s.aggregate_size > 0)) {
+    mg.set_cells({}, {});
+    return;
+  }
+  for (std::size_t r = 0; r < particle_of_row.size(); ++r) {
+    cx[r] = static_cast<std::int32_t>(std::floor(s.x[particle_of_row[r]] / s.aggregate_size));
+    cy[r] = static_cast<std::int32_t>(std::floor(s.y[particle_of_row[r]] / s.aggregate_size));
+  }
+  mg.set_cells(std::move(cx), std::move(cy));
+}
+
+// The Krylov solve with the chosen solver and preconditioner.
+SolveReport krylov_solve(const PoissonSystem& s, const std::vector<std::uint32_t>& particle_of_row,
+                         const SolverChoice& choice, const SparseMatrix& m, const Eigen::VectorXd& b,
+                         Eigen::VectorXd& p) {
+  const bool cg = choice.solver == LinearSolver::conjugate_gradient;
+  if (choice.preconditioner == Preconditioner::diagonal) {
+    if (cg) {
+      Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> solver;
+      return run_solver(solver, m, b, p, choice);
+    }
+    Eigen::BiCGSTAB<SparseMatrix> solver;
+    return run_solver(solver, m, b, p, choice);
+  }
+  SolveReport rep;
+  if (cg) {
+    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, AggregationMultigrid> solver;
+    set_aggregation_cells(s, particle_of_row, solver.preconditioner());
+    rep = run_solver(solver, m, b, p, choice);
+    rep.multigrid_levels = solver.preconditioner().level_count();
+  } else {
+    Eigen::BiCGSTAB<SparseMatrix, AggregationMultigrid> solver;
+    set_aggregation_cells(s, particle_of_row, solver.preconditioner());
+    rep = run_solver(solver, m, b, p, choice);
+    rep.multigrid_levels = solver.preconditioner().level_count();
+  }
   return rep;
 }
 
@@ -107,8 +167,7 @@ SolveReport jacobi_sweep(const PoissonSystem& s, std::vector<double>& pressure) 
   return rep;
 }
 
-SolveReport solve_pressure(const PoissonSystem& s, LinearSolver which, double tolerance, int max_iterations,
-                           std::vector<double>& pressure) {
+SolveReport solve_pressure(const PoissonSystem& s, const SolverChoice& choice, std::vector<double>& pressure) {
   std::vector<std::uint32_t> particle_of_row;
   const std::vector<std::uint32_t> row = number_unknowns(s, particle_of_row);
   SparseMatrix m;
@@ -117,15 +176,7 @@ SolveReport solve_pressure(const PoissonSystem& s, LinearSolver which, double to
   Eigen::VectorXd p(b.size());
   for (Eigen::Index r = 0; r < b.size(); ++r) p[r] = pressure[particle_of_row[static_cast<std::size_t>(r)]];
   SolveReport rep;
-  if (b.size() > 0) {
-    if (which == LinearSolver::conjugate_gradient) {
-      Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg;
-      rep = run_solver(cg, m, b, p, tolerance, max_iterations);
-    } else {
-      Eigen::BiCGSTAB<SparseMatrix> bicg;
-      rep = run_solver(bicg, m, b, p, tolerance, max_iterations);
-    }
-  }
+  if (b.size() > 0) rep = krylov_solve(s, particle_of_row, choice, m, b, p);
   for (Eigen::Index r = 0; r < b.size(); ++r) pressure[particle_of_row[static_cast<std::size_t>(r)]] = p[r];
   rep.unknowns = particle_of_row.size();
   rep.relative_residual = relative_residual(s, pressure);

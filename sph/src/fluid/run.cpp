@@ -11,6 +11,7 @@ CheckpointFingerprint fingerprint(const Model& model) {
   f.materials = 1;
   f.particle_spacing = model.settings.particle_spacing;
   f.h_over_dx = model.settings.h_over_dx;
+  f.particles_may_leave = true;  // fluid that leaves the domain is removed (docs/isph.md D11)
   return f;
 }
 

@@ -25,6 +25,16 @@ const char* linear_solver_key(LinearSolver solver) {
   return solver == LinearSolver::conjugate_gradient ? "cg" : "bicgstab";
 }
 
+Preconditioner preconditioner_from(const std::string& key) {
+  if (key == "diagonal") return Preconditioner::diagonal;
+  if (key == "multigrid") return Preconditioner::multigrid;
+  throw std::invalid_argument("preconditioner '" + key + "': expected \"diagonal\" or \"multigrid\"");
+}
+
+const char* preconditioner_key(Preconditioner preconditioner) {
+  return preconditioner == Preconditioner::diagonal ? "diagonal" : "multigrid";
+}
+
 Settings::Settings() {
   kernel = default_kernel;
   particle_spacing = 0.01;

@@ -14,13 +14,27 @@ namespace sph::fluid {
 
 namespace {
 using Index = std::int64_t;
+
+SolverChoice solver_choice(const Settings& st) {
+  SolverChoice c;
+  c.solver = st.solver;
+  c.preconditioner = st.preconditioner;
+  c.tolerance = st.solver_tolerance;
+  c.max_iterations = st.solver_max_iterations;
+  return c;
+}
+
 constexpr std::uint8_t kFluid = static_cast<std::uint8_t>(ParticleKind::soil);
+// The candidates of a step reach this many spacings beyond the kernel support: complete at r* while no particle
+// moves more than half of it in the temporary move (V** dt, about cfl dx).
+constexpr double kSkinOverDx = 0.5;
 }  // namespace
 
 struct Step::Impl {
   Impl(KernelType type, double h) : kernel(type, h) {}
   FluidKernel kernel;
   CellSortedSet sorted;
+  CandidateList candidates;  // pairs within the support plus the skin at r^n
   PairList pairs;
   PoissonSystem system;
   std::vector<double> ax, ay;  // viscous accelerations
@@ -53,8 +67,17 @@ double Step::gravity_y() const { return model_.settings.gravity_factor(model_.st
 void Step::initialise() {
   impl_->sorted.reserve(model_.particles);
   ParticleSet& p = model_.particles;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] != kFluid) p.vx[i] = p.vy[i] = 0.0;  // walls are fixed
+  const double* speed = p.field(model_.fields.body_speed).data();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] == kFluid) continue;
+    if (!is_body(i)) {
+      p.vx[i] = p.vy[i] = 0.0;  // fixed walls
+      continue;
+    }
+    const RigidBody& b = model_.bodies[p.material[i] - 1u];  // a body's particles move with it
+    p.vx[i] = speed[i] * b.direction_x;
+    p.vy[i] = speed[i] * b.direction_y;
+  }
   model_.state.rates_valid = true;  // the state carries no rates: the pressure of the last step is all it needs
 }
 
@@ -62,8 +85,8 @@ double Step::stable_time_step() const {
   const Settings& st = model_.settings;
   const ParticleSet& p = model_.particles;
   double vmax2 = 0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == kFluid) vmax2 = std::max(vmax2, p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+  for (std::size_t i = 0; i < p.size(); ++i)  // fluid and rigid bodies (fixed walls are at rest)
+    vmax2 = std::max(vmax2, p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
   const double dx = st.particle_spacing;
   double dt = std::numeric_limits<double>::infinity();
   if (vmax2 > 0) dt = std::min(dt, st.cfl * dx / std::sqrt(vmax2));  // eq. 48
@@ -121,7 +144,8 @@ void Step::provisional_density(double dt) {
   const double rho0 = model_.settings.rest_density, w0 = impl_->kernel.value(0.0);
   const double scale = 1.0 / impl_->lattice_kernel_sum;
   const bool correct = model_.settings.compression_correction;
-  // the walls' velocity in the fluid's continuity sum: the body-force increment (decision D7)
+  // the walls' velocity in the fluid's continuity sum: their own (0, or a rigid body's) plus the body-force
+  // increment (decisions D7, D17)
   const double wvx = gravity_x() * dt, wvy = gravity_y() * dt;
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
@@ -133,7 +157,7 @@ void Step::provisional_density(double dt) {
       sum += terms::kernel_density_share(p.mass[j], pl.W[q]);
       if (!fluid) continue;
       const bool wall = p.kind[j] != kFluid;
-      const double vjx = wall ? wvx : p.vx[j], vjy = wall ? wvy : p.vy[j];
+      const double vjx = wall ? p.vx[j] + wvx : p.vx[j], vjy = wall ? p.vy[j] + wvy : p.vy[j];
       div += terms::continuity_share(p.mass[j], p.vx[i] - vjx, p.vy[i] - vjy, pl.F[q], pl.dx[q], pl.dy[q]);
     }
     a.kernel_density[i] = sum * scale;
@@ -215,15 +239,22 @@ void Step::extrapolate_wall_pressure() {
   const Settings& st = model_.settings;
   const Index n = static_cast<Index>(p.size());
   const double gx = gravity_x(), gy = gravity_y();
+  const double* acceleration = p.field(model_.fields.body_acceleration).data();
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] == kFluid) continue;
+    double ax = 0, ay = 0;  // a rigid body's acceleration: the Neumann condition dP/dn = rho (g - a).n (D18)
+    if (is_body(i)) {
+      const RigidBody& b = model_.bodies[p.material[i] - 1u];
+      ax = acceleration[i] * b.direction_x;
+      ay = acceleration[i] * b.direction_y;
+    }
     double num = 0, den = 0;
     for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q) {
       const std::uint32_t j = pl.j[q];
       if (p.kind[j] != kFluid) continue;  // walls read only fluid values (no data race)
-      num += terms::wall_pressure_share(a.pressure[j], st.rest_density, gx, gy, pl.dx[q], pl.dy[q], pl.W[q]);
+      num += terms::wall_pressure_share(a.pressure[j], st.rest_density, gx - ax, gy - ay, pl.dx[q], pl.dy[q], pl.W[q]);
       den += pl.W[q];
     }
     a.pressure[i] = den > 0 ? std::max(num / den, 0.0) : 0.0;
@@ -251,6 +282,9 @@ void Step::assemble_pressure_equation(double dt) {
   sys.col = pl.j;
   sys.coef.resize(pl.pair_count());
   sys.source.resize(p.size());
+  sys.x = p.x;  // r*: the multigrid's aggregates
+  sys.y = p.y;
+  sys.aggregate_size = 2.0 * st.particle_spacing;
   impl_->bx.assign(p.size(), 0.0);
   impl_->by.assign(p.size(), 0.0);
   const Arrays a = model_.arrays();
@@ -308,7 +342,7 @@ void Step::solve_pressure_equation(double dt) {
     if (explicit_mode)
       diag_.solve = jacobi_sweep(impl_->system, pressure);
     else
-      diag_.solve = solve_pressure(impl_->system, st.solver, st.solver_tolerance, st.solver_max_iterations, pressure);
+      diag_.solve = solve_pressure(impl_->system, solver_choice(st), pressure);
   }
   extrapolate_wall_pressure();
   diag_.wall_passes = static_cast<std::size_t>(passes);
@@ -355,11 +389,31 @@ void Step::correct(double dt) {
   }
 }
 
+// The step's one sort and its candidate pairs, at the current positions.
+void Step::list_candidates() {
+  ParticleSet& p = model_.particles;
+  const double radius = impl_->kernel.support() + kSkinOverDx * model_.settings.particle_spacing;
+  impl_->sorted.sort(p, radius);
+  impl_->candidates.list(p, impl_->sorted, radius);
+}
+
+// Whether a particle has moved more than half the skin since the candidates were listed (at r^n: x_start).
+bool Step::moved_beyond_half_skin() const {
+  const ParticleSet& p = model_.particles;
+  const double* xs = p.field(model_.fields.x_start).data();
+  const double* ys = p.field(model_.fields.y_start).data();
+  const double half = 0.5 * kSkinOverDx * model_.settings.particle_spacing, limit2 = half * half;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double ddx = p.x[i] - xs[i], ddy = p.y[i] - ys[i];
+    if (ddx * ddx + ddy * ddy > limit2) return true;
+  }
+  return false;
+}
+
 void Step::advance(double dt) {
   ParticleSet& p = model_.particles;
-  const double cell = impl_->kernel.support();
-  impl_->sorted.sort(p, cell);
-  impl_->pairs.build(p, impl_->sorted, impl_->kernel);
+  list_candidates();
+  impl_->pairs.build(p, impl_->candidates, impl_->kernel);
   {
     const Arrays a = model_.arrays();
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -373,16 +427,19 @@ void Step::advance(double dt) {
   const double wvx = gravity_x() * dt, wvy = gravity_y() * dt;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const bool fluid = p.kind[i] == kFluid;
-    p.x[i] = terms::temporary_position(p.x[i], fluid ? p.vx[i] : wvx, dt);
-    p.y[i] = terms::temporary_position(p.y[i], fluid ? p.vy[i] : wvy, dt);
+    p.x[i] = terms::temporary_position(p.x[i], fluid ? p.vx[i] : p.vx[i] + wvx, dt);  // walls: D12, D17
+    p.y[i] = terms::temporary_position(p.y[i], fluid ? p.vy[i] : p.vy[i] + wvy, dt);
   }
-  impl_->sorted.sort(p, cell);
-  impl_->pairs.build(p, impl_->sorted, impl_->kernel);
+  if (moved_beyond_half_skin()) list_candidates();  // a fast step: list again at r*
+  impl_->pairs.build(p, impl_->candidates, impl_->kernel);
   provisional_density(dt);
   mark_roles();
   solve_pressure_equation(dt);
   correct(dt);
+  body_forces();
   finish_positions(dt);
+  move_bodies(dt);
+  remove_escaped();
   diag_.time_step = dt;
   model_.state.time += dt;
   model_.state.step += 1;
@@ -396,7 +453,7 @@ void Step::finish_positions(double dt) {
   double err_max = 0, err_sum = 0;
   std::size_t nf = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != kFluid) {
+    if (p.kind[i] != kFluid) {  // walls back to r^n (rigid bodies then move in move_bodies)
       p.x[i] = a.x_start[i];
       p.y[i] = a.y_start[i];
       continue;
@@ -410,6 +467,121 @@ void Step::finish_positions(double dt) {
   }
   diag_.max_density_error = err_max;
   diag_.mean_density_error = nf > 0 ? err_sum / static_cast<double>(nf) : 0.0;
+}
+
+bool Step::is_body(std::size_t i) const {
+  const ParticleSet& p = model_.particles;
+  return p.kind[i] != kFluid && p.material[i] > 0 && p.material[i] <= model_.bodies.size();
+}
+
+// The fluid's pressure force on every rigid body at r* (decision D19): the reaction of the pair forces of the
+// symmetric gradient I9, m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_j W_ji summed over the body's particles j and their
+// fluid neighbours i; per particle in parallel, then summed in particle order (the same for any thread count).
+void Step::body_forces() {
+  const std::size_t nb = model_.bodies.size();
+  diag_.body_force_x.assign(nb, 0.0);
+  diag_.body_force_y.assign(nb, 0.0);
+  if (nb == 0) return;
+  const ParticleSet& p = model_.particles;
+  const ConstArrays a(model_.particles, model_.fields);
+  const PairList& pl = impl_->pairs;
+  const Index n = static_cast<Index>(p.size());
+  impl_->ax.assign(p.size(), 0.0);
+  impl_->ay.assign(p.size(), 0.0);
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto jb = static_cast<std::size_t>(k);
+    if (!is_body(jb)) continue;
+    double fx = 0, fy = 0;
+    for (std::uint32_t q = pl.start[jb]; q < pl.start[jb + 1]; ++q) {
+      const std::uint32_t i = pl.j[q];
+      if (p.kind[i] != kFluid) continue;
+      // pl.dx = x_j - x_i here: grad_j W_ji = F (x_j - x_i); the force on j is -m_j m_i (...) grad_j W_ji
+      const double f = -p.mass[jb] * terms::pressure_gradient_factor(p.mass[i], a.pressure[jb], a.provisional_density[jb],
+                                                                       a.pressure[i], a.provisional_density[i], pl.F[q]);
+      fx += f * pl.dx[q];
+      fy += f * pl.dy[q];
+    }
+    impl_->ax[jb] = fx;
+    impl_->ay[jb] = fy;
+  }
+  for (std::size_t j = 0; j < p.size(); ++j)
+    if (is_body(j)) {
+      diag_.body_force_x[p.material[j] - 1u] += impl_->ax[j];
+      diag_.body_force_y[p.material[j] - 1u] += impl_->ay[j];
+    }
+}
+
+// The rigid bodies to t + dt: the prescribed law, or gravity and the fluid's force along the direction (free,
+// frictionless, trapezoidal travel as the fluid's positions); held at stop_travel once reached (D19). Their
+// particles are placed at x0 + s e with the velocity v e.
+void Step::move_bodies(double dt) {
+  if (model_.bodies.empty()) return;
+  ParticleSet& p = model_.particles;
+  double* travel = p.field(model_.fields.body_travel).data();
+  double* speed = p.field(model_.fields.body_speed).data();
+  double* acceleration = p.field(model_.fields.body_acceleration).data();
+  const double t_end = model_.state.time + dt;
+  const double gx = gravity_x(), gy = gravity_y();
+  std::vector<double> s(model_.bodies.size(), 0.0), v(model_.bodies.size(), 0.0), acc(model_.bodies.size(), 0.0);
+  std::vector<char> seen(model_.bodies.size(), 0);
+  for (std::size_t i = 0; i < p.size() ; ++i) {  // the bodies' state at t (held by each of their particles)
+    if (!is_body(i) || seen[p.material[i] - 1u]) continue;
+    const std::size_t b = p.material[i] - 1u;
+    seen[b] = 1;
+    s[b] = travel[i];
+    v[b] = speed[i];
+  }
+  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
+    const RigidBody& body = model_.bodies[b];
+    const double s0 = s[b], v0 = v[b];
+    if (s0 >= body.stop_travel || t_end <= body.start_time) {
+      v[b] = acc[b] = 0.0;
+      continue;
+    }
+    if (body.motion == RigidBody::Motion::free) {
+      const double force = diag_.body_force_x[b] * body.direction_x + diag_.body_force_y[b] * body.direction_y;
+      acc[b] = gx * body.direction_x + gy * body.direction_y + force / body.mass();
+      v[b] = v0 + acc[b] * dt;
+      s[b] = s0 + 0.5 * dt * (v0 + v[b]);
+    } else {
+      body.prescribed(t_end, s[b], v[b]);
+      acc[b] = (v[b] - v0) / dt;
+    }
+    if (s[b] >= body.stop_travel) {  // the stop: abrupt, as the experiment's
+      s[b] = body.stop_travel;
+      v[b] = acc[b] = 0.0;
+    }
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!is_body(i)) continue;
+    const std::size_t b = p.material[i] - 1u;
+    const RigidBody& body = model_.bodies[b];
+    travel[i] = s[b];
+    speed[i] = v[b];
+    acceleration[i] = acc[b];
+    p.x[i] = p.x0[i] + s[b] * body.direction_x;
+    p.y[i] = p.y0[i] + s[b] * body.direction_y;
+    p.vx[i] = v[b] * body.direction_x;
+    p.vy[i] = v[b] * body.direction_y;
+  }
+}
+
+// Fluid particles outside the domain are removed (the seed paper deletes particles that leave; D11).
+void Step::remove_escaped() {
+  ParticleSet& p = model_.particles;
+  const Settings& st = model_.settings;
+  diag_.removed_particles = 0;
+  std::vector<std::uint8_t> drop(p.size(), 0);
+  bool any = false;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != kFluid) continue;
+    const bool out = !(p.x[i] >= st.domain_x_min && p.x[i] <= st.domain_x_max && p.y[i] >= st.domain_y_min &&
+                       p.y[i] <= st.domain_y_max);
+    drop[i] = out;
+    any = any || out;
+  }
+  if (any) diag_.removed_particles = p.remove(drop);
 }
 
 Energies Step::energies() const { return moving_energies(model_.particles, model_.settings); }

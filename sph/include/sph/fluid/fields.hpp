@@ -13,6 +13,9 @@ struct Fields {
   FieldId provisional_density;  // rho* from continuity based on rho0 (seed eq. 32) [kg/m^3]
   FieldId kernel_density;  // sum_j m_j W_ij, the free-surface indicator [kg/m^3]
   FieldId free_surface;  // 1 where kernel_density < beta rho0 (pressure 0), else 0
+  // state of the rigid bodies (checkpointed), held by each particle of a body (0 elsewhere): its travel along the
+  // body's direction [m], speed [m/s] and acceleration [m/s^2] (the wall-pressure extrapolation reads it)
+  FieldId body_travel, body_speed, body_acceleration;
   // step workspace (not checkpointed): the state at the start of the step, carried across the mid-step sort
   FieldId x_start, y_start, vx_start, vy_start;
 

@@ -21,6 +21,9 @@ struct PoissonSystem {
   std::vector<double> coef;  // B_ij
   std::vector<double> source;  // s_i
   std::vector<PressureRole> role;
+  // positions of the particles (for the multigrid preconditioner's aggregates; may be empty otherwise) [m]
+  std::vector<double> x, y;
+  double aggregate_size = 0;  // the width of the first level's aggregation cells [m] (2 dx)
   std::size_t size() const { return role.size(); }
 };
 
@@ -29,17 +32,25 @@ struct SolveReport {
   double relative_residual = 0;  // |b - M p| / |b| over the unknowns after the solve
   bool converged = true;  // iterative: the tolerance was reached within the iteration limit
   std::size_t unknowns = 0;
+  int multigrid_levels = 0;  // levels of the multigrid preconditioner (0: diagonal preconditioner or explicit)
 };
 
 // One Jacobi sweep (seed eq. 37) from the pressures in `pressure` (the previous step's unknowns, the given values);
 // writes the unknowns' new pressures, keeps the given ones.
 SolveReport jacobi_sweep(const PoissonSystem& system, std::vector<double>& pressure);
 
-// Solves the system to `tolerance` (relative residual) with CG or BiCGSTAB (diagonal preconditioner), starting
-// from `pressure` (which also holds the given values). CG needs the symmetric matrix that equal particle masses
-// give (every particle rho0 dx^2).
-SolveReport solve_pressure(const PoissonSystem& system, LinearSolver solver, double tolerance, int max_iterations,
-                           std::vector<double>& pressure);
+// How the iterative mode solves: Eigen's CG or BiCGSTAB with a preconditioner, to a relative residual.
+struct SolverChoice {
+  LinearSolver solver = LinearSolver::conjugate_gradient;
+  Preconditioner preconditioner = Preconditioner::multigrid;
+  double tolerance = 1e-8;
+  int max_iterations = 2000;
+};
+
+// Solves the system to `tolerance` (relative residual |b - M p| / |b|), starting from `pressure` (which also holds
+// the given values). CG needs the symmetric matrix that equal particle masses give (every particle rho0 dx^2). The
+// multigrid preconditioner needs the system's positions and aggregate size.
+SolveReport solve_pressure(const PoissonSystem& system, const SolverChoice& choice, std::vector<double>& pressure);
 
 // |b - M p| / |b| of a pressure field (the explicit mode's remaining error).
 double relative_residual(const PoissonSystem& system, const std::vector<double>& pressure);

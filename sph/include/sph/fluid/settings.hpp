@@ -5,6 +5,7 @@
 // comes from sph::EngineSettings; this struct adds the fluid's options and its own defaults for two engine
 // settings (h = 1.5 dx and CFL 0.1, the seed's values; the Wendland C2 kernel, decision D16). docs/isph.md lists the
 // equations, the decisions where the paper is wrong or silent, and every default below with its source.
+#include <limits>
 #include <string>
 
 #include "sph/engine/settings.hpp"
@@ -18,6 +19,10 @@ enum class PressureMode {
 };
 
 enum class LinearSolver { conjugate_gradient, bicgstab };
+
+// The preconditioner of the Krylov solve: the diagonal (Jacobi), or one V-cycle of aggregation multigrid (its
+// iteration count does not grow with the particle count; docs/isph.md section 3).
+enum class Preconditioner { diagonal, multigrid };
 
 struct Settings : EngineSettings {
   static constexpr double default_h_over_dx = 1.5;  // h = 1.5 dx (seed, dam break)
@@ -44,13 +49,21 @@ struct Settings : EngineSettings {
 
   PressureMode pressure_mode = PressureMode::iterative;
   LinearSolver solver = LinearSolver::conjugate_gradient;
+  Preconditioner preconditioner = Preconditioner::multigrid;
   double solver_tolerance = 1.0e-8;  // relative residual |b - M p| / |b| of the iterative mode (D10)
   int solver_max_iterations = 2000;
   // iterative mode: solves of the fluid's equation per step, each after a new wall-pressure extrapolation (the
   // explicit mode does one extrapolation and one sweep)
   int wall_passes = 2;
 
-  int wall_layers = 3;  // fixed wall particle rows (seed: 3); at least ceil(2h/dx)
+  int wall_layers = 3;
+
+  // The domain: fluid particles that leave it are removed (the seed paper deletes them; docs/isph.md D11) [m].
+  // Unbounded by default.
+  double domain_x_min = -std::numeric_limits<double>::infinity();
+  double domain_x_max = std::numeric_limits<double>::infinity();
+  double domain_y_min = -std::numeric_limits<double>::infinity();
+  double domain_y_max = std::numeric_limits<double>::infinity();  // fixed wall particle rows (seed: 3); at least ceil(2h/dx)
 
   double eta() const { return eta_over_h * smoothing_length(); }
   double particle_mass() const { return rest_density * particle_spacing * particle_spacing; }  // [kg/m]
@@ -65,5 +78,8 @@ PressureMode pressure_mode_from(const std::string& key);
 const char* pressure_mode_key(PressureMode mode);
 LinearSolver linear_solver_from(const std::string& key);
 const char* linear_solver_key(LinearSolver solver);
+// "diagonal" / "multigrid".
+Preconditioner preconditioner_from(const std::string& key);
+const char* preconditioner_key(Preconditioner preconditioner);
 
 }  // namespace sph::fluid

@@ -3,14 +3,17 @@
 //   1  V*  = V^n + g dt                                      body force (eqs. 24-25)
 //   2  V** = V* + dt (mu/rho lap V*)                         viscous step (eqs. 22, 26-28)
 //      r*  = r^n + V** dt                                    temporary positions (eqs. 29-30)
-//      sort by cell at r*; rho* = rho0 + dt sum m_j V**_ij . grad W (eq. 32); free surface by the kernel-sum density
+//      rho* = rho0 + dt sum m_j V**_ij . grad W (eq. 32); free surface by the kernel-sum density
 //   3  sum_j B_ij (P_i - P_j) = (rho0 - rho*_i)/(rho0 dt^2)  pressure (eqs. 35-37: one Jacobi sweep, or solved)
 //      V^{n+1} = V** - dt sum m_j (P_i/rho*_i^2 + P_j/rho*_j^2) grad W   correction (eqs. 38-40, 46)
 //      r^{n+1} = r^n + dt/2 (V^n + V^{n+1})                  trapezoidal rule (eqs. 31, 41-42)
-// Wall particles are fixed (velocity 0) and take part in the continuity sums and the viscous term (no-slip); their
-// pressure is extrapolated from the fluid with the hydrostatic difference and enters the fluid's pressure equation
-// and gradient as a given value. docs/isph.md gives the decisions.
+//      rigid bodies moved (prescribed or by gravity and the fluid's pressure force); fluid that left the domain removed
+// Wall particles are fixed (velocity 0) or belong to a rigid body (its velocity), and take part in the continuity
+// sums and the viscous term (no-slip); their pressure is extrapolated from the fluid with the hydrostatic difference
+// (and the body's acceleration) and enters the fluid's pressure equation and gradient as a given value.
+// docs/isph.md gives the decisions.
 #include <memory>
+#include <vector>
 
 #include "sph/engine/stepper.hpp"
 #include "sph/fluid/model.hpp"
@@ -26,6 +29,8 @@ struct StepDiagnostics {
   std::size_t surface_particles = 0;
   std::size_t wall_passes = 0;  // wall extrapolations + solves of the last step
   double time_step = 0;
+  std::size_t removed_particles = 0;  // fluid particles that left the domain in the last step
+  std::vector<double> body_force_x, body_force_y;  // the fluid's pressure force on each rigid body [N/m]
 };
 
 class Step : public Stepper {
@@ -50,6 +55,8 @@ class Step : public Stepper {
  private:
   double gravity_x() const;
   double gravity_y() const;
+  void list_candidates();
+  bool moved_beyond_half_skin() const;
   void viscous_step(double dt);
   void provisional_density(double dt);
   void moment_matrices();
@@ -62,6 +69,10 @@ class Step : public Stepper {
   void solve_pressure_equation(double dt);
   void correct(double dt);
   void finish_positions(double dt);
+  void body_forces();
+  void move_bodies(double dt);
+  void remove_escaped();
+  bool is_body(std::size_t i) const;
 
   Model& model_;
   StepDiagnostics diag_;
