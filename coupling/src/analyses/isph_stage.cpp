@@ -20,7 +20,9 @@ namespace {
 
 sph::fluid::Model build_isph_model(const IsphAnalysis& a) {
   sph::fluid::Model model(a.settings);
-  double top = -std::numeric_limits<double>::infinity();
+  for (const IsphSolid& solid : a.solids) sph::fluid::add_solid_wall(model, solid.polygon);
+  for (const IsphBody& body : a.bodies) sph::fluid::add_rigid_body(model, body.polygon, body.body);
+  double top = -std::numeric_limits<double>::infinity();  // the water fills around the solids and bodies
   for (const TankRectangle& w : a.water) {
     sph::fluid::add_fluid_block(model, w.x_min, w.y_min, w.x_max, w.y_max);
     top = std::max(top, w.y_max);

@@ -27,6 +27,14 @@ void read_numerics(JsonReader& r, sph::fluid::Settings& s) {
       r.diagnostics().error(r.path_of("pressure"), "expected \"explicit\" or \"iterative\", got \"" + *mode + "\"");
     }
   }
+  if (auto preconditioner = r.string("preconditioner", Need::optional)) {
+    try {
+      s.preconditioner = sph::fluid::preconditioner_from(*preconditioner);
+    } catch (const std::exception&) {
+      r.diagnostics().error(r.path_of("preconditioner"),
+                            "expected \"multigrid\" or \"diagonal\", got \"" + *preconditioner + "\"");
+    }
+  }
   if (auto solver = r.string("solver", Need::optional)) {
     try {
       s.solver = sph::fluid::linear_solver_from(*solver);
@@ -43,7 +51,13 @@ IsphAnalysis read_isph_analysis(JsonReader& isph) {
   IsphAnalysis a;
   read_numerics(isph, a.settings);
   read_tank(isph, a.tank);
+  read_isph_geometry(isph, a);
   read_tank_rectangles(isph, "water", a.tank, a.water);
+  // fluid leaving the tank through its walls' outer faces (or below its floor) is removed (docs/isph.md D11)
+  const double wall = a.settings.wall_layers * a.settings.particle_spacing;
+  a.settings.domain_x_min = a.tank.x_min - wall;
+  a.settings.domain_x_max = a.tank.x_max + wall;
+  a.settings.domain_y_min = a.tank.y_min - wall;
   read_tank_monitors(isph, a.monitors, false);
   isph.finish();
   try {

@@ -2,6 +2,9 @@
 // Shared between the scene readers (scene.cpp, scene_section.cpp); not part of the public interface.
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include "coupling/scene/json_reader.hpp"
 #include "coupling/scene/scene.hpp"
@@ -30,6 +33,11 @@ std::optional<double> read_minimum_depth(JsonReader& search);
 // `surfaces`; each is checked admissible on `section` (when valid) and refused at its JSON path with the reason.
 void read_given_surfaces(JsonReader& lem, const slope::Section* section, const slope::SliceOptions& slicing,
                          std::vector<GivenSurface>& surfaces);
+
+// parent.<key>: a simple polygon of at least 3 [x, y] points [m] with an area; faults reported at its path (`what`
+// names the thing in the message, e.g. "a body"). nullopt when invalid.
+std::optional<std::vector<std::pair<double, double>>> read_simple_polygon(JsonReader& parent, std::string_view key,
+                                                                       std::string_view what);
 
 // The raw blocks of the scene that the SPH readers take (pointers into the parsed document; null when absent).
 struct SphBlocks {

@@ -301,6 +301,30 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   return a;
 }
 
+std::optional<std::vector<std::pair<double, double>>> read_simple_polygon(JsonReader& parent, std::string_view key,
+                                                                       std::string_view what) {
+  Diagnostics& diagnostics = parent.diagnostics();
+  const nlohmann::json* polygon =
+      parent.array(key, Need::required, 3, limits::polygon_vertices, "an array of at least 3 [x, y] points");
+  if (!polygon) return std::nullopt;
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t k = 0; k < polygon->size(); ++k)
+    if (auto p = read_pair((*polygon)[k], index_path(parent.path_of(key), k), diagnostics)) out.push_back(*p);
+  if (out.size() != polygon->size()) return std::nullopt;
+  CGAL::Polygon_2<CGAL::Exact_predicates_inexact_constructions_kernel> cgal;
+  for (const auto& [x, y] : out) cgal.push_back({x, y});
+  if (!cgal.is_simple()) {
+    diagnostics.error(parent.path_of(key),
+                      "the polygon crosses itself (" + std::string(what) + " must be a simple polygon)");
+    return std::nullopt;
+  }
+  if (!(std::abs(cgal.area()) > 0.0)) {
+    diagnostics.error(parent.path_of(key), "the polygon has no area");
+    return std::nullopt;
+  }
+  return out;
+}
+
 std::optional<std::vector<ParticleBody>> read_particle_bodies(const nlohmann::json& bodies, Diagnostics& diagnostics) {
   std::vector<ParticleBody> out;
   const std::size_t errors_before = diagnostics.size();
@@ -313,21 +337,8 @@ std::optional<std::vector<ParticleBody>> read_particle_bodies(const nlohmann::js
     JsonReader b(bodies[i], index_path("bodies", i), diagnostics);
     ParticleBody body;
     body.name = b.string("name", Need::optional).value_or("body " + std::to_string(i));
-    if (const nlohmann::json* polygon =
-            b.array("polygon_m", Need::required, 3, limits::polygon_vertices, "an array of at least 3 [x, y] points")) {
-      for (std::size_t k = 0; k < polygon->size(); ++k)
-        if (auto p = read_pair((*polygon)[k], index_path(b.path_of("polygon_m"), k), diagnostics))
-          body.polygon.push_back({p->first, p->second});
-      if (body.polygon.size() == polygon->size()) {
-        CGAL::Polygon_2<CGAL::Exact_predicates_inexact_constructions_kernel> cgal;
-        for (const auto& p : body.polygon) cgal.push_back({p.x, p.y});
-        if (!cgal.is_simple()) {
-          diagnostics.error(b.path_of("polygon_m"), "the polygon crosses itself (a body must be a simple polygon)");
-        } else if (polygon_area(body.polygon) <= 0.0) {
-          diagnostics.error(b.path_of("polygon_m"), "the polygon has no area");
-        }
-      }
-    }
+    if (auto polygon = read_simple_polygon(b, "polygon_m", "a body"))
+      for (const auto& [x, y] : *polygon) body.polygon.push_back({x, y});
     if (auto m = b.object("material", Need::required)) {
       if (auto material = read_material(*m)) {
         body.material = *material;
