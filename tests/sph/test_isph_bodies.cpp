@@ -272,3 +272,34 @@ TEST_CASE("ISPH fluid leaving the domain is removed, its mass accounted, and a r
   CHECK(resumed.particles.vy == straight.particles.vy);
   std::filesystem::remove_all(dir);
 }
+
+// A splash against a wall (the stability matrix's isph_splash_wall at a/15): the Martin & Moyce column in a tank
+// 2a long with walls 10a high; the surge runs up the far wall and falls back in fragments. Before decision D21 (no
+// tension) the fragments under suction pulled together and the run blew up at t = 0.227-0.24 s at this spacing (and
+// a/20); now it runs through and no fluid particle's centre passes a wall's first row.
+TEST_CASE("ISPH a splash against a wall runs through with the fluid inside the tank", "[sph][isph]") {
+  Settings st;
+  const double a = 0.05715;
+  st.particle_spacing = a / 15;
+  st.end_time = 0.3;
+  Model m(st);
+  add_fluid_block(m, 0, 0, a, 2 * a);
+  add_tank_walls(m, 0, 2 * a, 0, 10 * a);
+  set_hydrostatic_pressure(m, 2 * a - 0.5 * st.particle_spacing);
+  const std::size_t fluid0 = m.particles.count(sph::ParticleKind::soil);
+  std::size_t clamped_steps = 0, outside = 0;
+  const double row = 0.5 * st.particle_spacing;  // the walls' first rows: dx/2 beyond the inner faces
+  const auto sum = run(m, {}, {}, [&](const Step& s, const sph::RunState&) {
+    clamped_steps += s.diagnostics().tension_clamped > 0;
+    for (std::size_t i = 0; i < m.particles.size(); ++i)
+      if (m.particles.kind[i] == kFluid &&
+          (m.particles.x[i] < -row || m.particles.x[i] > 2 * a + row || m.particles.y[i] < -row))
+        ++outside;  // a centre beyond a wall's first row of particles
+  });
+  std::printf("splash at a/15: %s at t = %.3f s, %zu steps with tension clamped, %zu particle-steps outside\n",
+              sum.stopped_because.c_str(), m.state.time, clamped_steps, outside);
+  CHECK(sum.stopped_because == "end_time");
+  CHECK(m.particles.count(sph::ParticleKind::soil) == fluid0);
+  CHECK(outside == 0);
+  CHECK(clamped_steps > 0);  // the clamp did act
+}

@@ -118,9 +118,9 @@ void set_aggregation_cells(const PoissonSystem& s, const std::vector<std::uint32
 }
 
 // The Krylov solve with the chosen solver and preconditioner.
-SolveReport krylov_solve(const PoissonSystem& s, const std::vector<std::uint32_t>& particle_of_row,
-                         const SolverChoice& choice, const SparseMatrix& m, const Eigen::VectorXd& b,
-                         Eigen::VectorXd& p) {
+SolveReport krylov_solve_once(const PoissonSystem& s, const std::vector<std::uint32_t>& particle_of_row,
+                              const SolverChoice& choice, const SparseMatrix& m, const Eigen::VectorXd& b,
+                              Eigen::VectorXd& p) {
   const bool cg = choice.solver == LinearSolver::conjugate_gradient;
   if (choice.preconditioner == Preconditioner::diagonal) {
     if (cg) {
@@ -141,6 +141,25 @@ SolveReport krylov_solve(const PoissonSystem& s, const std::vector<std::uint32_t
     set_aggregation_cells(s, particle_of_row, solver.preconditioner());
     rep = run_solver(solver, m, b, p, choice);
     rep.multigrid_levels = solver.preconditioner().level_count();
+  }
+  return rep;
+}
+
+// A multigrid-preconditioned solve that does not converge (or breaks down) is done again from the same first
+// guess with the diagonal preconditioner, whose positive definiteness does not depend on the cycle.
+SolveReport krylov_solve(const PoissonSystem& s, const std::vector<std::uint32_t>& particle_of_row,
+                         const SolverChoice& choice, const SparseMatrix& m, const Eigen::VectorXd& b,
+                         Eigen::VectorXd& p) {
+  const Eigen::VectorXd guess = p;
+  SolveReport rep = krylov_solve_once(s, particle_of_row, choice, m, b, p);
+  if (choice.preconditioner == Preconditioner::multigrid && (!rep.converged || !p.allFinite())) {
+    p = guess;
+    SolverChoice fallback = choice;
+    fallback.preconditioner = Preconditioner::diagonal;
+    const int tried = rep.iterations;
+    rep = krylov_solve_once(s, particle_of_row, fallback, m, b, p);
+    rep.iterations += tried;
+    rep.fell_back = true;
   }
   return rep;
 }

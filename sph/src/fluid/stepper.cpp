@@ -343,9 +343,24 @@ void Step::solve_pressure_equation(double dt) {
       diag_.solve = jacobi_sweep(impl_->system, pressure);
     else
       diag_.solve = solve_pressure(impl_->system, solver_choice(st), pressure);
+    if (!st.tension) clamp_tension(pressure);
   }
   extrapolate_wall_pressure();
   diag_.wall_passes = static_cast<std::size_t>(passes);
+}
+
+// Decision D21: no tension in the fluid. The unknowns' pressures below 0 are set to 0 after each solve (the walls'
+// already are, D8): a splash's fragments under suction pulled each other together and blew up (the dam break
+// against a wall 2a away at a/15, a/20; docs/isph.md D21).
+void Step::clamp_tension(std::vector<double>& pressure) {
+  const PoissonSystem& sys = impl_->system;
+  std::size_t clamped = 0;
+  for (std::size_t i = 0; i < pressure.size(); ++i)
+    if (sys.role[i] == PressureRole::unknown && pressure[i] < 0.0) {
+      pressure[i] = 0.0;
+      ++clamped;
+    }
+  diag_.tension_clamped = clamped;
 }
 
 // V^{n+1} = V** + V_hat (eqs. 38-40, the surface doubling of eq. 46), densities rho*.

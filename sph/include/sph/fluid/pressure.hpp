@@ -32,7 +32,8 @@ struct SolveReport {
   double relative_residual = 0;  // |b - M p| / |b| over the unknowns after the solve
   bool converged = true;  // iterative: the tolerance was reached within the iteration limit
   std::size_t unknowns = 0;
-  int multigrid_levels = 0;  // levels of the multigrid preconditioner (0: diagonal preconditioner or explicit)
+  int multigrid_levels = 0;
+  bool fell_back = false;  // the multigrid-preconditioned solve failed; the diagonal preconditioner solved it  // levels of the multigrid preconditioner (0: diagonal preconditioner or explicit)
 };
 
 // One Jacobi sweep (seed eq. 37) from the pressures in `pressure` (the previous step's unknowns, the given values);

@@ -56,6 +56,10 @@ struct Settings : EngineSettings {
   // explicit mode does one extrapolation and one sweep)
   int wall_passes = 2;
 
+  // false: the unknowns' negative pressures are set to 0 after each solve (no tension, decision D21); true: the
+  // pressure equation's solution as it is
+  bool tension = false;
+
   int wall_layers = 3;
 
   // The domain: fluid particles that leave it are removed (the seed paper deletes them; docs/isph.md D11) [m].

@@ -29,7 +29,8 @@ struct StepDiagnostics {
   std::size_t surface_particles = 0;
   std::size_t wall_passes = 0;  // wall extrapolations + solves of the last step
   double time_step = 0;
-  std::size_t removed_particles = 0;  // fluid particles that left the domain in the last step
+  std::size_t removed_particles = 0;
+  std::size_t tension_clamped = 0;  // unknowns whose negative pressure was set to 0 in the last solve (D21)  // fluid particles that left the domain in the last step
   std::vector<double> body_force_x, body_force_y;  // the fluid's pressure force on each rigid body [N/m]
 };
 
@@ -67,6 +68,7 @@ class Step : public Stepper {
   void assemble_pressure_equation(double dt);
   void add_consistency_term();
   void solve_pressure_equation(double dt);
+  void clamp_tension(std::vector<double>& pressure);
   void correct(double dt);
   void finish_positions(double dt);
   void body_forces();
