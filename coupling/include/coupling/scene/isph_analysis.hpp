@@ -4,6 +4,7 @@
 // docs/scene-format.md; the defaults come from sph::fluid::Settings.
 #include <vector>
 
+#include "coupling/scene/isph_outputs.hpp"
 #include "coupling/scene/json_reader.hpp"
 #include "coupling/scene/tank_scene.hpp"
 #include "sph/fluid/settings.hpp"
@@ -15,6 +16,7 @@ struct IsphAnalysis {
   Tank tank;
   std::vector<TankRectangle> water;  // water at rest at t = 0, hydrostatic pressure
   TankMonitors monitors;  // gauges and the front (no wall height)
+  IsphOutputs outputs;  // snapshots_s, front_reference (read by scene.cpp through isph_outputs.hpp)
 };
 
 // Reads analyses.isph; faults go to the reader's diagnostics with their JSON paths.
