@@ -18,9 +18,7 @@ using nlohmann::json;
 
 namespace {
 
-struct IsphOutcome {
-  int status = -1;
-  std::string output;  // stdout and stderr
+struct IsphOutcome : ProgramRun {  // the program's status and output
   json isph;  // report.json's "isph" block
 };
 
@@ -33,9 +31,7 @@ IsphOutcome run_isph_case(const TemporaryFolder& folder, const std::string& stem
   std::ofstream(file) << scene.dump(1);
   const fs::path out = folder.path / (stem + tag);
   IsphOutcome o;
-  const ProgramRun run = run_sphslope("run '" + file.string() + "' -o '" + out.string() + "'");
-  o.status = run.status;
-  o.output = run.output;
+  static_cast<ProgramRun&>(o) = run_sphslope("run '" + file.string() + "' -o '" + out.string() + "'");
   const json report = read_json(out / "report.json");
   CHECK(unexplained_nulls(report).empty());
   o.isph = report["isph"];

@@ -46,6 +46,19 @@ nlohmann::json case_file(const std::string& name) {
   return nlohmann::json::parse(in);
 }
 
+// The study of cases/<name> at the spacings into dir (options and log kept by the caller for further runs); it must
+// finish.
+StudyResult finished_study(const std::string& name, const std::vector<double>& spacings, const fs::path& dir,
+                           StudyOptions& options, std::ostringstream& log) {
+  options.spacings = spacings;
+  options.output_dir = dir;
+  options.log = &log;
+  const StudyResult r = run_study(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / name, options);
+  INFO(log.str());
+  REQUIRE(r.status == ExitStatus::ok);
+  return r;
+}
+
 }  // namespace
 
 TEST_CASE("study: observed order of manufactured errors e = 3 h^2", "[study]") {
@@ -133,14 +146,9 @@ TEST_CASE("study: the WC-MPS dry collapse is measured against the 2-D scaling la
   // 0.1 (1 + 1.5 x 0.6) = 0.19 m; the height at the wall stays h0 = 0.06 m for a < 0.7.
   const fs::path dir = fresh_dir("mps");
   StudyOptions options;
-  options.spacings = {0.01, 0.02};
-  options.output_dir = dir;
   std::ostringstream log;
-  options.log = &log;
+  const StudyResult r = finished_study("mps_dry_collapse_lajeunesse.json", {0.01, 0.02}, dir, options, log);
   const fs::path scene = fs::path(SPHSLOPE_SOURCE_DIR) / "cases/mps_dry_collapse_lajeunesse.json";
-  const StudyResult r = run_study(scene, options);
-  INFO(log.str());
-  REQUIRE(r.status == ExitStatus::ok);
   const auto& study = r.study;
   CHECK(study["reference_case"] == "mps_dry_collapse");
   CHECK(study["quantities"][0]["key"] == "runout_m");
@@ -188,14 +196,9 @@ TEST_CASE("study: the WC-MPS dry collapse is measured against the 2-D scaling la
 TEST_CASE("study: the ISPH dam break is measured against Martin & Moyce's table", "[study][isph]") {
   const fs::path dir = fresh_dir("isph");
   StudyOptions options;
-  options.spacings = {0.005715};
-  options.output_dir = dir;
   std::ostringstream log;
-  options.log = &log;
+  const StudyResult r = finished_study("isph_dam_break_martin_moyce.json", {0.005715}, dir, options, log);
   const fs::path scene = fs::path(SPHSLOPE_SOURCE_DIR) / "cases/isph_dam_break_martin_moyce.json";
-  const StudyResult r = run_study(scene, options);
-  INFO(log.str());
-  REQUIRE(r.status == ExitStatus::ok);
   const auto& study = r.study;
   CHECK(study["reference_case"] == "isph_dam_break_martin_moyce");
   CHECK(study["quantities"][0]["key"] == "front_rms_error");
