@@ -90,6 +90,13 @@ const BadScene bad_scenes[] = {
     {"isph_unknown_pressure_mode.json", "check", "analyses.isph.pressure: expected \"explicit\" or \"iterative\""},
     {"isph_water_outside_tank.json", "check",
      "analyses.isph.water[0]: the rectangle must lie inside the tank (x 0 to 0.3429 m, y 0 to 0.17145 m)"},
+    {"isph_snapshot_after_end.json", "check",
+     "analyses.isph.snapshots_s[1]: must be at most end_time_s = 0.185 s (got 0.3)"},
+    {"isph_front_reference_unknown_data.json", "check",
+     "analyses.isph.front_reference.data: expected \"martin_moyce_1952_n2_2\""},
+    {"isph_front_reference_without_front.json", "check",
+     "analyses.isph.front_reference: needs the front monitor (set analyses.isph.monitors.front to true)"},
+    {"isph_ritter_without_depth.json", "check", "analyses.isph.front_reference.ritter_depth_m: missing"},
     {"mps_unknown_block_material.json", "check",
      "analyses.mps.blocks[0].material: unknown material \"sand\" (known: glass beads)"},
     {"mps_unknown_material_type.json", "check",
@@ -350,6 +357,7 @@ TEST_CASE("sphslope run on an isph scene writes the isph block and monitors.csv"
   const double a = 0.05715;
   scene["analyses"]["isph"]["particle_spacing_m"] = a / 10.0;  // 200 fluid particles: about a second
   scene["analyses"]["isph"]["end_time_s"] = 0.1;
+  scene["analyses"]["isph"]["snapshots_s"] = {0.05};  // the case's later ones lie beyond the shortened end
   const fs::path file = folder.path / "isph.json";
   std::ofstream(file) << scene.dump();
   const fs::path out = folder.path / "out";

@@ -4,16 +4,19 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "coupling/studies/convergence.hpp"
 #include "coupling/studies/study.hpp"
+#include "sph/fluid/reference_fronts.hpp"
 
 namespace fs = std::filesystem;
 using namespace coupling;
@@ -41,6 +44,19 @@ nlohmann::json case_json(const fs::path& file) {
 nlohmann::json case_file(const std::string& name) {
   std::ifstream in(std::string(SPHSLOPE_SOURCE_DIR) + "/cases/" + name);
   return nlohmann::json::parse(in);
+}
+
+// The study of cases/<name> at the spacings into dir (options and log kept by the caller for further runs); it must
+// finish.
+StudyResult finished_study(const std::string& name, const std::vector<double>& spacings, const fs::path& dir,
+                           StudyOptions& options, std::ostringstream& log) {
+  options.spacings = spacings;
+  options.output_dir = dir;
+  options.log = &log;
+  const StudyResult r = run_study(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / name, options);
+  INFO(log.str());
+  REQUIRE(r.status == ExitStatus::ok);
+  return r;
 }
 
 }  // namespace
@@ -130,14 +146,9 @@ TEST_CASE("study: the WC-MPS dry collapse is measured against the 2-D scaling la
   // 0.1 (1 + 1.5 x 0.6) = 0.19 m; the height at the wall stays h0 = 0.06 m for a < 0.7.
   const fs::path dir = fresh_dir("mps");
   StudyOptions options;
-  options.spacings = {0.01, 0.02};
-  options.output_dir = dir;
   std::ostringstream log;
-  options.log = &log;
+  const StudyResult r = finished_study("mps_dry_collapse_lajeunesse.json", {0.01, 0.02}, dir, options, log);
   const fs::path scene = fs::path(SPHSLOPE_SOURCE_DIR) / "cases/mps_dry_collapse_lajeunesse.json";
-  const StudyResult r = run_study(scene, options);
-  INFO(log.str());
-  REQUIRE(r.status == ExitStatus::ok);
   const auto& study = r.study;
   CHECK(study["reference_case"] == "mps_dry_collapse");
   CHECK(study["quantities"][0]["key"] == "runout_m");
@@ -173,6 +184,80 @@ TEST_CASE("study: the WC-MPS dry collapse is measured against the 2-D scaling la
     const StudyResult moved = run_study(write_scene(dir, "away.json", away), options);
     REQUIRE(moved.status == ExitStatus::invalid_input);
     CHECK(moved.errors.front().find("against the tank's left wall") != std::string::npos);
+  }
+  fs::remove_all(dir);
+}
+
+// The ISPH dam break (cases/isph_dam_break_martin_moyce.json) at a/10: each error is the run's own front, read
+// here from its monitors.csv, against Martin & Moyce's (1952) tabulated front (sph/src/fluid/reference_fronts.cpp),
+// recomputed independently: Z = x_front / a against T = sqrt(2) t sqrt(g/a), linear between the rows, RMS of
+// Z_run / Z - 1 over the points with 0.84 <= T <= 3.33; without a shift, and the smallest over dT = 0, -0.01, ...,
+// -0.3.
+TEST_CASE("study: the ISPH dam break is measured against Martin & Moyce's table", "[study][isph]") {
+  const fs::path dir = fresh_dir("isph");
+  StudyOptions options;
+  std::ostringstream log;
+  const StudyResult r = finished_study("isph_dam_break_martin_moyce.json", {0.005715}, dir, options, log);
+  const fs::path scene = fs::path(SPHSLOPE_SOURCE_DIR) / "cases/isph_dam_break_martin_moyce.json";
+  const auto& study = r.study;
+  CHECK(study["reference_case"] == "isph_dam_break_martin_moyce");
+  CHECK(study["quantities"][0]["key"] == "front_rms_error");
+  CHECK(study["quantities"][1]["key"] == "front_rms_error_shifted");
+  REQUIRE(study["runs"].size() == 1u);
+  const auto& run = study["runs"][0];
+  CHECK(run["particles"].get<int>() == 200);  // 10 x 20 at a/10
+
+  std::vector<double> T, Z;
+  std::ifstream csv(dir / run["folder"].get<std::string>() / "monitors.csv");
+  std::string line;
+  std::getline(csv, line);
+  REQUIRE(line == "time_s,depth_at_0p1_m,front_x_m");
+  const double a = 0.05715, scale = std::sqrt(2.0) * std::sqrt(9.81 / a);
+  while (std::getline(csv, line)) {
+    double t = 0, gauge = 0, x = 0;
+    char c1 = 0, c2 = 0;
+    std::istringstream(line) >> t >> c1 >> gauge >> c2 >> x;
+    T.push_back(t * scale);
+    Z.push_back(x / a);
+  }
+  REQUIRE(T.back() > 3.33);
+  auto rms = [&](double shift) {
+    double sum = 0;
+    int n = 0;
+    for (const sph::fluid::FrontPoint& p : sph::fluid::martin_moyce_1952_n2_2()) {
+      if (p.T < 0.84 || p.T > 3.33) continue;
+      const double at = p.T + shift;
+      std::size_t k = 1;
+      while (k + 1 < T.size() && T[k] < at) ++k;
+      const double z = Z[k - 1] + (at - T[k - 1]) / (T[k] - T[k - 1]) * (Z[k] - Z[k - 1]);
+      sum += (z / p.Z - 1.0) * (z / p.Z - 1.0);
+      ++n;
+    }
+    CHECK(n == 14);
+    return std::sqrt(sum / n);
+  };
+  double shifted = rms(0.0);
+  for (int k = 1; k <= 30; ++k) shifted = std::min(shifted, rms(-0.01 * k));
+  CHECK(run["values"][0].get<double>() == Approx(rms(0.0)).epsilon(1e-9));
+  CHECK(run["values"][1].get<double>() == Approx(shifted).epsilon(1e-9));
+  CHECK(run["errors_vs_reference"][0].get<double>() == run["values"][0].get<double>());
+  CHECK(run["values"][0].get<double>() < 0.2);  // a gross-failure bound only (docs/isph.md section 5: 15 % at a/20)
+
+  {
+    INFO("a scene without the table as its reference, or too short for it, is refused");
+    nlohmann::json plain = case_json(scene);
+    plain["analyses"]["isph"].erase("front_reference");
+    options.output_dir = dir / "plain";
+    const StudyResult refused = run_study(write_scene(dir, "plain.json", plain), options);
+    REQUIRE(refused.status == ExitStatus::invalid_input);
+    CHECK(refused.errors.front().find("study: analyses.isph.front_reference") != std::string::npos);
+    nlohmann::json short_run = case_json(scene);
+    short_run["analyses"]["isph"]["end_time_s"] = 0.15;
+    short_run["analyses"]["isph"]["snapshots_s"] = {0.05};
+    const StudyResult cut = run_study(write_scene(dir, "short.json", short_run), options);
+    REQUIRE(cut.status == ExitStatus::invalid_input);
+    CHECK(cut.errors.front().find("analyses.isph.end_time_s: the front is compared up to T = 3.33") !=
+          std::string::npos);
   }
   fs::remove_all(dir);
 }

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -33,6 +35,32 @@ inline nlohmann::json read_json(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in.good()) throw std::runtime_error("cannot read " + file.string());  // fails the test
   return nlohmann::json::parse(in);
+}
+
+// Every null (or non-finite number) of the report that its object does not explain: a null is explained when the
+// same object holds "error" or "<key>_error" (e.g. factor_of_safety: null next to error), or for
+// lem.settings.minimum_depth_m (null = automatic, documented).
+inline void unexplained_nulls(const nlohmann::json& value, const std::string& path, const nlohmann::json* parent,
+                              const std::string& key, std::vector<std::string>& found) {
+  if (value.is_object()) {
+    for (auto it = value.begin(); it != value.end(); ++it)
+      unexplained_nulls(it.value(), path.empty() ? it.key() : path + "." + it.key(), &value, it.key(), found);
+  } else if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i)
+      unexplained_nulls(value[i], path + "[" + std::to_string(i) + "]", parent, key, found);
+  } else if (value.is_null()) {
+    const bool explained = (parent && (parent->contains("error") || parent->contains(key + "_error"))) ||
+                           path.ends_with("settings.minimum_depth_m");
+    if (!explained) found.push_back(path);
+  } else if (value.is_number_float() && !std::isfinite(value.get<double>())) {
+    found.push_back(path);
+  }
+}
+
+inline std::vector<std::string> unexplained_nulls(const nlohmann::json& report) {
+  std::vector<std::string> found;
+  unexplained_nulls(report, "", nullptr, "", found);
+  return found;
 }
 
 // The sphslope program's exit status (-1 when it did not exit normally, e.g. killed by a signal) and its stdout

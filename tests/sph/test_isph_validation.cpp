@@ -1,18 +1,18 @@
 // Reference checks of the explicit three-step ISPH fluid (docs/isph.md section 4):
 //  * a still water tank: pressure against rho g depth, volume kept, no spurious motion;
 //  * the Martin & Moyce (1952) n^2 = 2 dam break against their tabulated surge-front positions
-//    (tests/sph/data/martin_moyce_1952_n2_2_front.csv, provenance in the file).
+//    (sph::fluid::martin_moyce_1952_n2_2(), sph/src/fluid/reference_fronts.cpp, provenance there).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "sph/fluid/cases.hpp"
+#include "sph/fluid/reference_fronts.hpp"
 #include "sph/fluid/run.hpp"
 #include "sphslope/units.hpp"
 
@@ -191,58 +191,15 @@ TEST_CASE("ISPH checkerboard displacement is restored with the fluid's kernel an
 
 namespace {
 
-struct Series {
-  std::vector<double> t, z;
-  // linear interpolation (the series is sampled every step, far finer than the reference's spacing)
-  double at(double x) const {
-    if (x <= t.front()) return z.front();
-    const auto it = std::upper_bound(t.begin(), t.end(), x);
-    if (it == t.end()) return z.back();
-    const std::size_t k = static_cast<std::size_t>(it - t.begin());
-    const double w = (x - t[k - 1]) / (t[k] - t[k - 1]);
-    return z[k - 1] + w * (z[k] - z[k - 1]);
-  }
-};
-
-Series read_reference(const std::string& path) {
-  std::ifstream in(path);
-  REQUIRE(in.good());
-  Series s;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'T') continue;
-    std::istringstream row(line);
-    double t = 0, z = 0;
-    char comma = 0;
-    row >> t >> comma >> z;
-    s.t.push_back(t);
-    s.z.push_back(z);
-  }
-  return s;
-}
-
-// RMS relative front error against the reference points with t_min <= T, comparing the run at T + shift.
-double rms_error(const Series& run, const Series& ref, double t_min, double shift) {
-  double sum = 0;
-  int n = 0;
-  for (std::size_t k = 0; k < ref.t.size(); ++k) {
-    if (ref.t[k] < t_min) continue;
-    const double e = run.at(ref.t[k] + shift) / ref.z[k] - 1.0;
-    sum += e * e;
-    ++n;
-  }
-  return std::sqrt(sum / n);
-}
-
 // Least-squares slope dZ/dT of the run over [t0, t1].
-double front_slope(const Series& run, double t0, double t1) {
+double front_slope(const FrontSeries& run, double t0, double t1) {
   double st = 0, sz = 0, stt = 0, stz = 0, n = 0;
-  for (std::size_t k = 0; k < run.t.size(); ++k) {
-    if (run.t[k] < t0 || run.t[k] > t1) continue;
-    st += run.t[k];
-    sz += run.z[k];
-    stt += run.t[k] * run.t[k];
-    stz += run.t[k] * run.z[k];
+  for (std::size_t k = 0; k < run.T.size(); ++k) {
+    if (run.T[k] < t0 || run.T[k] > t1) continue;
+    st += run.T[k];
+    sz += run.Z[k];
+    stt += run.T[k] * run.T[k];
+    stz += run.T[k] * run.Z[k];
     n += 1;
   }
   return (n * stz - st * sz) / (n * stt - st * st);
@@ -260,28 +217,24 @@ double front_slope(const Series& run, double t0, double t1) {
 //    over-damped and an inviscid-shallow-water behaviour.
 TEST_CASE("ISPH dam break (Martin & Moyce 1952, n^2 = 2): surge front against the tabulated data",
           "[sph][isph][validation]") {
-  const Series ref =
-      read_reference(std::string(SPHSLOPE_SOURCE_DIR) + "/tests/sph/data/martin_moyce_1952_n2_2_front.csv");
-  REQUIRE(ref.t.size() == 15);
+  const std::span<const FrontPoint> ref = martin_moyce_1952_n2_2();
+  REQUIRE(ref.size() == 15);
   const double a = 0.05715, n = std::sqrt(2.0), tank = 6.0 * a;
   const double t_scale = n * std::sqrt(kG / a);  // T = n t sqrt(g/a)
   Settings st;
   st.particle_spacing = a / 20.0;
   st.pressure_mode = PressureMode::iterative;
-  st.end_time = (ref.t.back() + 0.05) / t_scale;
+  st.end_time = (ref.back().T + 0.05) / t_scale;
   Model m = make_dam_break(st, a, 2.0, tank);
-  Series run_front;
+  FrontSeries run_front;
   const auto sum = run(m, {}, {}, [&](const Step&, const sph::RunState& rs) {
-    run_front.t.push_back(rs.time * t_scale);
-    run_front.z.push_back(front_position(m) / a);
+    run_front.T.push_back(rs.time * t_scale);
+    run_front.Z.push_back(front_position(m) / a);
   });
   REQUIRE(sum.stopped_because == "end_time");
-  const double plain = rms_error(run_front, ref, 0.84, 0.0);
-  double best = plain, best_shift = 0.0;
-  for (int k = 1; k <= 30; ++k) {
-    const double e = rms_error(run_front, ref, 0.84, -0.01 * k);
-    if (e < best) best = e, best_shift = -0.01 * k;
-  }
+  const double plain = front_rms_error(run_front, ref, 0.84, 3.33);
+  const ShiftedFrontError shifted = best_shifted_front_error(run_front, ref, 0.84, 3.33, -0.3, 0.01);
+  const double best = shifted.error, best_shift = shifted.shift;
   const double slope = front_slope(run_front, 2.0, 3.33);
   // no fluid particle has crossed the first row of wall particles (centres at dx/2 outside the wall faces)
   std::size_t outside = 0;

@@ -1,14 +1,21 @@
 // The "isph" stage: the explicit three-step ISPH fluid (analyses.isph, docs/isph.md) in a tank, with its monitors
-// (surface gauges, the surge front) written to monitors.csv and its block of report.json.
+// (surface gauges, the surge front) written to monitors.csv, its figures (figures/isph_*.svg) and its block of
+// report.json; --resume continues it from the run folder's checkpoint.
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <filesystem>
 #include <limits>
 #include <ostream>
 #include <string>
 
+#include "coupling/analyses/isph_front.hpp"
+#include "coupling/analyses/isph_measures.hpp"
+#include "coupling/analyses/sph_stage.hpp"
 #include "coupling/analyses/stage.hpp"
 #include "coupling/analyses/tank_monitors.hpp"
+#include "coupling/analyses/tank_run.hpp"
+#include "coupling/output/isph_figures.hpp"
 #include "coupling/output/isph_report.hpp"
 #include "sph/engine/atomic_file.hpp"
 #include "sph/fluid/cases.hpp"
@@ -35,9 +42,9 @@ sph::fluid::Model build_isph_model(const IsphAnalysis& a) {
 
 double fluid_mass(const sph::ParticleSet& p) { return p.total_mass(sph::ParticleKind::soil); }  // kind 0: fluid
 
-IsphStageResult run_isph(const IsphAnalysis& a, const WorkflowOptions& options) {
-  sph::fluid::Model model = build_isph_model(a);
-  IsphStageResult result;
+double gravity_of(const IsphAnalysis& a) { return std::hypot(a.settings.gravity_x, a.settings.gravity_y); }
+
+void echo_settings(const IsphAnalysis& a, const sph::fluid::Model& model, IsphStageResult& result) {
   result.pressure_mode = sph::fluid::pressure_mode_key(a.settings.pressure_mode);
   result.kernel = a.settings.kernel == sph::KernelType::wendland_c2 ? "wendland_c2" : "cubic_spline";
   result.particle_spacing = a.settings.particle_spacing;
@@ -45,23 +52,141 @@ IsphStageResult run_isph(const IsphAnalysis& a, const WorkflowOptions& options) 
   result.fluid_particles = model.particles.count(sph::ParticleKind::soil);
   result.wall_particles = model.particles.size() - result.fluid_particles;
   result.fluid_mass_start = fluid_mass(model.particles);
-  TankMonitorObserver monitors(a.monitors, a.tank, a.settings.particle_spacing);
-  monitors.sample(model.particles, 0.0);
-  sph::RunOptions run_options;
-  if (options.output_dir) run_options.output_dir = options.output_dir->string();
-  sph::RunCallbacks callbacks;
-  callbacks.observers.push_back(&monitors);
-  double worst = 0;
-  result.summary =
-      sph::fluid::run(model, run_options, callbacks, [&worst](const sph::fluid::Step& s, const sph::RunState&) {
-        worst = std::max(worst, s.diagnostics().max_density_error);
-      });
-  result.max_density_error = worst;
-  if (monitors.table().times.back() < model.state.time) monitors.sample(model.particles, model.state.time);  // the end
+}
+
+// Writes each snapshot's figure into the run folder's figures/ (nothing without a run folder).
+SnapshotObserver::Writer snapshot_writer(const WorkflowOptions& options, const std::string& title) {
+  if (!options.output_dir) return {};
+  const std::filesystem::path dir = *options.output_dir / "figures";
+  return [dir, title](double requested, const IsphSnapshot& snapshot) {
+    std::filesystem::create_directories(dir);
+    const std::string name = snapshot_file_name(requested);
+    sph::write_file_atomically(dir / name, isph_snapshot_svg(snapshot, title));
+    return "figures/" + name;
+  };
+}
+
+// --resume: the model, the monitors' rows, the snapshots already drawn and the figures taken over the run so far.
+void resume_isph(const WorkflowOptions& options, sph::fluid::Model& model, TankMonitorObserver& monitors,
+                 WallCrossingObserver& crossing, SnapshotObserver& snapshots, IsphStageResult& result) {
+  const nlohmann::json earlier = resume_tank_run(
+      options, "isph", [&model](const std::string& path) { sph::fluid::read_checkpoint(path, model); }, model.state,
+      monitors);
+  result.max_density_error = earlier.value("max_density_error", 0.0);
+  result.mean_density_error = earlier.value("mean_density_error", 0.0);
+  result.largest_time_step = earlier.value("largest_time_step_s", 0.0);
+  const nlohmann::json past = earlier.value("fluid_past_walls", nlohmann::json::object());
+  crossing.restore(past.value("most", std::size_t{0}),
+                   past.contains("first_at_s") ? std::optional<double>(past["first_at_s"].get<double>()) : std::nullopt);
+  std::vector<std::string> drawn;
+  for (const double t : snapshots.times())
+    if (t <= model.state.time + 1e-12 && std::filesystem::exists(*options.output_dir / "figures" / snapshot_file_name(t)))
+      drawn.push_back("figures/" + snapshot_file_name(t));
+  snapshots.restore(model.state.time, std::move(drawn));
+}
+
+// What the run says beyond its figures: a time-step bound that never applied, particles the walls did not hold.
+std::vector<std::string> isph_warnings(const IsphAnalysis& a, const IsphStageResult& r) {
+  std::vector<std::string> out;
+  const double bound = a.settings.max_time_step;
+  if (bound > 0 && r.largest_time_step > 0 && r.largest_time_step < bound * (1.0 - 1e-9))
+    out.push_back("analyses.isph.max_time_step_s: " + format_number(bound) +
+                  " s is above every time step the stability limits allowed (the largest taken: " +
+                  format_number(r.largest_time_step) +
+                  " s; cfl dx/|V|max, cfl sqrt(dx/g) and the viscous limit, docs/isph.md section 2): it never "
+                  "applied, the time step cannot exceed those limits");
+  const SurfaceRows rows = surface_row_kernel_sums(a.settings.kernel, a.settings.h_over_dx);
+  const double beta = a.settings.surface_beta, margin = 0.02;  // the kernel sum moves by a few per cent in a flow
+  const std::string rows_text = " (the kernel sum of a flat surface's top row at rest is " + format_number(rows.top) +
+                                " rho0, of the row under it " + format_number(rows.second) + " rho0, docs/isph.md D4)";
+  if (beta < rows.top + margin)
+    out.push_back("analyses.isph.surface_beta: " + format_number(beta) + " is less than " + format_number(margin) +
+                  " above the top row's kernel sum" + rows_text +
+                  ": a surface particle pressed slightly is no longer marked free and P = 0 is not held there");
+  if (beta > rows.second - margin)
+    out.push_back("analyses.isph.surface_beta: " + format_number(beta) + " is less than " + format_number(margin) +
+                  " below the kernel sum of the row under the surface" + rows_text +
+                  ": particles inside the water, spread slightly, are marked free and get P = 0");
+  if (r.past_walls_most > 0)
+    out.push_back("analyses.isph.tank: fluid particles went past the tank's walls (centres beyond the first row of "
+                  "wall particles), first at t = " + format_number(r.past_walls_first_time.value_or(0.0)) +
+                  " s, at most " + std::to_string(r.past_walls_most) + " at one step, " +
+                  std::to_string(r.past_walls_end) + " at the end: the walls did not hold the fluid and results "
+                  "near them are not reliable (docs/stability.md)");
+  return out;
+}
+
+// The figures and checks taken at the end of the run.
+void finish_result(const IsphAnalysis& a, const sph::fluid::Model& model, const WallCrossingObserver& crossing,
+                   IsphStageResult& result) {
+  const double dx = a.settings.particle_spacing;
   result.fluid_mass_end = fluid_mass(model.particles);
   result.front_x = sph::fluid::front_position(model);
+  result.past_walls_end = fluid_past_walls(model.particles, a.tank, dx);
+  result.past_walls_most = std::max(crossing.most(), result.past_walls_end);
+  result.past_walls_first_time = crossing.first_time();
+  result.still_tank = still_tank_check(model, a);
+  const std::optional<FrontReference>& ref = a.outputs.front_reference;
+  if (ref && !ref->data.empty())
+    result.front_errors = martin_moyce_front_errors(result.monitors, {ref->column_width, gravity_of(a), a.tank.x_min});
+  result.warnings = isph_warnings(a, result);
+}
+
+IsphStageResult run_isph(const Scene& scene, const WorkflowOptions& options) {
+  const IsphAnalysis& a = *scene.analyses.isph;
+  sph::fluid::Model model = build_isph_model(a);
+  IsphStageResult result;
+  echo_settings(a, model, result);
+  TankMonitorObserver monitors(a.monitors, a.tank, a.settings.particle_spacing);
+  monitors.sample(model.particles, 0.0);
+  WallCrossingObserver crossing(a.tank, a.settings.particle_spacing);
+  SnapshotObserver snapshots(a.outputs.snapshot_times, model.fields.pressure, a.settings.particle_spacing,
+                             snapshot_writer(options, scene.name));
+  if (options.resume) resume_isph(options, model, monitors, crossing, snapshots, result);
+  sph::RunOptions run_options;
+  if (options.output_dir) run_options.output_dir = options.output_dir->string();
+  run_options.progress_interval_wall_s = 2.0;
+  sph::RunCallbacks callbacks = run_callbacks(options.log, "isph");
+  for (sph::Observer* o : {static_cast<sph::Observer*>(&monitors), static_cast<sph::Observer*>(&crossing),
+                           static_cast<sph::Observer*>(&snapshots)})
+    callbacks.observers.push_back(o);
+  result.summary = sph::fluid::run(model, run_options, callbacks, [&result](const sph::fluid::Step& s,
+                                                                            const sph::RunState&) {
+    const sph::fluid::StepDiagnostics& d = s.diagnostics();
+    result.max_density_error = std::max(result.max_density_error, d.max_density_error);
+    result.mean_density_error = std::max(result.mean_density_error, d.mean_density_error);
+    result.largest_time_step = std::max(result.largest_time_step, d.time_step);
+  });
+  if (monitors.table().times.back() < model.state.time) monitors.sample(model.particles, model.state.time);  // the end
   result.monitors = std::move(monitors.table());
+  result.figures = snapshots.files();
+  finish_result(a, model, crossing, result);
   return result;
+}
+
+// figures/isph_gauges.svg (with gauges) and figures/isph_front.svg (with the front), appended to result.figures.
+void write_isph_figures(const Scene& scene, const std::filesystem::path& dir, IsphStageResult& result) {
+  const IsphAnalysis& a = *scene.analyses.isph;
+  std::filesystem::create_directories(dir / "figures");
+  if (!a.monitors.gauges.empty()) {
+    sph::write_file_atomically(dir / "figures" / "isph_gauges.svg",
+                               isph_gauges_svg(result.monitors, a.monitors.gauges, a.monitors.still_water, scene.name));
+    result.figures.push_back("figures/isph_gauges.svg");
+  }
+  if (!a.monitors.front) return;
+  FrontFigureReferences references;
+  references.far_wall_x = a.tank.x_max;
+  if (const std::optional<FrontReference>& ref = a.outputs.front_reference) {
+    if (!ref->data.empty()) {
+      references.points = martin_moyce_points({ref->column_width, gravity_of(a), a.tank.x_min});
+      references.points_label = "Martin & Moyce (1952), n^2 = 2, a = " + format_number(ref->column_width) + " m";
+    }
+    references.ritter_dam_x = ref->ritter_dam_x;
+    references.ritter_depth = ref->ritter_depth;
+    references.gravity = gravity_of(a);
+  }
+  sph::write_file_atomically(dir / "figures" / "isph_front.svg", isph_front_svg(result.monitors, references, scene.name));
+  result.figures.push_back("figures/isph_front.svg");
 }
 
 }  // namespace
@@ -72,17 +197,18 @@ StageOutcome run_isph_stage(const Scene& scene, StageContext& context) {
   StageOutcome outcome;
   const StageClock::time_point start = StageClock::now();
   try {
-    const IsphStageResult result = run_isph(*scene.analyses.isph, options);
-    out.report["isph"] = isph_report(result);
-    if (options.output_dir)
+    IsphStageResult result = run_isph(scene, options);
+    if (options.output_dir) {
       sph::write_file_atomically(*options.output_dir / "monitors.csv", monitors_csv(result.monitors));
-    if (result.summary.stopped_because != "end_time") {
-      outcome.status = ExitStatus::failed;
-      outcome.errors.push_back("isph: stopped (" + result.summary.stopped_because + ") " + result.summary.diagnostic);
+      write_isph_figures(scene, *options.output_dir, result);
     }
-    if (options.log)
-      *options.log << "isph: " << result.fluid_particles << " fluid particles, " << result.summary.steps
+    out.report["isph"] = isph_report(result);
+    tank_run_outcome(result.summary, "isph", outcome);
+    if (options.log) {
+      *options.log << "isph: " << result.fluid_particles << " fluid particles, " << result.summary.total_steps
                    << " steps to t = " << result.summary.simulated_time << " s, front x = " << result.front_x << " m\n";
+      for (const std::string& w : result.warnings) *options.log << "isph: warning: " << w << "\n";
+    }
   } catch (const std::exception& error) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back(std::string("isph: ") + error.what());

@@ -15,6 +15,7 @@
 #include "coupling/analyses/mps_profiles.hpp"
 #include "coupling/analyses/stage.hpp"
 #include "coupling/analyses/tank_monitors.hpp"
+#include "coupling/analyses/tank_run.hpp"
 #include "coupling/output/mps_report.hpp"
 #include "sph/engine/atomic_file.hpp"
 #include "sph/mps/run.hpp"
@@ -79,24 +80,13 @@ std::vector<std::string> thin_block_warnings(const MpsAnalysis& a) {
   return out;
 }
 
-// --resume: the model continues from the run folder's checkpoint; the monitors keep the rows written before it and
-// the largest speed of the run is carried over from the earlier report.json.
+// --resume: the model continues from the run folder's checkpoint (the monitors keep their earlier rows); returns
+// the largest speed of the run before it, from the earlier report.json.
 double resume_mps(const WorkflowOptions& options, sph::mps::Model& model, TankMonitorObserver& monitors) {
-  if (!options.output_dir) throw std::runtime_error("--resume needs the run folder (-o DIR) that holds checkpoint.bin");
-  const std::filesystem::path checkpoint = *options.output_dir / "checkpoint.bin";
-  if (!std::filesystem::exists(checkpoint))
-    throw std::runtime_error("--resume: no checkpoint at " + checkpoint.string() + " (start the run without --resume)");
-  sph::mps::read_checkpoint(checkpoint.string(), model);
-  std::ifstream csv(*options.output_dir / "monitors.csv");
-  monitors.restore(std::string(std::istreambuf_iterator<char>(csv), {}), model.state.time);
-  double fastest = 0;
-  std::ifstream report(*options.output_dir / "report.json");
-  const nlohmann::json earlier = nlohmann::json::parse(report, nullptr, false);
-  if (!earlier.is_discarded() && earlier.contains("mps") && earlier["mps"].contains("max_speed_m_s"))
-    fastest = earlier["mps"]["max_speed_m_s"].get<double>();
-  if (options.log)
-    *options.log << "mps: resuming at t = " << model.state.time << " s (step " << model.state.step << ")\n";
-  return fastest;
+  const nlohmann::json earlier = resume_tank_run(
+      options, "mps", [&model](const std::string& path) { sph::mps::read_checkpoint(path, model); }, model.state,
+      monitors);
+  return earlier.value("max_speed_m_s", 0.0);
 }
 
 // The settings the report echoes.
@@ -188,14 +178,7 @@ StageOutcome run_mps_stage(const Scene& scene, StageContext& context) {
                                    profiles_svg(result.profiles, a.tank, scene.name, a.dam_x));
       }
     }
-    if (result.summary.stopped_because == "interrupted") {
-      outcome.status = ExitStatus::failed;
-      outcome.errors.push_back("mps: the run was interrupted at t = " + format_number(result.summary.simulated_time) +
-                               " s; continue it with --resume");
-    } else if (result.summary.stopped_because != "end_time") {
-      outcome.status = ExitStatus::failed;
-      outcome.errors.push_back("mps: stopped (" + result.summary.stopped_because + ") " + result.summary.diagnostic);
-    }
+    tank_run_outcome(result.summary, "mps", outcome);
     if (options.log) {
       *options.log << "mps: " << result.moving_particles << " particles, " << result.summary.steps
                    << " steps to t = " << result.summary.simulated_time << " s; front x = " << result.front_end

@@ -3,8 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <sstream>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -58,23 +56,13 @@ std::string TankMonitorObserver::after_step(const sph::ParticleSet& p, const sph
 }
 
 void TankMonitorObserver::restore(const std::string& csv, double time) {
-  std::istringstream in(csv);
-  std::string line;
-  std::string expected = "time_s";
-  for (const std::string& c : table_.columns) expected += "," + c;
-  if (!std::getline(in, line) || line != expected) return;
-  MonitorTable restored;
-  restored.columns = table_.columns;
-  while (std::getline(in, line)) {
-    std::istringstream cells(line);
-    std::string cell;
-    std::vector<double> values;
-    while (std::getline(cells, cell, ',')) values.push_back(std::strtod(cell.c_str(), nullptr));
-    if (values.size() != table_.columns.size() + 1 || values[0] > time + 1e-12) break;
-    restored.times.push_back(values[0]);
-    restored.rows.emplace_back(values.begin() + 1, values.end());
-  }
-  if (restored.times.empty()) return;
+  MonitorTable restored = parse_monitors_csv(csv);
+  if (restored.columns != table_.columns) return;
+  std::size_t kept = 0;
+  while (kept < restored.times.size() && restored.times[kept] <= time + 1e-12) ++kept;
+  if (kept == 0) return;
+  restored.times.resize(kept);
+  restored.rows.resize(kept);
   table_ = std::move(restored);
   next_ = (std::floor(table_.times.back() / monitors_.interval + 1e-9) + 1.0) * monitors_.interval;
 }

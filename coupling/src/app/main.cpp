@@ -251,7 +251,7 @@ void add_study_command(CLI::App& app, CommandLine& cli) {
   cli.study = app.add_subcommand(
       "study", "Error against run time: run the scene at several particle spacings and measure each monitored "
                "quantity against its reference (DIR/study.json, DIR/figures/error_vs_runtime.svg).");
-  cli.study->add_option("SCENE", cli.scene_file, "Scene file with analyses.sph (a slope section, or one column body) or analyses.mps (one granular column)")
+  cli.study->add_option("SCENE", cli.scene_file, "Scene file with analyses.sph (a slope section, or one column body), analyses.mps (one granular column) or analyses.isph (the Martin & Moyce dam break, with its front_reference)")
       ->required()
       ->type_name("FILE");
   cli.study->add_option("--spacings", cli.spacings, "Particle spacings in metres, comma-separated, e.g. 0.4,0.2,0.1")

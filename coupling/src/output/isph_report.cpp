@@ -1,10 +1,34 @@
 // The "isph" block of report.json and monitors.csv (coupling/output/isph_report.hpp).
 #include "coupling/output/isph_report.hpp"
 
-#include <cmath>
-#include <cstdio>
+#include "coupling/analyses/isph_front.hpp"
 
 namespace coupling {
+
+namespace {
+
+nlohmann::json still_tank_json(const StillTankCheck& c) {
+  return {{"depth_m", c.depth},
+          {"rho_g_depth_Pa", c.rho_g_depth},
+          {"floor_pressure_Pa", c.floor_pressure},
+          {"floor_pressure_ratio", c.floor_pressure / c.rho_g_depth},
+          {"expected_ratio", c.expected_ratio},
+          {"pressure_gradient_ratio", c.gradient_ratio},
+          {"max_speed_end_m_s", c.max_speed_end},
+          {"sqrt_g_depth_m_s", c.celerity},
+          {"max_speed_end_ratio", c.max_speed_end / c.celerity}};
+}
+
+nlohmann::json front_error_json(const FrontErrors& e) {
+  return {{"reference", "martin_moyce_1952_n2_2"},
+          {"T_range", {front_error_T_min, e.T_max}},
+          {"points", e.points},
+          {"rms_relative_error", e.rms},
+          {"rms_relative_error_shifted", e.rms_shifted},
+          {"shift_T", e.shift}};
+}
+
+}  // namespace
 
 nlohmann::json isph_report(const IsphStageResult& r) {
   nlohmann::json j;
@@ -16,12 +40,20 @@ nlohmann::json isph_report(const IsphStageResult& r) {
   j["particle_spacing_m"] = r.particle_spacing;
   j["smoothing_length_m"] = r.smoothing_length;
   j["particles"] = {{"fluid", r.fluid_particles}, {"wall", r.wall_particles}};
-  j["steps"] = r.summary.steps;
+  j["steps"] = r.summary.total_steps;  // from t = 0, the steps before a --resume included
   j["simulated_time_s"] = r.summary.simulated_time;
   j["wall_s"] = r.summary.wall_seconds;
   j["fluid_mass_kg_per_m"] = {{"start", r.fluid_mass_start}, {"end", r.fluid_mass_end}};
   j["front_x_m"] = r.front_x;
   j["max_density_error"] = r.max_density_error;
+  j["mean_density_error"] = r.mean_density_error;
+  j["largest_time_step_s"] = r.largest_time_step;
+  j["fluid_past_walls"] = {{"end", r.past_walls_end}, {"most", r.past_walls_most}};
+  if (r.past_walls_first_time) j["fluid_past_walls"]["first_at_s"] = *r.past_walls_first_time;
+  if (r.still_tank) j["still_tank"] = still_tank_json(*r.still_tank);
+  if (r.front_errors) j["front_error"] = front_error_json(*r.front_errors);
+  j["warnings"] = r.warnings;
+  j["figures"] = r.figures;
   j["frames_written"] = r.summary.frames_written;
   nlohmann::json columns = nlohmann::json::array({"time_s"});
   for (const std::string& c : r.monitors.columns) columns.push_back(c);

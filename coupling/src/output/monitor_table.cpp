@@ -2,6 +2,8 @@
 #include "coupling/output/monitor_table.hpp"
 
 #include <cstdio>
+#include <cstdlib>
+#include <sstream>
 
 namespace coupling {
 
@@ -19,6 +21,33 @@ std::string monitors_csv(const MonitorTable& table) {
     }
     out += "\n";
   }
+  return out;
+}
+
+MonitorTable parse_monitors_csv(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line, cell;
+  MonitorTable table;
+  if (!std::getline(in, line) || line.rfind("time_s", 0) != 0) return table;
+  std::istringstream header(line);
+  std::getline(header, cell, ',');
+  while (std::getline(header, cell, ',')) table.columns.push_back(cell);
+  while (std::getline(in, line)) {
+    std::istringstream cells(line);
+    std::vector<double> values;
+    while (std::getline(cells, cell, ',')) values.push_back(std::strtod(cell.c_str(), nullptr));
+    if (values.size() != table.columns.size() + 1) break;
+    table.times.push_back(values[0]);
+    table.rows.emplace_back(values.begin() + 1, values.end());
+  }
+  return table;
+}
+
+std::vector<std::pair<double, double>> monitor_column(const MonitorTable& table, const std::string& column) {
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+    if (table.columns[c] == column)
+      for (std::size_t k = 0; k < table.times.size(); ++k) out.emplace_back(table.times[k], table.rows[k][c]);
   return out;
 }
 

@@ -146,17 +146,7 @@ void read_gate(JsonReader& mps, MpsAnalysis& a) {
 void read_profiles(JsonReader& mps, MpsAnalysis& a) {
   auto pr = mps.object("profiles", Need::optional, "an object {times_s, dam_x_m}");
   if (!pr) return;
-  if (const nlohmann::json* times = pr->array("times_s", Need::required, 1, profile_times_limit)) {
-    for (std::size_t k = 0; k < times->size(); ++k) {
-      const std::string path = index_path(pr->path_of("times_s"), k);
-      const auto t = read_number((*times)[k], path, pr->diagnostics(), Bounds{0.0, false, a.settings.end_time, true});
-      if (!t) continue;
-      if (!a.profile_times.empty() && *t <= a.profile_times.back())
-        pr->diagnostics().error(path, "times must increase (got " + format_number(*t) + " after " +
-                                          format_number(a.profile_times.back()) + ")");
-      a.profile_times.push_back(*t);
-    }
-  }
+  read_times(*pr, "times_s", Need::required, a.settings.end_time, profile_times_limit, a.profile_times);
   if (auto x = pr->number("dam_x_m", Need::optional, Bounds::open(a.tank.x_min, a.tank.x_max))) a.dam_x = *x;
   pr->finish();
 }

@@ -218,8 +218,12 @@ void read_analyses(JsonReader& top, Scene& scene, bool has_section, SphBlocks& b
       blocks.srm = srm;
     }
   }
-  if (auto isph = analyses->object("isph", Need::optional, "an object (docs/scene-format.md, analyses.isph)"))
+  if (auto isph = analyses->object("isph", Need::optional, "an object (docs/scene-format.md, analyses.isph)")) {
+    IsphOutputs outputs = read_isph_outputs(*isph);  // before the rest: the reader's finish() sees its keys read
     scene.analyses.isph = read_isph_analysis(*isph);
+    check_isph_outputs(outputs, *scene.analyses.isph, isph->path(), diagnostics);
+    scene.analyses.isph->outputs = std::move(outputs);
+  }
   if (auto mps = analyses->object("mps", Need::optional, "an object (docs/scene-format.md, analyses.mps)")) {
     scene.analyses.mps = read_mps_analysis(*mps);
     if (analyses->has("isph"))

@@ -48,6 +48,22 @@ void read_tank_rectangles(JsonReader& r, const char* key, const Tank& tank, std:
   }
 }
 
+void read_times(JsonReader& r, const char* key, Need need, std::optional<double> end_time, const SizeLimit& limit,
+                std::vector<double>& out) {
+  const nlohmann::json* times = r.array(key, need, 1, limit);
+  if (!times) return;
+  const Bounds bounds = end_time ? Bounds{0.0, false, *end_time, true} : Bounds::positive();
+  for (std::size_t k = 0; k < times->size(); ++k) {
+    const std::string path = index_path(r.path_of(key), k);
+    const auto t = read_number((*times)[k], path, r.diagnostics(), bounds);
+    if (!t) continue;
+    if (!out.empty() && *t <= out.back())
+      r.diagnostics().error(path, "times must increase (got " + format_number(*t) + " after " +
+                                      format_number(out.back()) + ")");
+    out.push_back(*t);
+  }
+}
+
 void read_tank_monitors(JsonReader& r, TankMonitors& a, bool allow_wall_height) {
   auto m = r.object("monitors", Need::optional,
                     allow_wall_height ? "an object {gauges, front, wall_height, still_water_m, interval_s}"

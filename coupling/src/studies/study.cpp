@@ -164,15 +164,17 @@ RunRecord run_one_spacing(const Scene& scene, const nlohmann::json& document, co
   entry["status"] = run.status == ExitStatus::ok ? "ok" : run.status == ExitStatus::failed ? "failed" : "refused";
   entry["errors"] = run.errors;
   entry["wall_seconds"] = record.seconds;
-  for (const char* analysis : {"sph", "mps"}) {
+  for (const char* analysis : {"sph", "mps", "isph"}) {
     if (!run.report.is_object() || !run.report.contains(analysis)) continue;
     const nlohmann::json& block = run.report[analysis];
     for (const char* key : {"soil_particles", "particles", "steps", "simulated_time_s", "stopped_because"})
       if (block.contains(key)) entry[key] = block[key];
-    if (block.contains("particles") && block["particles"].is_object())  // mps: {moving, wall}
-      entry["particles"] = block["particles"].value("moving", nlohmann::json());
+    if (block.contains("particles") && block["particles"].is_object()) {  // mps {moving, wall}, isph {fluid, wall}
+      const nlohmann::json& p = block["particles"];
+      entry["particles"] = p.contains("moving") ? p["moving"] : p.value("fluid", nlohmann::json());
+    }
     if (block.contains("seconds")) entry["sph_seconds"] = block["seconds"];
-    if (block.contains("wall_s")) entry["mps_seconds"] = block["wall_s"];
+    if (block.contains("wall_s")) entry[std::string(analysis) + "_seconds"] = block["wall_s"];
   }
   // A run that did not finish (interrupted, blown up) measures nothing: its state is not the case's result.
   record.values = record.ok ? read_values(setup, run)

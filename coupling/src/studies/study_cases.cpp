@@ -247,19 +247,21 @@ CaseSetup mps_case(const Scene& scene) {
 
 CaseSetup setup_case(const Scene& scene) {
   if (scene.analyses.mps) return mps_case(scene);
+  if (scene.analyses.isph) return isph_dam_break_case(scene);
   if (!scene.analyses.sph)
-    throw SceneError({"study: the scene has no analyses.sph or analyses.mps (the study runs it at each --spacings "
-                      "value, replacing its particle_spacing_m)"});
+    throw SceneError({"study: the scene has no analyses.sph, analyses.mps or analyses.isph (the study runs it at "
+                      "each --spacings value, replacing its particle_spacing_m)"});
   if (scene.section) return slope_case(scene);
   if (scene.bodies) return particle_case(scene);
   throw SceneError({"study: the scene has neither a section nor bodies"});
 }
 
 nlohmann::json scene_at_spacing(const Scene& scene, nlohmann::json document, double spacing) {
-  if (scene.analyses.mps) {
-    document["analyses"]["mps"]["particle_spacing_m"] = spacing;
-    return document;
-  }
+  for (const char* tank : {"mps", "isph"})
+    if (document["analyses"].contains(tank)) {
+      document["analyses"][tank]["particle_spacing_m"] = spacing;
+      return document;
+    }
   document["analyses"]["sph"]["particle_spacing_m"] = spacing;
   if (scene.section) {
     if (!document["analyses"].contains("lem")) document["analyses"]["lem"] = nlohmann::json::object();
@@ -305,6 +307,8 @@ std::vector<std::optional<double>> read_values(const CaseSetup& setup, const Wor
       values[1] = number_at(report, {"mps", "deposit", "wall_height_m", "end"});
       break;
     }
+    case CaseKind::isph_dam_break:
+      return isph_dam_break_values(setup, run);
   }
   return values;
 }

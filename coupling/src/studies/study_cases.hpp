@@ -14,7 +14,7 @@
 
 namespace coupling::study_detail {
 
-enum class CaseKind { slope_failure_surface, elastic_column, column_collapse, mps_dry_collapse };
+enum class CaseKind { slope_failure_surface, elastic_column, column_collapse, mps_dry_collapse, isph_dam_break };
 
 struct Quantity {
   std::string key;                 // e.g. "exit_x_m"
@@ -49,6 +49,11 @@ nlohmann::json scene_at_spacing(const Scene& scene, nlohmann::json document, dou
 
 // The monitored values of one finished run, in the order of setup.quantities (null where not available).
 std::vector<std::optional<double>> read_values(const CaseSetup& setup, const WorkflowResult& run);
+
+// The ISPH dam break against Martin & Moyce's table (study_isph_case.cpp): the case, and its values from the run's
+// monitors.csv (the front's RMS error without and with a time shift).
+CaseSetup isph_dam_break_case(const Scene& scene);
+std::vector<std::optional<double>> isph_dam_break_values(const CaseSetup& setup, const WorkflowResult& run);
 
 // Relative error of a value, per its quantity's definition.
 double relative_error(const Quantity& quantity, double value);

@@ -1,11 +1,14 @@
 #pragma once
 // The "isph" block of report.json and the run folder's monitors.csv, from the typed result of the isph stage.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/analyses/isph_front.hpp"
+#include "coupling/analyses/isph_measures.hpp"
 #include "coupling/output/monitor_table.hpp"
 #include "sph/engine/run_loop.hpp"
 
@@ -19,7 +22,16 @@ struct IsphStageResult {
   std::size_t fluid_particles = 0, wall_particles = 0;
   double fluid_mass_start = 0, fluid_mass_end = 0;  // [kg/m]
   double front_x = 0;  // [m] at the end
-  double max_density_error = 0;  // largest max |rho* - rho0|/rho0 over the steps
+  // over the steps (a resumed run: from t = 0): the largest max |rho* - rho0|/rho0 and the largest of its mean over
+  // the fluid, and the largest time step taken [s]
+  double max_density_error = 0, mean_density_error = 0, largest_time_step = 0;
+  // fluid particles past the walls' first row: at the end, the most at any step and the first time there was one
+  std::size_t past_walls_end = 0, past_walls_most = 0;
+  std::optional<double> past_walls_first_time;
+  std::optional<StillTankCheck> still_tank;  // a still tank: against hydrostatics
+  std::optional<FrontErrors> front_errors;  // front_reference with Martin & Moyce's table
+  std::vector<std::string> warnings;  // each naming its scene key
+  std::vector<std::string> figures;  // relative to the run folder
   MonitorTable monitors;
 };
 

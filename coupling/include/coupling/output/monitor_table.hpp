@@ -1,6 +1,7 @@
 #pragma once
 // monitors.csv of the particle-flow analyses (isph, mps): one row per sampled time.
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace coupling {
@@ -13,5 +14,10 @@ struct MonitorTable {
 };
 
 std::string monitors_csv(const MonitorTable& table);
+// The table of a monitors.csv text: the columns of its header (without time_s) and its rows up to the first that
+// does not have one number per column (an empty table when the text has no "time_s" header).
+MonitorTable parse_monitors_csv(const std::string& csv);
+// The values of one column [time, value] (empty when the table has no such column).
+std::vector<std::pair<double, double>> monitor_column(const MonitorTable& table, const std::string& column);
 
 }  // namespace coupling

@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "sph/engine/fill.hpp"
-#include "sph/fluid/model.hpp"
-
+#include "coupling/scene/isph_outputs.hpp"
 #include "coupling/scene/json_reader.hpp"
 #include "coupling/scene/tank_scene.hpp"
+#include "sph/engine/fill.hpp"
+#include "sph/fluid/model.hpp"
 #include "sph/fluid/settings.hpp"
 
 namespace coupling {
@@ -35,6 +35,7 @@ struct IsphAnalysis {
   std::vector<IsphBody> bodies;
   std::vector<TankRectangle> water;  // water at rest at t = 0, hydrostatic pressure
   TankMonitors monitors;  // gauges and the front (no wall height)
+  IsphOutputs outputs;  // snapshots_s, front_reference (read by scene.cpp through isph_outputs.hpp)
 };
 
 // Reads analyses.isph; faults go to the reader's diagnostics with their JSON paths.

@@ -3,6 +3,7 @@
 // tank of fixed wall particles, rectangles of material filled on the lattice, and the monitors written to
 // monitors.csv. Every key, unit and default is in docs/scene-format.md.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,11 @@ void read_tank(JsonReader& parent, Tank& tank);
 // `extra` (when given) reads the further keys of its object before the object is finished.
 void read_tank_rectangles(JsonReader& parent, const char* key, const Tank& tank, std::vector<TankRectangle>& out,
                           const std::function<void(JsonReader&)>& extra = {});
+
+// parent.<key>: an array of 1 to limit.max times [s], each > 0 and at most end_time when it is given, increasing
+// (analyses.mps.profiles.times_s, analyses.isph.snapshots_s). Appends the good ones to `out`.
+void read_times(JsonReader& parent, const char* key, Need need, std::optional<double> end_time,
+                const SizeLimit& limit, std::vector<double>& out);
 
 // parent.monitors: {gauges: [{name, x_m}], front, wall_height (only when allow_wall_height), still_water_m,
 // interval_s}.

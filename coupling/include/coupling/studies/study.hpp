@@ -33,6 +33,7 @@ struct StudyResult {
 //   one body, every material elastic       -> the elastic soil column (closed-form oedometric stress)
 //   one body of Drucker-Prager soil        -> the granular column collapse (true-2-D experiments' scaling laws)
 //   analyses.mps, one granular block       -> the dry collapse of Lajeunesse et al. (2005) (2-D scaling laws)
+//   analyses.isph with front_reference     -> the dam break of Martin & Moyce (1952) (their tabulated front)
 StudyResult run_study(const std::filesystem::path& scene_file, const StudyOptions& options);
 
 // One line of the error-against-run-time figure.
