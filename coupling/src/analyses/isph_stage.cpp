@@ -68,13 +68,16 @@ SnapshotObserver::Writer snapshot_writer(const WorkflowOptions& options, const s
 
 // --resume: the model, the monitors' rows, the snapshots already drawn and the figures taken over the run so far.
 void resume_isph(const WorkflowOptions& options, sph::fluid::Model& model, TankMonitorObserver& monitors,
-                 WallCrossingObserver& crossing, SnapshotObserver& snapshots, IsphStageResult& result) {
+                 WallCrossingObserver& crossing, SnapshotObserver& snapshots, BodyTracker& bodies,
+                 IsphStageResult& result) {
   const nlohmann::json earlier = resume_tank_run(
       options, "isph", [&model](const std::string& path) { sph::fluid::read_checkpoint(path, model); }, model.state,
       monitors);
   result.max_density_error = earlier.value("max_density_error", 0.0);
   result.mean_density_error = earlier.value("mean_density_error", 0.0);
   result.largest_time_step = earlier.value("largest_time_step_s", 0.0);
+  const nlohmann::json energy = earlier.value("energy_J_per_m", nlohmann::json::object());
+  bodies.restore(bodies_from_report(earlier), energy.value("fluid_start", bodies.fluid_energy_start()), model);
   const nlohmann::json past = earlier.value("fluid_past_walls", nlohmann::json::object());
   crossing.restore(past.value("most", std::size_t{0}),
                    past.contains("first_at_s") ? std::optional<double>(past["first_at_s"].get<double>()) : std::nullopt);
@@ -126,6 +129,9 @@ void finish_result(const IsphAnalysis& a, const sph::fluid::Model& model, const 
   result.past_walls_most = std::max(crossing.most(), result.past_walls_end);
   result.past_walls_first_time = crossing.first_time();
   result.still_tank = still_tank_check(model, a);
+  result.fluid_removed = model.fluid_particles_built - model.particles.count(sph::ParticleKind::soil);
+  result.fluid_mass_removed = model.fluid_mass_built - result.fluid_mass_end;
+  result.fluid_energy_end = fluid_energy(model);
   const std::optional<FrontReference>& ref = a.outputs.front_reference;
   if (ref && !ref->data.empty())
     result.front_errors = martin_moyce_front_errors(result.monitors, {ref->column_width, gravity_of(a), a.tank.x_min});
@@ -142,7 +148,8 @@ IsphStageResult run_isph(const Scene& scene, const WorkflowOptions& options) {
   WallCrossingObserver crossing(a.tank, a.settings.particle_spacing);
   SnapshotObserver snapshots(a.outputs.snapshot_times, model.fields.pressure, a.settings.particle_spacing,
                              snapshot_writer(options, scene.name));
-  if (options.resume) resume_isph(options, model, monitors, crossing, snapshots, result);
+  BodyTracker bodies(a, model);
+  if (options.resume) resume_isph(options, model, monitors, crossing, snapshots, bodies, result);
   sph::RunOptions run_options;
   if (options.output_dir) run_options.output_dir = options.output_dir->string();
   run_options.progress_interval_wall_s = 2.0;
@@ -150,8 +157,9 @@ IsphStageResult run_isph(const Scene& scene, const WorkflowOptions& options) {
   for (sph::Observer* o : {static_cast<sph::Observer*>(&monitors), static_cast<sph::Observer*>(&crossing),
                            static_cast<sph::Observer*>(&snapshots)})
     callbacks.observers.push_back(o);
-  result.summary = sph::fluid::run(model, run_options, callbacks, [&result](const sph::fluid::Step& s,
-                                                                            const sph::RunState&) {
+  result.summary = sph::fluid::run(model, run_options, callbacks, [&](const sph::fluid::Step& s,
+                                                                       const sph::RunState&) {
+    bodies.after_step(s, model);
     const sph::fluid::StepDiagnostics& d = s.diagnostics();
     result.max_density_error = std::max(result.max_density_error, d.max_density_error);
     result.mean_density_error = std::max(result.mean_density_error, d.mean_density_error);
@@ -160,6 +168,8 @@ IsphStageResult run_isph(const Scene& scene, const WorkflowOptions& options) {
   if (monitors.table().times.back() < model.state.time) monitors.sample(model.particles, model.state.time);  // the end
   result.monitors = std::move(monitors.table());
   result.figures = snapshots.files();
+  result.bodies = bodies.bodies();
+  result.fluid_energy_start = bodies.fluid_energy_start();
   finish_result(a, model, crossing, result);
   return result;
 }

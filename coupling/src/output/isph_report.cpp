@@ -28,7 +28,36 @@ nlohmann::json front_error_json(const FrontErrors& e) {
           {"shift_T", e.shift}};
 }
 
+nlohmann::json bodies_json(const IsphStageResult& r) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const BodyRecord& b : r.bodies) {
+    nlohmann::json j = {{"name", b.name},
+                        {"mass_kg_per_m", b.mass},
+                        {"travel_m", b.travel},
+                        {"speed_end_m_s", b.speed},
+                        {"max_speed_m_s", b.max_speed},
+                        {"work_on_fluid_J_per_m", b.work_on_fluid}};
+    j["stopped_at_s"] = b.stopped_at ? nlohmann::json(*b.stopped_at) : nlohmann::json(nullptr);
+    out.push_back(j);
+  }
+  return out;
+}
+
 }  // namespace
+
+std::vector<BodyRecord> bodies_from_report(const nlohmann::json& isph) {
+  std::vector<BodyRecord> out;
+  if (!isph.contains("bodies") || !isph["bodies"].is_array()) return out;
+  for (const nlohmann::json& j : isph["bodies"]) {
+    BodyRecord b;
+    b.name = j.value("name", "");
+    b.max_speed = j.value("max_speed_m_s", 0.0);
+    b.work_on_fluid = j.value("work_on_fluid_J_per_m", 0.0);
+    if (j.contains("stopped_at_s") && j["stopped_at_s"].is_number()) b.stopped_at = j["stopped_at_s"].get<double>();
+    out.push_back(b);
+  }
+  return out;
+}
 
 nlohmann::json isph_report(const IsphStageResult& r) {
   nlohmann::json j;
@@ -44,7 +73,19 @@ nlohmann::json isph_report(const IsphStageResult& r) {
   j["simulated_time_s"] = r.summary.simulated_time;
   j["wall_s"] = r.summary.wall_seconds;
   j["fluid_mass_kg_per_m"] = {{"start", r.fluid_mass_start}, {"end", r.fluid_mass_end}};
+  j["fluid_removed"] = {{"particles", r.fluid_removed}, {"mass_kg_per_m", r.fluid_mass_removed}};
   j["front_x_m"] = r.front_x;
+  if (!r.bodies.empty()) {
+    j["bodies"] = bodies_json(r);
+    double work = 0;
+    for (const BodyRecord& b : r.bodies) work += b.work_on_fluid;
+    const double gain = r.fluid_energy_end - r.fluid_energy_start;
+    j["energy_J_per_m"] = {{"fluid_start", r.fluid_energy_start},
+                           {"fluid_end", r.fluid_energy_end},
+                           {"fluid_gain", gain},
+                           {"work_by_bodies_on_fluid", work},
+                           {"gain_over_work", work != 0 ? nlohmann::json(gain / work) : nlohmann::json(nullptr)}};
+  }
   j["max_density_error"] = r.max_density_error;
   j["mean_density_error"] = r.mean_density_error;
   j["largest_time_step_s"] = r.largest_time_step;

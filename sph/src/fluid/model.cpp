@@ -83,6 +83,15 @@ std::size_t add_rigid_body(Model& model, const std::vector<Point>& polygon, Rigi
   body.direction_x /= norm;
   body.direction_y /= norm;
   body.area = polygon_area(polygon);
+  double cx = 0, cy = 0, twice = 0;  // the centroid of the polygon (shoelace weights)
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const double c = polygon[j].x * polygon[i].y - polygon[i].x * polygon[j].y;
+    twice += c;
+    cx += (polygon[j].x + polygon[i].x) * c;
+    cy += (polygon[j].y + polygon[i].y) * c;
+  }
+  body.centroid_x = cx / (3.0 * twice);
+  body.centroid_y = cy / (3.0 * twice);
   if (model.bodies.size() + 1 >= 0xffff) throw std::invalid_argument("rigid body: too many bodies");
   const auto material = static_cast<std::uint16_t>(model.bodies.size() + 1);
   const int fill_rows = 1 << 20;  // rows until the polygon is full

@@ -599,7 +599,24 @@ void Step::remove_escaped() {
   if (any) diag_.removed_particles = p.remove(drop);
 }
 
-Energies Step::energies() const { return moving_energies(model_.particles, model_.settings); }
+// The fluid's energies plus the rigid bodies' (M v^2/2 and -M g.x_c at their centroids, M = density x area): the
+// moving system's, so that the run loop's energy guard counts what a sliding body releases.
+Energies Step::energies() const {
+  Energies e = moving_energies(model_.particles, model_.settings);
+  const ParticleSet& p = model_.particles;
+  const double* travel = p.field(model_.fields.body_travel).data();
+  const double* speed = p.field(model_.fields.body_speed).data();
+  std::vector<char> seen(model_.bodies.size(), 0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!is_body(i) || seen[p.material[i] - 1u]) continue;
+    seen[p.material[i] - 1u] = 1;
+    const RigidBody& b = model_.bodies[p.material[i] - 1u];
+    const double x = b.centroid_x + travel[i] * b.direction_x, y = b.centroid_y + travel[i] * b.direction_y;
+    e.kinetic += 0.5 * b.mass() * speed[i] * speed[i];
+    e.potential -= b.mass() * (model_.settings.gravity_x * x + model_.settings.gravity_y * y);
+  }
+  return e;
+}
 
 Health Step::check_health() const {
   const ParticleSet& p = model_.particles;

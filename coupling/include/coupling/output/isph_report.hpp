@@ -9,6 +9,7 @@
 
 #include "coupling/analyses/isph_front.hpp"
 #include "coupling/analyses/isph_measures.hpp"
+#include "coupling/analyses/isph_bodies.hpp"
 #include "coupling/output/monitor_table.hpp"
 #include "sph/engine/run_loop.hpp"
 
@@ -33,7 +34,14 @@ struct IsphStageResult {
   std::vector<std::string> warnings;  // each naming its scene key
   std::vector<std::string> figures;  // relative to the run folder
   MonitorTable monitors;
+  std::size_t fluid_removed = 0;  // fluid particles that left the domain (removed)
+  double fluid_mass_removed = 0;  // [kg/m]
+  std::vector<BodyRecord> bodies;  // the rigid bodies (none: no "bodies" block)
+  double fluid_energy_start = 0, fluid_energy_end = 0;  // [J/m] kinetic + potential of the fluid
 };
+
+// report.json's isph.bodies read back (for --resume).
+std::vector<BodyRecord> bodies_from_report(const nlohmann::json& isph);
 
 nlohmann::json isph_report(const IsphStageResult& result);
 nlohmann::json isph_error_report(const std::string& error);

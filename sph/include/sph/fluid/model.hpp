@@ -28,6 +28,7 @@ struct RigidBody {
   double direction_x = 1.0, direction_y = 0.0;  // unit vector of travel
   double density = 2000.0;  // [kg/m^3] (the free motion's mass: density x area)
   double area = 0.0;  // [m^2] the polygon's (set by add_rigid_body)
+  double centroid_x = 0.0, centroid_y = 0.0;  // [m] the polygon's at zero travel (set by add_rigid_body)
   double stop_travel = std::numeric_limits<double>::infinity();  // [m] it stops for good at this travel
   double start_time = 0.0;  // [s] at rest before
   std::vector<double> table_time, table_travel;  // [s], [m] (Motion::table)
