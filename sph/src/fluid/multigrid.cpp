@@ -10,7 +10,7 @@ namespace sph::fluid {
 namespace {
 
 // Loops shorter than this run on one thread (the coarse levels): the fork costs more than the work.
-constexpr int kParallelRows = 4096;
+constexpr int kParallelRows = 2048;
 
 std::int32_t floor_half(std::int32_t c) { return c >= 0 ? c / 2 : -((-c + 1) / 2); }
 
@@ -187,7 +187,8 @@ void AggregationMultigrid::cycle(std::size_t level) const {
   const int* agg = l.aggregate.data();
   const double alpha = options_.coarse_scale;
   const double* xc = c.x.data();
-  const int visits = level + 2 == levels_.size() ? 1 : options_.cycles;  // the coarsest is solved exactly
+  // one coarse correction from the finest level, `cycles` below it, one above the coarsest (solved exactly)
+  const int visits = level == 0 || level + 2 == levels_.size() ? 1 : options_.cycles;
   for (int v = 0; v < visits; ++v) {
     residual(l.a, x, b, r);
     std::fill(c.b.begin(), c.b.end(), 0.0);

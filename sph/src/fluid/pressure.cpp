@@ -10,6 +10,7 @@
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <utility>
 
 #include "multigrid.hpp"
@@ -45,12 +46,12 @@ std::vector<std::uint32_t> number_unknowns(const PoissonSystem& s, std::vector<s
   return row;
 }
 
-// M p = b with M_ii = -S_B, M_ij = B_ij (unknown j), b_i = -s_i - sum_{j given} B_ij P_j: symmetric positive
-// definite for equal masses. Written straight into the compressed rows, one row per unknown in parallel, the
-// diagonal first and then the neighbours in the pair list's order: the columns of a row are not sorted, which the
-// matrix-vector products of the Krylov solvers and the preconditioners do not need.
-void assemble(const PoissonSystem& s, const std::vector<double>& given, const std::vector<std::uint32_t>& row,
-              const std::vector<std::uint32_t>& particle_of_row, SparseMatrix& m, Eigen::VectorXd& b) {
+// M p = b with M_ii = -S_B, M_ij = B_ij (unknown j): symmetric positive definite for equal masses. Written straight
+// into the compressed rows, one row per unknown in parallel, the diagonal first and then the neighbours in the pair
+// list's order: the columns of a row are not sorted, which the matrix-vector products of the Krylov solvers and
+// the preconditioners do not need.
+void assemble_matrix(const PoissonSystem& s, const std::vector<std::uint32_t>& row,
+                     const std::vector<std::uint32_t>& particle_of_row, SparseMatrix& m) {
   const auto nu = static_cast<Eigen::Index>(particle_of_row.size());
   std::vector<int> row_start(static_cast<std::size_t>(nu) + 1, 0);
 #pragma omp parallel for schedule(static)
@@ -66,40 +67,37 @@ void assemble(const PoissonSystem& s, const std::vector<double>& given, const st
   std::copy(row_start.begin(), row_start.end(), m.outerIndexPtr());
   int* cols = m.innerIndexPtr();
   double* values = m.valuePtr();
-  b.resize(nu);
 #pragma omp parallel for schedule(static)
   for (Eigen::Index r = 0; r < nu; ++r) {
     const std::uint32_t i = particle_of_row[static_cast<std::size_t>(r)];
     int at = row_start[static_cast<std::size_t>(r)];
     const int diagonal_at = at++;
-    double diag = 0, rhs = -s.source[i];
+    double diag = 0;
     for (std::uint32_t k = s.start[i]; k < s.start[i + 1]; ++k) {
       const std::uint32_t j = s.col[k];
       diag -= s.coef[k];
-      if (s.role[j] == PressureRole::unknown) {
-        cols[at] = static_cast<int>(row[j]);
-        values[at++] = s.coef[k];
-      } else {
-        rhs -= s.coef[k] * given[j];
-      }
+      if (s.role[j] != PressureRole::unknown) continue;
+      cols[at] = static_cast<int>(row[j]);
+      values[at++] = s.coef[k];
     }
     cols[diagonal_at] = static_cast<int>(r);
     values[diagonal_at] = diag;
-    b[r] = rhs;
   }
 }
 
-template <class Solver>
-SolveReport run_solver(Solver& solver, const SparseMatrix& m, const Eigen::VectorXd& b, Eigen::VectorXd& p,
-                       const SolverChoice& choice) {
-  solver.setTolerance(choice.tolerance);
-  solver.setMaxIterations(choice.max_iterations);
-  solver.compute(m);
-  p = solver.solveWithGuess(b, p);
-  SolveReport rep;
-  rep.iterations = static_cast<int>(solver.iterations());
-  rep.converged = solver.info() == Eigen::Success;
-  return rep;
+// b_i = -s_i - sum_{j given} B_ij P_j.
+void assemble_rhs(const PoissonSystem& s, const std::vector<double>& given,
+                  const std::vector<std::uint32_t>& particle_of_row, Eigen::VectorXd& b) {
+  const auto nu = static_cast<Eigen::Index>(particle_of_row.size());
+  b.resize(nu);
+#pragma omp parallel for schedule(static)
+  for (Eigen::Index r = 0; r < nu; ++r) {
+    const std::uint32_t i = particle_of_row[static_cast<std::size_t>(r)];
+    double rhs = -s.source[i];
+    for (std::uint32_t k = s.start[i]; k < s.start[i + 1]; ++k)
+      if (s.role[s.col[k]] != PressureRole::unknown) rhs -= s.coef[k] * given[s.col[k]];
+    b[r] = rhs;
+  }
 }
 
 // The multigrid's first aggregation cells of the unknowns: squares of the system's aggregate size.
@@ -117,54 +115,102 @@ void set_aggregation_cells(const PoissonSystem& s, const std::vector<std::uint32
   mg.set_cells(std::move(cx), std::move(cy));
 }
 
-// The Krylov solve with the chosen solver and preconditioner.
-SolveReport krylov_solve_once(const PoissonSystem& s, const std::vector<std::uint32_t>& particle_of_row,
-                              const SolverChoice& choice, const SparseMatrix& m, const Eigen::VectorXd& b,
-                              Eigen::VectorXd& p) {
-  const bool cg = choice.solver == LinearSolver::conjugate_gradient;
-  if (choice.preconditioner == Preconditioner::diagonal) {
-    if (cg) {
-      Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> solver;
-      return run_solver(solver, m, b, p, choice);
-    }
-    Eigen::BiCGSTAB<SparseMatrix> solver;
-    return run_solver(solver, m, b, p, choice);
-  }
+template <class Solver>
+SolveReport run_solver(Solver& solver, const Eigen::VectorXd& b, Eigen::VectorXd& p, const SolverChoice& choice) {
+  solver.setTolerance(choice.tolerance);
+  solver.setMaxIterations(choice.max_iterations);
+  p = solver.solveWithGuess(b, p);
   SolveReport rep;
-  if (cg) {
-    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, AggregationMultigrid> solver;
-    set_aggregation_cells(s, particle_of_row, solver.preconditioner());
-    rep = run_solver(solver, m, b, p, choice);
-    rep.multigrid_levels = solver.preconditioner().level_count();
-  } else {
-    Eigen::BiCGSTAB<SparseMatrix, AggregationMultigrid> solver;
-    set_aggregation_cells(s, particle_of_row, solver.preconditioner());
-    rep = run_solver(solver, m, b, p, choice);
-    rep.multigrid_levels = solver.preconditioner().level_count();
-  }
-  return rep;
-}
-
-// A multigrid-preconditioned solve that does not converge (or breaks down) is done again from the same first
-// guess with the diagonal preconditioner, whose positive definiteness does not depend on the cycle.
-SolveReport krylov_solve(const PoissonSystem& s, const std::vector<std::uint32_t>& particle_of_row,
-                         const SolverChoice& choice, const SparseMatrix& m, const Eigen::VectorXd& b,
-                         Eigen::VectorXd& p) {
-  const Eigen::VectorXd guess = p;
-  SolveReport rep = krylov_solve_once(s, particle_of_row, choice, m, b, p);
-  if (choice.preconditioner == Preconditioner::multigrid && (!rep.converged || !p.allFinite())) {
-    p = guess;
-    SolverChoice fallback = choice;
-    fallback.preconditioner = Preconditioner::diagonal;
-    const int tried = rep.iterations;
-    rep = krylov_solve_once(s, particle_of_row, fallback, m, b, p);
-    rep.iterations += tried;
-    rep.fell_back = true;
-  }
+  rep.iterations = static_cast<int>(solver.iterations());
+  rep.converged = solver.info() == Eigen::Success && p.allFinite();
+  rep.relative_residual = solver.error();  // |b - M p| / |b| of the unknowns' system
   return rep;
 }
 
 }  // namespace
+
+struct PressureSolver::Impl {
+  SolverChoice choice;
+  std::vector<std::uint32_t> row, particle_of_row;
+  SparseMatrix m;
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, AggregationMultigrid> cg_multigrid;
+  Eigen::BiCGSTAB<SparseMatrix, AggregationMultigrid> bicgstab_multigrid;
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg_diagonal;
+  Eigen::BiCGSTAB<SparseMatrix> bicgstab_diagonal;
+  bool diagonal_ready = false;  // the diagonal solver set up on m (the choice, or a fallback)
+
+  void prepare_diagonal() {
+    if (diagonal_ready) return;
+    if (choice.solver == LinearSolver::conjugate_gradient)
+      cg_diagonal.compute(m);
+    else
+      bicgstab_diagonal.compute(m);
+    diagonal_ready = true;
+  }
+
+  // The solve with the chosen solver (preconditioner: the diagonal, or else the multigrid).
+  SolveReport solve(const Eigen::VectorXd& b, Eigen::VectorXd& p, bool diagonal) {
+    const bool cg = choice.solver == LinearSolver::conjugate_gradient;
+    if (diagonal) {
+      prepare_diagonal();
+      return cg ? run_solver(cg_diagonal, b, p, choice) : run_solver(bicgstab_diagonal, b, p, choice);
+    }
+    SolveReport rep = cg ? run_solver(cg_multigrid, b, p, choice) : run_solver(bicgstab_multigrid, b, p, choice);
+    rep.multigrid_levels =
+        cg ? cg_multigrid.preconditioner().level_count() : bicgstab_multigrid.preconditioner().level_count();
+    return rep;
+  }
+};
+
+PressureSolver::PressureSolver() : impl_(std::make_unique<Impl>()) {}
+PressureSolver::~PressureSolver() = default;
+
+void PressureSolver::prepare(const PoissonSystem& s, const SolverChoice& choice) {
+  Impl& x = *impl_;
+  x.choice = choice;
+  x.row = number_unknowns(s, x.particle_of_row);
+  assemble_matrix(s, x.row, x.particle_of_row, x.m);
+  x.diagonal_ready = false;
+  if (x.particle_of_row.empty()) return;
+  if (choice.preconditioner == Preconditioner::diagonal) {
+    x.prepare_diagonal();
+  } else if (choice.solver == LinearSolver::conjugate_gradient) {
+    set_aggregation_cells(s, x.particle_of_row, x.cg_multigrid.preconditioner());
+    x.cg_multigrid.compute(x.m);
+  } else {
+    set_aggregation_cells(s, x.particle_of_row, x.bicgstab_multigrid.preconditioner());
+    x.bicgstab_multigrid.compute(x.m);
+  }
+}
+
+// A multigrid-preconditioned solve that does not converge (or breaks down) is done again from the same first
+// guess with the diagonal preconditioner, whose positive definiteness does not depend on the cycle.
+SolveReport PressureSolver::solve(const PoissonSystem& s, std::vector<double>& pressure, double tolerance) {
+  Impl& x = *impl_;
+  const double chosen = x.choice.tolerance;
+  if (tolerance > 0) x.choice.tolerance = tolerance;
+  SolveReport rep;
+  if (!x.particle_of_row.empty()) {
+    Eigen::VectorXd b, p(static_cast<Eigen::Index>(x.particle_of_row.size()));
+    assemble_rhs(s, pressure, x.particle_of_row, b);
+    for (Eigen::Index r = 0; r < p.size(); ++r) p[r] = pressure[x.particle_of_row[static_cast<std::size_t>(r)]];
+    const Eigen::VectorXd guess = p;
+    const bool diagonal = x.choice.preconditioner == Preconditioner::diagonal;
+    rep = x.solve(b, p, diagonal);
+    if (!diagonal && !rep.converged) {
+      p = guess;
+      const int tried = rep.iterations, levels = rep.multigrid_levels;
+      rep = x.solve(b, p, true);
+      rep.iterations += tried;
+      rep.multigrid_levels = levels;
+      rep.fell_back = true;
+    }
+    for (Eigen::Index r = 0; r < p.size(); ++r) pressure[x.particle_of_row[static_cast<std::size_t>(r)]] = p[r];
+  }
+  x.choice.tolerance = chosen;
+  rep.unknowns = x.particle_of_row.size();
+  return rep;
+}
 
 SolveReport jacobi_sweep(const PoissonSystem& s, std::vector<double>& pressure) {
   const Index n = static_cast<Index>(s.size());
@@ -187,19 +233,9 @@ SolveReport jacobi_sweep(const PoissonSystem& s, std::vector<double>& pressure) 
 }
 
 SolveReport solve_pressure(const PoissonSystem& s, const SolverChoice& choice, std::vector<double>& pressure) {
-  std::vector<std::uint32_t> particle_of_row;
-  const std::vector<std::uint32_t> row = number_unknowns(s, particle_of_row);
-  SparseMatrix m;
-  Eigen::VectorXd b;
-  assemble(s, pressure, row, particle_of_row, m, b);
-  Eigen::VectorXd p(b.size());
-  for (Eigen::Index r = 0; r < b.size(); ++r) p[r] = pressure[particle_of_row[static_cast<std::size_t>(r)]];
-  SolveReport rep;
-  if (b.size() > 0) rep = krylov_solve(s, particle_of_row, choice, m, b, p);
-  for (Eigen::Index r = 0; r < b.size(); ++r) pressure[particle_of_row[static_cast<std::size_t>(r)]] = p[r];
-  rep.unknowns = particle_of_row.size();
-  rep.relative_residual = relative_residual(s, pressure);
-  return rep;
+  PressureSolver solver;
+  solver.prepare(s, choice);
+  return solver.solve(s, pressure);
 }
 
 double relative_residual(const PoissonSystem& s, const std::vector<double>& p) {

@@ -24,6 +24,10 @@ SolverChoice solver_choice(const Settings& st) {
   return c;
 }
 
+// The tolerance of the solves before the last of a step: they only give the walls' pressures for the next
+// extrapolation (decision D22), so the looser of wall_pass_tolerance and the solver's tolerance.
+double wall_pass_tolerance(const Settings& st) { return std::max(st.wall_pass_tolerance, st.solver_tolerance); }
+
 constexpr std::uint8_t kFluid = static_cast<std::uint8_t>(ParticleKind::soil);
 // The candidates of a step reach this many spacings beyond the kernel support: complete at r* while no particle
 // moves more than half of it in the temporary move (V** dt, about cfl dx).
@@ -37,6 +41,7 @@ struct Step::Impl {
   CandidateList candidates;  // pairs within the support plus the skin at r^n
   PairList pairs;
   PoissonSystem system;
+  PressureSolver solver;  // the iterative mode's matrix and preconditioner of the step
   std::vector<double> ax, ay;  // viscous accelerations
   // at r*: the inverse of each particle's kernel moment matrix M_i = -sum_j V_j F_ij x_ij x_ij^T (the identity
   // for a full lattice support), 0 where M_i is too far from it (renormalisation refused)
@@ -334,7 +339,10 @@ void Step::solve_pressure_equation(double dt) {
   moment_matrices();
   assemble_pressure_equation(dt);
   const bool explicit_mode = st.pressure_mode == PressureMode::explicit_jacobi;
+  if (!explicit_mode) impl_->solver.prepare(impl_->system, solver_choice(st));
   const int passes = explicit_mode ? 1 : st.wall_passes;
+  diag_.solve_iterations = 0;
+  diag_.fallbacks = 0;
   for (int pass = 0; pass < passes; ++pass) {
     if (pass > 0) extrapolate_wall_pressure();
     add_consistency_term();
@@ -342,7 +350,9 @@ void Step::solve_pressure_equation(double dt) {
     if (explicit_mode)
       diag_.solve = jacobi_sweep(impl_->system, pressure);
     else
-      diag_.solve = solve_pressure(impl_->system, solver_choice(st), pressure);
+      diag_.solve = impl_->solver.solve(impl_->system, pressure, pass + 1 < passes ? wall_pass_tolerance(st) : 0.0);
+    diag_.solve_iterations += diag_.solve.iterations;
+    diag_.fallbacks += diag_.solve.fell_back ? 1 : 0;
     if (!st.tension) clamp_tension(pressure);
   }
   extrapolate_wall_pressure();

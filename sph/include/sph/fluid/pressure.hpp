@@ -7,6 +7,7 @@
 // particles hold given pressures: free-surface particles P = 0 (Dirichlet), wall particles the pressure the stepper
 // extrapolates to them from the fluid (decision D7 in docs/isph.md).
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "sph/fluid/settings.hpp"
@@ -46,6 +47,27 @@ struct SolverChoice {
   Preconditioner preconditioner = Preconditioner::multigrid;
   double tolerance = 1e-8;
   int max_iterations = 2000;
+};
+
+// The iterative mode's solver of one step: the matrix and its preconditioner set up once (prepare), then solved
+// for as many right-hand sides as the step has wall passes (the walls' given pressures change between them, the
+// matrix does not).
+class PressureSolver {
+ public:
+  PressureSolver();
+  ~PressureSolver();
+  PressureSolver(const PressureSolver&) = delete;
+  PressureSolver& operator=(const PressureSolver&) = delete;
+  // Numbers the unknowns, assembles the matrix and sets the preconditioner up.
+  void prepare(const PoissonSystem& system, const SolverChoice& choice);
+  // Solves with the system's current sources and the given values held in `pressure` (the unknowns' values there
+  // are the first guess) to `tolerance` (0: the choice's); a multigrid-preconditioned solve that fails is done
+  // again with the diagonal one.
+  SolveReport solve(const PoissonSystem& system, std::vector<double>& pressure, double tolerance = 0.0);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 // Solves the system to `tolerance` (relative residual |b - M p| / |b|), starting from `pressure` (which also holds

@@ -55,6 +55,9 @@ struct Settings : EngineSettings {
   // iterative mode: solves of the fluid's equation per step, each after a new wall-pressure extrapolation (the
   // explicit mode does one extrapolation and one sweep)
   int wall_passes = 2;
+  // the relative residual of the solves before the last one of a step, which only update the walls' pressures
+  // (decision D22; at 1e-3 the dam break's front at 0.5 s moves by 9 %, at 1e-4 by 0.6 %)
+  double wall_pass_tolerance = 1.0e-4;
 
   // false: the unknowns' negative pressures are set to 0 after each solve (no tension, decision D21); true: the
   // pressure equation's solution as it is

@@ -23,7 +23,9 @@ namespace sph::fluid {
 
 // What the last step did (for reports and tests).
 struct StepDiagnostics {
-  SolveReport solve;
+  SolveReport solve;  // the last solve of the step
+  int solve_iterations = 0;  // Krylov iterations of all the step's solves
+  int fallbacks = 0;  // solves of the step the diagonal preconditioner finished (SolveReport::fell_back)
   double max_density_error = 0;  // max over fluid of |rho* - rho0| / rho0
   double mean_density_error = 0;  // mean over fluid of |rho* - rho0| / rho0
   std::size_t surface_particles = 0;
