@@ -154,12 +154,48 @@ void AggregationMultigrid::build(CsrMatrix fine) {
     levels_.push_back(std::move(coarse));
   }
   levels_.back().aggregate.clear();
+  ok_ = factor_coarsest();
+}
+
+// Dense Cholesky A = L Lᵀ of the coarsest level (a few hundred rows at most). False when A is not positive
+// definite (the caller then falls back to the diagonal preconditioner).
+bool AggregationMultigrid::factor_coarsest() {
   const CsrMatrix& last = levels_.back().a;
-  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(last.rows(), last.rows());
-  for (int i = 0; i < last.rows(); ++i)
-    for (int k = last.start[i]; k < last.start[i + 1]; ++k) dense(i, last.col[k]) += last.value[k];
-  coarsest_.compute(dense);
-  ok_ = coarsest_.info() == Eigen::Success;
+  const auto n = static_cast<std::size_t>(last.rows());
+  if (n > 4096) return false;  // coarsening stalled: a dense factor would not pay (the diagonal is used instead)
+  std::vector<double>& l = coarsest_factor_;
+  l.assign(n * n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = last.start[i]; k < last.start[i + 1]; ++k) l[i * n + static_cast<std::size_t>(last.col[k])] += last.value[k];
+  for (std::size_t j = 0; j < n; ++j) {
+    double d = l[j * n + j];
+    for (std::size_t k = 0; k < j; ++k) d -= l[j * n + k] * l[j * n + k];
+    if (!(d > 0.0)) return false;
+    d = std::sqrt(d);
+    l[j * n + j] = d;
+    for (std::size_t i = j + 1; i < n; ++i) {
+      double s = l[i * n + j];
+      for (std::size_t k = 0; k < j; ++k) s -= l[i * n + k] * l[j * n + k];
+      l[i * n + j] = s / d;
+    }
+  }
+  return true;
+}
+
+// x = A⁻¹ b at the coarsest level: L y = b, then Lᵀ x = y.
+void AggregationMultigrid::solve_coarsest(const double* b, double* x) const {
+  const std::vector<double>& l = coarsest_factor_;
+  const std::size_t n = levels_.back().x.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    double s = b[i];
+    for (std::size_t k = 0; k < i; ++k) s -= l[i * n + k] * x[k];
+    x[i] = s / l[i * n + i];
+  }
+  for (std::size_t i = n; i-- > 0;) {
+    double s = x[i];
+    for (std::size_t k = i + 1; k < n; ++k) s -= l[k * n + i] * x[k];
+    x[i] = s / l[i * n + i];
+  }
 }
 
 // One symmetric V-cycle at `level` for its right-hand side b, from x = 0, into x.
@@ -167,7 +203,7 @@ void AggregationMultigrid::cycle(std::size_t level) const {
   const Level& l = levels_[level];
   const int n = l.a.rows();
   if (level + 1 == levels_.size()) {
-    Eigen::Map<Eigen::VectorXd>(l.x.data(), n) = coarsest_.solve(Eigen::Map<const Eigen::VectorXd>(l.b.data(), n));
+    solve_coarsest(l.b.data(), l.x.data());
     return;
   }
   const double w = options_.smoother_weight;

@@ -13,7 +13,6 @@
 //
 // Everything is deterministic and independent of the thread count: the smoother is Jacobi (each row reads only the
 // previous sweep), the aggregates come from the geometry, and the Galerkin sums run in a fixed order.
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <cstdint>
@@ -136,11 +135,14 @@ class AggregationMultigrid {
   static void galerkin(const Level& fine, int coarse_rows, CsrMatrix& coarse);
   void apply(const double* r, double* z) const;
   void cycle(std::size_t level) const;
+  bool factor_coarsest();
+  void solve_coarsest(const double* b, double* x) const;
 
   Options options_;
   std::vector<std::int32_t> cell_x_, cell_y_;
   std::vector<Level> levels_;
-  Eigen::LLT<Eigen::MatrixXd> coarsest_;
+  // The coarsest level's Cholesky factor L (row-major, lower triangle): solved exactly by two substitutions.
+  std::vector<double> coarsest_factor_;
   bool ok_ = false;
 };
 
