@@ -41,4 +41,64 @@ std::optional<FrontErrors> martin_moyce_front_errors(const MonitorTable& monitor
   return e;
 }
 
+AgreementStatistics agreement(const std::vector<double>& o, const std::vector<double>& s) {
+  AgreementStatistics a;
+  const std::size_t n = std::min(o.size(), s.size());
+  if (n == 0) return a;
+  double mo = 0, ms = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    mo += o[k];
+    ms += s[k];
+  }
+  mo /= static_cast<double>(n);
+  ms /= static_cast<double>(n);
+  double soo = 0, sss = 0, sos = 0, se = 0, sae = 0, see = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double e = s[k] - o[k];
+    soo += (o[k] - mo) * (o[k] - mo);
+    sss += (s[k] - ms) * (s[k] - ms);
+    sos += (o[k] - mo) * (s[k] - ms);
+    se += e;
+    sae += std::abs(e);
+    see += e * e;
+  }
+  const double nn = static_cast<double>(n);
+  a.points = static_cast<int>(n);
+  a.r = soo > 0 && sss > 0 ? sos / std::sqrt(soo * sss) : 0.0;
+  a.mean_error = se / nn;
+  a.mean_absolute_error = sae / nn;
+  a.rms_error = std::sqrt(see / nn);
+  a.nse = soo > 0 ? 1.0 - see / soo : 0.0;
+  return a;
+}
+
+std::optional<RitterComparison> ritter_comparison(const MonitorTable& monitors, const RitterSetting& c) {
+  if (!(c.depth > 0) || !(c.g > 0)) return std::nullopt;
+  const double celerity = std::sqrt(c.g * c.depth), time_scale = std::sqrt(c.g / c.depth);
+  std::vector<double> reference, computed, times;
+  for (const auto& [t, x] : monitor_column(monitors, "front_x_m")) {
+    if (!(t > 0) || x > c.far_wall_x - c.depth) continue;
+    times.push_back(t);
+    reference.push_back(2.0 * t * time_scale);
+    computed.push_back((x - c.dam_x) / c.depth);
+  }
+  if (times.size() < 4) return std::nullopt;
+  RitterComparison out;
+  out.front = agreement(reference, computed);
+  const std::size_t half = times.size() / 2;  // the mean speed over the second half of the rows
+  const double speed = (computed.back() - computed[half]) * c.depth / (times.back() - times[half]);
+  out.front_speed_ratio = speed / (2.0 * celerity);
+  if (c.dam_gauge) {
+    const double t_min = 2.0 / time_scale, t_max = 3.0 * c.reservoir_length / celerity;
+    double sum = 0;
+    for (const auto& [t, h] : monitor_column(monitors, *c.dam_gauge))
+      if (t >= t_min && t < t_max) {
+        sum += (h + c.gauge_offset) / (4.0 * c.depth / 9.0);
+        ++out.dam_depth_points;
+      }
+    if (out.dam_depth_points > 0) out.dam_depth_ratio = sum / out.dam_depth_points;
+  }
+  return out;
+}
+
 }  // namespace coupling

@@ -11,6 +11,7 @@
 
 #include "coupling/analyses/isph_front.hpp"
 #include "coupling/analyses/isph_measures.hpp"
+#include "coupling/analyses/isph_waves.hpp"
 #include "coupling/analyses/sph_stage.hpp"
 #include "coupling/analyses/stage.hpp"
 #include "coupling/analyses/tank_monitors.hpp"
@@ -119,6 +120,22 @@ std::vector<std::string> isph_warnings(const IsphAnalysis& a, const IsphStageRes
   return out;
 }
 
+// Ritter's dam break as the scene gives it (front_reference's dam and depth), with the gauge at the dam if any.
+RitterSetting ritter_setting(const IsphAnalysis& a) {
+  const FrontReference& ref = *a.outputs.front_reference;
+  RitterSetting c;
+  c.dam_x = *ref.ritter_dam_x;
+  c.depth = *ref.ritter_depth;
+  c.g = gravity_of(a);
+  c.reservoir_length = c.dam_x - a.tank.x_min;
+  c.far_wall_x = a.tank.x_max;
+  c.dx = a.settings.particle_spacing;
+  c.gauge_offset = a.monitors.still_water - a.tank.y_min;
+  for (const Gauge& gauge : a.monitors.gauges)
+    if (std::abs(gauge.x - c.dam_x) <= c.dx) c.dam_gauge = gauge.name + "_m";
+  return c;
+}
+
 // The figures and checks taken at the end of the run.
 void finish_result(const IsphAnalysis& a, const sph::fluid::Model& model, const WallCrossingObserver& crossing,
                    IsphStageResult& result) {
@@ -135,6 +152,9 @@ void finish_result(const IsphAnalysis& a, const sph::fluid::Model& model, const 
   const std::optional<FrontReference>& ref = a.outputs.front_reference;
   if (ref && !ref->data.empty())
     result.front_errors = martin_moyce_front_errors(result.monitors, {ref->column_width, gravity_of(a), a.tank.x_min});
+  if (ref && ref->ritter_dam_x && ref->ritter_depth) result.ritter = ritter_comparison(result.monitors, ritter_setting(a));
+  if (!a.bodies.empty() && !a.monitors.gauges.empty())
+    result.waves = gauge_waves(result.monitors, a.monitors, a.tank, gravity_of(a));
   result.warnings = isph_warnings(a, result);
 }
 

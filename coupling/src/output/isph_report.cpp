@@ -28,6 +28,34 @@ nlohmann::json front_error_json(const FrontErrors& e) {
           {"shift_T", e.shift}};
 }
 
+nlohmann::json agreement_json(const AgreementStatistics& a) {
+  return {{"points", a.points},       {"r", a.r},         {"mean_error", a.mean_error},
+          {"mean_absolute_error", a.mean_absolute_error}, {"rms_error", a.rms_error}, {"nse", a.nse}};
+}
+
+nlohmann::json ritter_json(const RitterComparison& c) {
+  nlohmann::json j = {{"front_X_against_2T", agreement_json(c.front)}, {"front_speed_ratio", c.front_speed_ratio}};
+  j["dam_depth_ratio"] = c.dam_depth_ratio ? nlohmann::json(*c.dam_depth_ratio) : nlohmann::json(nullptr);
+  j["dam_depth_points"] = c.dam_depth_points;
+  return j;
+}
+
+nlohmann::json waves_json(const GaugeWaves& w) {
+  nlohmann::json gauges = nlohmann::json::array(), celerity = nlohmann::json::array();
+  const auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  for (const GaugeWave& g : w.gauges)
+    gauges.push_back({{"name", g.name}, {"x_m", g.x}, {"highest_m", g.highest}, {"highest_at_s", g.highest_at},
+                      {"lowest_m", g.lowest}, {"leading_crest_m", optional(g.crest)},
+                      {"leading_crest_at_s", optional(g.crest_at)}});
+  for (const WaveCelerity& c : w.celerity)
+    celerity.push_back({{"from", c.from}, {"to", c.to}, {"speed_m_s", c.speed}, {"ratio_to_sqrt_g_d", c.ratio}});
+  return {{"still_water_depth_m", w.depth},
+          {"sqrt_g_d_m_s", w.long_wave_celerity},
+          {"leading_crest_least_m", crest_fraction * w.depth},
+          {"gauges", gauges},
+          {"leading_crest_celerity", celerity}};
+}
+
 nlohmann::json bodies_json(const IsphStageResult& r) {
   nlohmann::json out = nlohmann::json::array();
   for (const BodyRecord& b : r.bodies) {
@@ -93,6 +121,8 @@ nlohmann::json isph_report(const IsphStageResult& r) {
   if (r.past_walls_first_time) j["fluid_past_walls"]["first_at_s"] = *r.past_walls_first_time;
   if (r.still_tank) j["still_tank"] = still_tank_json(*r.still_tank);
   if (r.front_errors) j["front_error"] = front_error_json(*r.front_errors);
+  if (r.ritter) j["ritter"] = ritter_json(*r.ritter);
+  if (r.waves) j["waves"] = waves_json(*r.waves);
   j["warnings"] = r.warnings;
   j["figures"] = r.figures;
   j["frames_written"] = r.summary.frames_written;

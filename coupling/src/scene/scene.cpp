@@ -422,6 +422,9 @@ std::string summarize(const Scene& scene) {
     const IsphAnalysis& f = *scene.analyses.isph;
     out << "fluid tank x " << format_number(f.tank.x_min) << " to " << format_number(f.tank.x_max) << " m, "
         << f.water.size() << " water block" << (f.water.size() == 1 ? "" : "s");
+    if (!f.solids.empty()) out << ", " << f.solids.size() << " solid" << (f.solids.size() == 1 ? "" : "s");
+    if (!f.bodies.empty()) out << ", " << f.bodies.size() << " rigid bod" << (f.bodies.size() == 1 ? "y" : "ies");
+    if (f.bed_slope != 0) out << ", bed slope " << format_number(100.0 * f.bed_slope) << " %";
     if (scene.section || scene.body_count) out << "; ";
   }
   if (scene.analyses.mps) {

@@ -10,6 +10,7 @@
 #include "coupling/analyses/isph_front.hpp"
 #include "coupling/analyses/isph_measures.hpp"
 #include "coupling/analyses/isph_bodies.hpp"
+#include "coupling/analyses/isph_waves.hpp"
 #include "coupling/output/monitor_table.hpp"
 #include "sph/engine/run_loop.hpp"
 
@@ -31,6 +32,8 @@ struct IsphStageResult {
   std::optional<double> past_walls_first_time;
   std::optional<StillTankCheck> still_tank;  // a still tank: against hydrostatics
   std::optional<FrontErrors> front_errors;  // front_reference with Martin & Moyce's table
+  std::optional<RitterComparison> ritter;  // front_reference with Ritter's dam
+  std::optional<GaugeWaves> waves;  // a run with rigid bodies and gauges: the waves they made
   std::vector<std::string> warnings;  // each naming its scene key
   std::vector<std::string> figures;  // relative to the run folder
   MonitorTable monitors;
