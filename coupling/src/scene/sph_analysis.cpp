@@ -18,7 +18,6 @@
 #include <string_view>
 #include <utility>
 
-#include "coupling/compare/sliding_mass.hpp"
 #include "coupling/scene/scene.hpp"
 #include "scene_internal.hpp"
 #include "sph/engine/fill.hpp"
