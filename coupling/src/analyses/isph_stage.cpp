@@ -77,6 +77,7 @@ void resume_isph(const WorkflowOptions& options, sph::fluid::Model& model, TankM
   result.max_density_error = earlier.value("max_density_error", 0.0);
   result.mean_density_error = earlier.value("mean_density_error", 0.0);
   result.largest_time_step = earlier.value("largest_time_step_s", 0.0);
+  result.wall_contacts = earlier.value("wall_contacts", std::size_t{0});
   const nlohmann::json energy = earlier.value("energy_J_per_m", nlohmann::json::object());
   bodies.restore(bodies_from_report(earlier), energy.value("fluid_start", bodies.fluid_energy_start()), model);
   const nlohmann::json past = earlier.value("fluid_past_walls", nlohmann::json::object());
@@ -184,6 +185,7 @@ IsphStageResult run_isph(const Scene& scene, const WorkflowOptions& options) {
     result.max_density_error = std::max(result.max_density_error, d.max_density_error);
     result.mean_density_error = std::max(result.mean_density_error, d.mean_density_error);
     result.largest_time_step = std::max(result.largest_time_step, d.time_step);
+    result.wall_contacts += d.wall_contacts;
   });
   if (monitors.table().times.back() < model.state.time) monitors.sample(model.particles, model.state.time);  // the end
   result.monitors = std::move(monitors.table());

@@ -117,6 +117,7 @@ nlohmann::json isph_report(const IsphStageResult& r) {
   j["max_density_error"] = r.max_density_error;
   j["mean_density_error"] = r.mean_density_error;
   j["largest_time_step_s"] = r.largest_time_step;
+  j["wall_contacts"] = r.wall_contacts;
   j["fluid_past_walls"] = {{"end", r.past_walls_end}, {"most", r.past_walls_most}};
   if (r.past_walls_first_time) j["fluid_past_walls"]["first_at_s"] = *r.past_walls_first_time;
   if (r.still_tank) j["still_tank"] = still_tank_json(*r.still_tank);

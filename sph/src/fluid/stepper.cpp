@@ -464,6 +464,7 @@ void Step::advance(double dt) {
   body_forces();
   finish_positions(dt);
   move_bodies(dt);
+  keep_off_walls();
   remove_escaped();
   diag_.time_step = dt;
   model_.state.time += dt;
@@ -590,6 +591,43 @@ void Step::move_bodies(double dt) {
     p.vx[i] = v[b] * body.direction_x;
     p.vy[i] = v[b] * body.direction_y;
   }
+}
+
+// Decision D23: a fluid particle closer than the clearance to a wall or body particle at r^{n+1} is put back at
+// the clearance along the line of centres, and its velocity toward that particle (relative to the wall's) removed;
+// the wall particles in the candidates' order (the same for any thread count). Only the fluid particle moves.
+void Step::keep_off_walls() {
+  ParticleSet& p = model_.particles;
+  diag_.wall_contacts = 0;
+  const double clear = model_.settings.wall_clearance * model_.settings.particle_spacing;
+  if (clear <= 0) return;
+  const CandidateList& c = impl_->candidates;
+  std::size_t contacts = 0;
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+#pragma omp parallel for schedule(static) reduction(+ : contacts)
+  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
+    const auto i = static_cast<std::size_t>(ii);
+    if (p.kind[i] != kFluid) continue;
+    bool touched = false;
+    for (std::uint32_t k = c.start[i]; k < c.start[i + 1]; ++k) {
+      const std::uint32_t j = c.j[k];
+      if (p.kind[j] == kFluid) continue;
+      const double rx = p.x[i] - p.x[j], ry = p.y[i] - p.y[j];
+      const double r2 = rx * rx + ry * ry;
+      if (r2 >= clear * clear || r2 <= 0) continue;
+      const double r = std::sqrt(r2), nx = rx / r, ny = ry / r;
+      p.x[i] += (clear - r) * nx;
+      p.y[i] += (clear - r) * ny;
+      const double vn = (p.vx[i] - p.vx[j]) * nx + (p.vy[i] - p.vy[j]) * ny;
+      if (vn < 0) {
+        p.vx[i] -= vn * nx;
+        p.vy[i] -= vn * ny;
+      }
+      touched = true;
+    }
+    contacts += touched ? 1 : 0;
+  }
+  diag_.wall_contacts = contacts;
 }
 
 // Fluid particles outside the domain are removed (the seed paper deletes particles that leave; D11).

@@ -27,6 +27,7 @@ struct IsphStageResult {
   // over the steps (a resumed run: from t = 0): the largest max |rho* - rho0|/rho0 and the largest of its mean over
   // the fluid, and the largest time step taken [s]
   double max_density_error = 0, mean_density_error = 0, largest_time_step = 0;
+  std::size_t wall_contacts = 0;  // fluid particle-steps put back at the wall clearance (docs/isph.md D23)
   // fluid particles past the walls' first row: at the end, the most at any step and the first time there was one
   std::size_t past_walls_end = 0, past_walls_most = 0;
   std::optional<double> past_walls_first_time;

@@ -31,8 +31,9 @@ struct StepDiagnostics {
   std::size_t surface_particles = 0;
   std::size_t wall_passes = 0;  // wall extrapolations + solves of the last step
   double time_step = 0;
-  std::size_t removed_particles = 0;
-  std::size_t tension_clamped = 0;  // unknowns whose negative pressure was set to 0 in the last solve (D21)  // fluid particles that left the domain in the last step
+  std::size_t removed_particles = 0;  // fluid particles that left the domain in the last step
+  std::size_t tension_clamped = 0;  // unknowns whose negative pressure was set to 0 in the last solve (D21)
+  std::size_t wall_contacts = 0;  // fluid particles the last step put back at the wall clearance (D23)
   std::vector<double> body_force_x, body_force_y;  // the fluid's pressure force on each rigid body [N/m]
 };
 
@@ -75,6 +76,7 @@ class Step : public Stepper {
   void finish_positions(double dt);
   void body_forces();
   void move_bodies(double dt);
+  void keep_off_walls();
   void remove_escaped();
   bool is_body(std::size_t i) const;
 
