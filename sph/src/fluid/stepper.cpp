@@ -593,39 +593,54 @@ void Step::move_bodies(double dt) {
   }
 }
 
-// Decision D23: a fluid particle closer than the clearance to a wall or body particle at r^{n+1} is put back at
-// the clearance along the line of centres, and its velocity toward that particle (relative to the wall's) removed;
-// the wall particles in the candidates' order (the same for any thread count). Only the fluid particle moves.
+// Decision D23: a fluid particle closer than the clearance to a wall or body particle at r^{n+1} is moved out along
+// the walls' normal there, n = the kernel-weighted sum of the unit vectors from its wall neighbours to it, by the
+// clearance less its distance to the nearest, and its velocity along -n (relative to that wall particle's) removed.
+// The tangential velocity is kept: the wall is frictionless to this correction (using each wall particle's line of
+// centres instead braked a thin sheet sliding along a floor: the Ritter front at 0.52 of its speed). Wall
+// neighbours in the candidates' order (the same for any thread count); only the fluid particle moves.
 void Step::keep_off_walls() {
   ParticleSet& p = model_.particles;
   diag_.wall_contacts = 0;
   const double clear = model_.settings.wall_clearance * model_.settings.particle_spacing;
   if (clear <= 0) return;
   const CandidateList& c = impl_->candidates;
+  const FluidKernel& kernel = impl_->kernel;
   std::size_t contacts = 0;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
 #pragma omp parallel for schedule(static) reduction(+ : contacts)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
     if (p.kind[i] != kFluid) continue;
-    bool touched = false;
+    double nearest2 = clear * clear, nx = 0, ny = 0;
+    std::size_t wall = p.size();
     for (std::uint32_t k = c.start[i]; k < c.start[i + 1]; ++k) {
       const std::uint32_t j = c.j[k];
       if (p.kind[j] == kFluid) continue;
       const double rx = p.x[i] - p.x[j], ry = p.y[i] - p.y[j];
       const double r2 = rx * rx + ry * ry;
-      if (r2 >= clear * clear || r2 <= 0) continue;
-      const double r = std::sqrt(r2), nx = rx / r, ny = ry / r;
-      p.x[i] += (clear - r) * nx;
-      p.y[i] += (clear - r) * ny;
-      const double vn = (p.vx[i] - p.vx[j]) * nx + (p.vy[i] - p.vy[j]) * ny;
-      if (vn < 0) {
-        p.vx[i] -= vn * nx;
-        p.vy[i] -= vn * ny;
+      if (r2 <= 0 || r2 >= kernel.support() * kernel.support()) continue;
+      const double r = std::sqrt(r2), w = kernel.value(r) / r;
+      nx += w * rx;
+      ny += w * ry;
+      if (r2 < nearest2) {
+        nearest2 = r2;
+        wall = j;
       }
-      touched = true;
     }
-    contacts += touched ? 1 : 0;
+    const double norm = std::sqrt(nx * nx + ny * ny);
+    if (wall == p.size() || norm <= 0) continue;
+    nx /= norm;
+    ny /= norm;
+    const double push = clear - std::sqrt(nearest2);
+    p.x[i] += push * nx;
+    p.y[i] += push * ny;
+    const double vn = (p.vx[i] - p.vx[wall]) * nx + (p.vy[i] - p.vy[wall]) * ny;
+    if (vn < 0) {
+      p.vx[i] -= vn * nx;
+      p.vy[i] -= vn * ny;
+    }
+    ++contacts;
   }
   diag_.wall_contacts = contacts;
 }
