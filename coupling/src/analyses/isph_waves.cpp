@@ -31,11 +31,13 @@ GaugeWaves gauge_waves(const MonitorTable& monitors, const TankMonitors& setup, 
   out.depth = setup.still_water - tank.y_min;
   out.long_wave_celerity = out.depth > 0 ? std::sqrt(g * out.depth) : 0.0;
   for (const Gauge& gauge : setup.gauges) {
-    const auto series = monitor_column(monitors, gauge.name + "_m");
+    auto series = monitor_column(monitors, gauge.name + "_m");
     if (series.empty()) continue;
     GaugeWave w;
     w.name = gauge.name;
     w.x = gauge.x;
+    w.initial = series.front().second;
+    for (auto& sample : series) sample.second -= w.initial;
     w.highest = w.lowest = series.front().second;
     for (const auto& [t, eta] : series) {
       if (eta > w.highest) {

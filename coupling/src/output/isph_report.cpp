@@ -44,7 +44,7 @@ nlohmann::json waves_json(const GaugeWaves& w) {
   nlohmann::json gauges = nlohmann::json::array(), celerity = nlohmann::json::array();
   const auto optional = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
   for (const GaugeWave& g : w.gauges)
-    gauges.push_back({{"name", g.name}, {"x_m", g.x}, {"highest_m", g.highest}, {"highest_at_s", g.highest_at},
+    gauges.push_back({{"name", g.name}, {"x_m", g.x}, {"initial_m", g.initial}, {"highest_m", g.highest}, {"highest_at_s", g.highest_at},
                       {"lowest_m", g.lowest}, {"leading_crest_m", optional(g.crest)},
                       {"leading_crest_at_s", optional(g.crest_at)}});
   for (const WaveCelerity& c : w.celerity)

@@ -14,6 +14,10 @@ namespace coupling {
 struct GaugeWave {
   std::string name;
   double x = 0;  // [m]
+  // The gauge's reading at t = 0: the discretised still surface (the top row's centres plus dx/2), which differs
+  // from the scene's still water by up to dx/2 when the depth is not a whole number of spacings. The elevations
+  // below are relative to it [m].
+  double initial = 0;
   double highest = 0, highest_at = 0, lowest = 0;  // [m], [s], [m]
   // the first local maximum of the elevation (over +-window) that is at least crest_fraction d high [m], [s]
   std::optional<double> crest, crest_at;
