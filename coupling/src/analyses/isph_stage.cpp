@@ -130,10 +130,9 @@ RitterSetting ritter_setting(const IsphAnalysis& a) {
   c.g = gravity_of(a);
   c.reservoir_length = c.dam_x - a.tank.x_min;
   c.far_wall_x = a.tank.x_max;
-  c.dx = a.settings.particle_spacing;
   c.gauge_offset = a.monitors.still_water - a.tank.y_min;
   for (const Gauge& gauge : a.monitors.gauges)
-    if (std::abs(gauge.x - c.dam_x) <= c.dx) c.dam_gauge = gauge.name + "_m";
+    if (std::abs(gauge.x - c.dam_x) <= a.settings.particle_spacing) c.dam_gauge = gauge.name + "_m";
   return c;
 }
 

@@ -9,7 +9,8 @@
 // below), the coarse matrix is the Galerkin product P^T A P with P the piecewise-constant prolongation of the
 // aggregates (unsmoothed aggregation, Vanek, Mandel & Brezina 1996 without the smoothing of P; Notay 2010 for its
 // use as a Krylov preconditioner), and one symmetric cycle (one coarse correction from the finest level, two from
-// each level below) with damped Jacobi smoothing and a scaled coarse correction is applied per Krylov iteration. The coarsest level is solved by a dense Cholesky factorisation.
+// each level below) with damped Jacobi smoothing and a scaled coarse correction is applied per Krylov iteration.
+// The coarsest level is solved by a dense Cholesky factorisation.
 //
 // Everything is deterministic and independent of the thread count: the smoother is Jacobi (each row reads only the
 // previous sweep), the aggregates come from the geometry, and the Galerkin sums run in a fixed order.

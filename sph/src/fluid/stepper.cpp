@@ -606,30 +606,39 @@ void Step::keep_off_walls() {
   if (clear <= 0) return;
   const CandidateList& c = impl_->candidates;
   const FluidKernel& kernel = impl_->kernel;
+  const double support2 = kernel.support() * kernel.support();
   std::size_t contacts = 0;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
 #pragma omp parallel for schedule(static) reduction(+ : contacts)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
     if (p.kind[i] != kFluid) continue;
-    double nearest2 = clear * clear, nx = 0, ny = 0;
+    double nearest2 = clear * clear;
     std::size_t wall = p.size();
-    for (std::uint32_t k = c.start[i]; k < c.start[i + 1]; ++k) {
+    for (std::uint32_t k = c.start[i]; k < c.start[i + 1]; ++k) {  // the nearest wall particle within the clearance
       const std::uint32_t j = c.j[k];
       if (p.kind[j] == kFluid) continue;
       const double rx = p.x[i] - p.x[j], ry = p.y[i] - p.y[j];
       const double r2 = rx * rx + ry * ry;
-      if (r2 <= 0 || r2 >= kernel.support() * kernel.support()) continue;
-      const double r = std::sqrt(r2), w = kernel.value(r) / r;
-      nx += w * rx;
-      ny += w * ry;
-      if (r2 < nearest2) {
+      if (r2 > 0 && r2 < nearest2) {
         nearest2 = r2;
         wall = j;
       }
     }
+    if (wall == p.size()) continue;  // the common case: no wall particle that close
+    double nx = 0, ny = 0;
+    for (std::uint32_t k = c.start[i]; k < c.start[i + 1]; ++k) {  // the walls' normal there
+      const std::uint32_t j = c.j[k];
+      if (p.kind[j] == kFluid) continue;
+      const double rx = p.x[i] - p.x[j], ry = p.y[i] - p.y[j];
+      const double r2 = rx * rx + ry * ry;
+      if (r2 <= 0 || r2 >= support2) continue;
+      const double r = std::sqrt(r2), w = kernel.value(r) / r;
+      nx += w * rx;
+      ny += w * ry;
+    }
     const double norm = std::sqrt(nx * nx + ny * ny);
-    if (wall == p.size() || norm <= 0) continue;
+    if (norm <= 0) continue;
     nx /= norm;
     ny /= norm;
     const double push = clear - std::sqrt(nearest2);

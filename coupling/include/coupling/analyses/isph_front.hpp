@@ -63,7 +63,7 @@ struct RitterComparison {
 };
 struct RitterSetting {
   double dam_x = 0, depth = 0, g = 0;  // [m], [m], [m/s^2]
-  double reservoir_length = 0, far_wall_x = 0, dx = 0;  // [m]
+  double reservoir_length = 0, far_wall_x = 0;  // [m]
   std::optional<std::string> dam_gauge;  // the monitors.csv column of the gauge at the dam
   double gauge_offset = 0;  // [m] added to the gauge's values to give the depth (still water level - bed)
 };

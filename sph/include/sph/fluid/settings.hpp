@@ -63,8 +63,8 @@ struct Settings : EngineSettings {
   // pressure equation's solution as it is
   bool tension = false;
   // The nearest a fluid particle's centre may come to a wall or body particle's, as a fraction of the spacing
-  // (decision D23): closer at the end of a step, it is put back at this distance and its velocity toward the wall
-  // particle removed. 0 turns it off. At rest the fluid is one spacing from the walls' first row.
+  // (decision D23): closer at the end of a step, it is moved out along the walls' normal to this distance and its
+  // velocity into the wall removed. 0 turns it off. At rest the fluid is one spacing from the walls' first row.
   double wall_clearance = 0.5;
 
   int wall_layers = 3;
