@@ -15,7 +15,7 @@ namespace {
 
 const char* const kMethodColours[] = {"#d62728", "#1f77b4", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
-struct Bounds {
+struct PlotBounds {
   double x_min = std::numeric_limits<double>::infinity(), x_max = -std::numeric_limits<double>::infinity();
   double y_min = std::numeric_limits<double>::infinity(), y_max = -std::numeric_limits<double>::infinity();
   void add(double x, double y) {
@@ -51,7 +51,7 @@ void draw_section(SvgCanvas& canvas, const slope::Section& section) {
 }  // namespace
 
 std::string section_figure_svg(const SectionFigureData& data) {
-  Bounds bounds;
+  PlotBounds bounds;
   if (data.section) {
     for (const auto& line : data.section->profile_lines) bounds.add(line.points);
     bounds.add(data.section->x_min(), data.section->bottom_y);
@@ -144,7 +144,7 @@ void draw_safety_map(SvgCanvas& canvas, const slope::SafetyMap& map, const std::
 std::string fs_map_svg(const FsMapFigureData& data) {
   const slope::Section& section = *data.section;
   const slope::SafetyMap map = slope::safety_map(section, *data.trials, 160);
-  Bounds bounds;
+  PlotBounds bounds;
   for (const auto& line : section.profile_lines) bounds.add(line.points);
   bounds.add(section.x_min(), section.bottom_y);
   bounds.pad(0.02);

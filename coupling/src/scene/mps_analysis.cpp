@@ -54,7 +54,7 @@ void read_numerics(JsonReader& r, sph::mps::Settings& s) {
 
 // One material: {name, type: "granular", consistency_Pa_sN, flow_index, regularisation_growth_s,
 // friction_angle_deg, cohesion_kPa} or {name, type: "water", viscosity_Pa_s}.
-MpsMaterial read_material(JsonReader& m) {
+MpsMaterial read_mps_material(JsonReader& m) {
   MpsMaterial out;
   out.name = m.string("name", Need::required).value_or("");
   const std::string type = m.string("type", Need::required).value_or("");
@@ -82,13 +82,13 @@ MpsMaterial read_material(JsonReader& m) {
   return out;
 }
 
-void read_materials(JsonReader& r, std::vector<MpsMaterial>& materials) {
+void read_mps_materials(JsonReader& r, std::vector<MpsMaterial>& materials) {
   const nlohmann::json* list = r.array("materials", Need::required, 1, materials_limit, "an array of materials");
   if (!list) return;
   std::set<std::string> names;
   for (std::size_t k = 0; k < list->size(); ++k) {
     JsonReader m((*list)[k], index_path(r.path_of("materials"), k), r.diagnostics());
-    MpsMaterial material = read_material(m);
+    MpsMaterial material = read_mps_material(m);
     if (!material.name.empty() && !names.insert(material.name).second)
       m.diagnostics().error(m.path_of("name"), "used twice (each material needs its own name)");
     materials.push_back(std::move(material));
@@ -203,7 +203,7 @@ MpsPlan plan_mps(const MpsAnalysis& a) {
 MpsAnalysis read_mps_analysis(JsonReader& mps) {
   MpsAnalysis a;
   read_numerics(mps, a.settings);
-  read_materials(mps, a.materials);
+  read_mps_materials(mps, a.materials);
   read_tank(mps, a.tank);
   read_tank_rectangles(mps, "blocks", a.tank, a.blocks,
                        [&](JsonReader& b) { read_block_material(b, a.materials, a); });

@@ -5,13 +5,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "sph/engine/require.hpp"
+
 namespace sph {
 
 namespace {
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument(what);
-}
-bool finite_positive(double v) { return std::isfinite(v) && v > 0; }
 std::string number(double v) {
   std::string s = std::to_string(v);
   s.erase(s.find_last_not_of('0') + 1);

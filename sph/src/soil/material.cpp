@@ -1,15 +1,10 @@
 #include "sph/soil/material.hpp"
 
 #include <stdexcept>
+#include "sph/engine/require.hpp"
 #include "sphslope/units.hpp"
 
 namespace sph {
-
-namespace {
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument(what);
-}
-}  // namespace
 
 void Material::validate() const {
   const std::string m = "material '" + name + "': ";

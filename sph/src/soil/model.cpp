@@ -7,16 +7,10 @@
 #include <string>
 
 #include "sph/engine/neighbour_search.hpp"
+#include "sph/engine/require.hpp"
 #include "sph/soil/soil_step.hpp"
 
 namespace sph {
-
-namespace {
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument(what);
-}
-bool finite_positive(double v) { return std::isfinite(v) && v > 0; }
-}  // namespace
 
 double default_cfl(TimeIntegration integration) {
   return integration == TimeIntegration::verlet ? 1.0 : 0.2;
