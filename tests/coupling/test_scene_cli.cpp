@@ -512,7 +512,7 @@ TEST_CASE("sphslope run on an mps scene with a gate builds it, echoes it and hol
 // moves that point by up to 27 % of the fan's distance: docs/mps.md section 8); the bed at the dam is scoured by
 // more than one spacing (measured 12-13 mm).
 TEST_CASE("sphslope run on the erodible dam break writes profiles and the dam-break figures, and resumes",
-          "[cli][mps][e2e]") {
+          "[cli][mps][e2e][long]") {
   TemporaryFolder folder("mps_dam_break");
   std::ifstream in(source_path("cases/mps_erodible_dam_break_fraccarollo.json"));
   nlohmann::json scene = nlohmann::json::parse(in);

@@ -331,7 +331,7 @@ TEST_CASE("the thesis slopes fill with the thesis's particle counts", "[sph][fil
 }
 
 TEST_CASE("the demo with water: two_layer_water_sph at 1 m runs end to end, SPH carries the water table and the "
-          "surcharge, and the comparison agrees with limit equilibrium", "[sph][loads][cli]") {
+          "surcharge, and the comparison agrees with limit equilibrium", "[sph][loads][cli][long]") {
   // cases/two_layer_water_sph.json (LEM Bishop 1.438 with the water table and the 20 kPa crest strip) at a coarse
   // spacing: the SPH run stands (measured: largest displacement 0.135 m, no plastic band), the comparison says so
   // and that LE agrees, and the strength reduction finds FS_SPH near Bishop's (measured 1.540 at 1 m, +7.1 %;

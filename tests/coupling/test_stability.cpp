@@ -369,7 +369,7 @@ TEST_CASE("stability: failing slopes of extreme materials finish, fail as LEM sa
 }
 
 TEST_CASE("stability: the loads at their extremes (deep ponding, the water line on the ground, k_h = 0.9) finish "
-          "and stand or fail as LEM says", "[stability][sph][loads][cli]") {
+          "and stand or fail as LEM says", "[stability][sph][loads][cli][long]") {
   // Deep ponding (LEM Bishop 1.82): the slope stays in place (below 2 % of H, as the dry stable slope under sudden
   // gravity). The water line on the ground (0.855) and k_h = 0.9 (0.36): it fails (more than 5 % of H). In every
   // case kinetic energy + plastic work stays within the potential energy released (gravity, pore pressure, k_h).
@@ -408,7 +408,7 @@ void check_collapse_against_laws(const TemporaryFolder& folder, const char* stem
 
 TEST_CASE("stability: columns of a = 1 (2.5 mm) and a = 2 (5 mm) slide down a no-slip back wall without blowing up "
           "and match the true-2-D laws",
-          "[stability][sph][collapse][cli]") {
+          "[stability][sph][collapse][cli][long]") {
   // Both blew up before the continuity equation used the walls' own velocity (non-positive density next to the back
   // wall near the free surface; shared/references/sph-collapse-blowup.md). Measured: a = 1: d 0.408 m (law 0.425),
   // h_f 0.0671 m (0.0704); a = 2: d 0.682 m (law 0.730), h_f 0.0887 m (0.0887).
@@ -419,7 +419,7 @@ TEST_CASE("stability: columns of a = 1 (2.5 mm) and a = 2 (5 mm) slide down a no
 
 TEST_CASE("stability: the tall columns of the collapse series (a = 3 and 4 at 20 particles across) match the "
           "true-2-D laws",
-          "[stability][sph][collapse][cli]") {
+          "[stability][sph][collapse][cli][long]") {
   // Measured (2026-11-24): a = 3: d 0.967 m (law 0.947, +2.1 %), h_f 0.1023 m (0.1016, +0.7 %); a = 4: d 1.205 m
   // (law 1.145, +5.2 %), h_f 0.1140 m (0.1118, +1.9 %).
   TemporaryFolder folder("stability-collapse-tall");

@@ -188,7 +188,7 @@ TEST_CASE("srm: with the water line on the ground surface the Griffiths & Lane s
 }
 
 TEST_CASE("srm: a crest surcharge and k_h on the Griffiths & Lane slope at 1 m spacing are within 10 % of LEM "
-          "Bishop", "[srm][validation][loads]") {
+          "Bishop", "[srm][validation][loads][long]") {
   // LEM Bishop: 40 kPa on the crest from x = 4 to 12 m (its edge) 1.240; k_h = 0.1 toward the toe 1.109 (dry
   // 1.378). SPH measured 1.219 in [1.201, 1.236] (-1.7 %) and 1.028 in [1.012, 1.043] (-7.3 %); 10 % as the
   // slow-drawdown case at this spacing.
@@ -206,7 +206,7 @@ TEST_CASE("srm: a crest surcharge and k_h on the Griffiths & Lane slope at 1 m s
 }
 
 TEST_CASE("srm: Griffiths & Lane example 5, slow drawdown to L/H = 0 and 0.7, at 1 m spacing, within 10 % of LEM "
-          "Bishop and of the paper's FE values", "[srm][validation][loads]") {
+          "Bishop and of the paper's FE values", "[srm][validation][loads][long]") {
   // Reference: Griffiths & Lane (1999) example 5, Fig. 15: the slope of example 1 with a level free surface at depth
   // L below the crest, in the slope and the reservoir; FE strength reduction 1.85 at L/H = 0 (Morgenstern 1963
   // chart 1.85) and 1.30 (the minimum) at L/H = 0.7 (values as re-read from the figure by a re-implementation; the

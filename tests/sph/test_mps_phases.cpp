@@ -113,7 +113,7 @@ TEST_CASE("MPS two water layers of different densities carry the two-density hyd
 // with the pore pressure taken off (the total pressure's 4 % deficit is 20 % of the buoyant weight), 11.2 without.
 TEST_CASE("MPS saturated bed under water: the grains' effective pressure is their buoyant weight with the pore "
           "pressure taken off",
-          "[mps]") {
+          "[mps][long]") {
   sph::mps::Material bed = sph::mps::Material::granular_material();
   bed.density = 0.6 * 1540.0 + 0.4 * 1000.0;
   bed.granular.friction_angle_deg = 27.0;
