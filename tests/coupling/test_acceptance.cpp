@@ -1,4 +1,5 @@
 // Acceptance criteria of the surface comparison (analyses.compare.acceptance) and the exit status a pipeline reads.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
@@ -118,7 +119,7 @@ TEST_CASE("acceptance through the program: accepted gives 0, rejected gives 3 wi
   // few spacings of Bishop's circle. Loose limits accept it; a limit no SPH surface can meet (overlap 100 %,
   // entry within 0 m) rejects it, with status 3 and report status "not_accepted".
   TemporaryFolder folder("acceptance");
-  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/thesis_slope2.json");
+  nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases/thesis_slope2.json");
   scene["analyses"]["sph"]["particle_spacing_m"] = 0.5;
   scene["analyses"]["sph"]["end_time_s"] = 3.0;
   scene["analyses"]["lem"]["methods"] = {"bishop"};
@@ -126,7 +127,7 @@ TEST_CASE("acceptance through the program: accepted gives 0, rejected gives 3 wi
     scene["analyses"]["compare"] = {{"acceptance", acceptance}};
     const fs::path file = folder.path / (name + ".json");
     std::ofstream(file) << scene.dump(2);
-    const std::string command = std::string("\"") + SPHSLOPE_BINARY + "\" run \"" + file.string() + "\" -o \"" +
+    const std::string command = std::string("\"") + test_paths::binary() + "\" run \"" + file.string() + "\" -o \"" +
                                 (folder.path / name).string() + "\" > \"" + (folder.path / (name + ".log")).string() +
                                 "\" 2>&1";
     const int status = std::system(command.c_str());

@@ -1,5 +1,6 @@
 // sphslope batch through the program: parallel jobs, summary files, JUnit XML valid against its schema,
 // resumption (finished scenes skipped, interrupted ones resumed), array-job index mode and Ctrl-C.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <fcntl.h>
@@ -22,7 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path source = SPHSLOPE_SOURCE_DIR;
+const fs::path source = test_paths::source_dir();
 
 struct Outcome {
   int status = -1;
@@ -31,7 +32,7 @@ struct Outcome {
 
 Outcome run_batch(const std::string& arguments, const fs::path& log) {
   const std::string command =
-      std::string("\"") + SPHSLOPE_BINARY + "\" batch " + arguments + " > \"" + log.string() + "\" 2>&1";
+      std::string("\"") + test_paths::binary() + "\" batch " + arguments + " > \"" + log.string() + "\" 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream in(log);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1,
@@ -133,7 +134,7 @@ TEST_CASE("batch: Ctrl-C stops the runs with checkpoints, says how to continue, 
   scene["analyses"]["sph"]["checkpoint_interval_s"] = 0.05;
   std::ofstream(scenes / "collapse.json") << scene.dump(2);
   const fs::path out = folder.path / "out";
-  std::vector<std::string> args = {SPHSLOPE_BINARY, "batch", scenes.string(), "-o", out.string()};
+  std::vector<std::string> args = {test_paths::binary(), "batch", scenes.string(), "-o", out.string()};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -142,7 +143,7 @@ TEST_CASE("batch: Ctrl-C stops the runs with checkpoints, says how to continue, 
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   pid_t pid = 0;
-  REQUIRE(posix_spawn(&pid, SPHSLOPE_BINARY, &actions, nullptr, argv.data(), environ) == 0);
+  REQUIRE(posix_spawn(&pid, test_paths::binary(), &actions, nullptr, argv.data(), environ) == 0);
   posix_spawn_file_actions_destroy(&actions);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   while (!fs::exists(out / "collapse/checkpoint.bin") && std::chrono::steady_clock::now() < deadline)

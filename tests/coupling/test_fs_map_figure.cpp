@@ -1,5 +1,6 @@
 // The safety map of the search (figures/fs_map.svg): its method from the scene (default Bishop), its clipped band
 // scale, the critical circular and non-circular surfaces drawn on it.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -18,7 +19,7 @@ using nlohmann::json;
 namespace {
 
 json weak_layer_scene() {
-  return json::parse(std::ifstream(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / "acads_ex3_weak_layer.json"));
+  return json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases" / "acads_ex3_weak_layer.json"));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 //
 // The golden files are in tests/golden/. To regenerate them -- ONLY when a result is MEANT to change; say why in
 // the commit message -- run scripts/update-golden (SPHSLOPE_UPDATE_GOLDEN=1 ./tests/test_coupling "[golden]").
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -49,7 +50,7 @@ constexpr double sph_tolerance = 0.0;
 // radius, the radius and the factor of safety relative to themselves).
 constexpr double lem_tolerance = 1e-12;
 
-const fs::path source_dir = SPHSLOPE_SOURCE_DIR;
+const fs::path source_dir = test_paths::source_dir();
 const fs::path golden_dir = source_dir / "tests" / "golden";
 
 bool update_mode() {

@@ -2,6 +2,7 @@
 // physical, files of hundreds of megabytes, millions of faults. Each is refused with exit status 2 and a message
 // naming the JSON path, the limit and why; none may crash the program. The limits are in
 // coupling/include/coupling/input_limits.hpp; the large scenes are generated here, in a temporary folder.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <cstddef>
@@ -20,7 +21,7 @@ namespace fs = std::filesystem;
 namespace {
 
 nlohmann::json case_scene(const std::string& name) {
-  return read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / name);
+  return read_json(fs::path(test_paths::source_dir()) / "cases" / name);
 }
 
 // `levels` arrays nested in one another: [[[...]]].

@@ -1,6 +1,7 @@
 // The seed paper's ISPH cases run from cases/ through the sphslope program at a coarse spacing: the dam break on a
 // dry bed against Ritter's solution, and the waves of Heinrich's (1992) submarine and aerial landslides (a rigid
 // block sliding down a 45-degree slope into the water). docs/isph.md section 8 gives the finer runs.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -17,7 +18,7 @@ using nlohmann::json;
 
 namespace {
 
-json case_scene(const std::string& name) { return read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / name); }
+json case_scene(const std::string& name) { return read_json(fs::path(test_paths::source_dir()) / "cases" / name); }
 
 // Runs the scene (written into the folder) and returns report.json's isph block, after the checks every run of
 // these cases must pass: exit 0, to the end time, the fluid's mass kept (none left the tank).

@@ -1,5 +1,6 @@
 // The isph analysis through the sphslope program: --resume, the figures of the run folder, the frames' fields and
 // the still tank against hydrostatics (docs/isph.md, docs/scene-format.md).
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -31,7 +32,7 @@ std::string quoted(const fs::path& p) {
 }
 
 nlohmann::json case_scene(const std::string& name) {
-  return read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / name);
+  return read_json(fs::path(test_paths::source_dir()) / "cases" / name);
 }
 
 fs::path write_scene(const fs::path& dir, const std::string& name, const nlohmann::json& scene) {

@@ -2,6 +2,7 @@
 // program: each finishes with physically sensible results, or says what went wrong in its report, or stops with a
 // clear diagnostic; never a null or NaN number the report does not explain. The refusal of a cfl beyond 0.5 is in
 // the refusal table of test_stability.cpp.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -25,7 +26,7 @@ struct IsphOutcome : ProgramRun {  // the program's status and output
 // Runs cases/stability/<stem>.json with analyses.isph patched; the report must hold no unexplained null.
 IsphOutcome run_isph_case(const TemporaryFolder& folder, const std::string& stem, const json& patch = json::object(),
                           const std::string& tag = "") {
-  json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/stability" / (stem + ".json"));
+  json scene = read_json(fs::path(test_paths::source_dir()) / "cases/stability" / (stem + ".json"));
   scene["analyses"]["isph"].merge_patch(patch);
   const fs::path file = folder.path / (stem + tag + ".json");
   std::ofstream(file) << scene.dump(1);

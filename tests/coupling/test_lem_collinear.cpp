@@ -1,6 +1,7 @@
 // Same geometry, same answer: every case of cases/ with its profile lines and piezometric line split into collinear
 // pieces gives the critical factor of safety of every method to within the search tolerance (issue 17: the number
 // of profile vertices sets the geometry only, never the slices or the search).
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -50,7 +51,7 @@ TEST_CASE("every case: splitting the section's lines into collinear pieces leave
   // The search stops refining at 1e-6 of the chord; the minimum it lands on may differ by rounding between two
   // descriptions of one geometry, far below this tolerance (0.01 % of FS).
   constexpr double fs_tolerance = 1e-4;
-  const std::filesystem::path cases = std::filesystem::path(SPHSLOPE_SOURCE_DIR) / "cases";
+  const std::filesystem::path cases = std::filesystem::path(test_paths::source_dir()) / "cases";
   int sections = 0;
   for (const auto& entry : std::filesystem::directory_iterator(cases)) {
     if (entry.path().extension() != ".json") continue;
@@ -88,7 +89,7 @@ TEST_CASE("a circle grazing a layer line: the slice between the two crossings ta
   // pieces (rounding of the line's mean height), FS 1.508 against 1.552 for the same circle. The arc lies in the
   // soil below: both must give that.
   const coupling::Scene scene =
-      coupling::load_scene(std::filesystem::path(SPHSLOPE_SOURCE_DIR) / "cases" / "acads_ex3_weak_layer.json");
+      coupling::load_scene(std::filesystem::path(test_paths::source_dir()) / "cases" / "acads_ex3_weak_layer.json");
   const slope::Section& plain = scene.section->section;
   const slope::Circle circle{50.432605307859745, 51.614070676431638, 25.118090173512336};
   for (const slope::Section& section : {plain, subdivided(plain, 7)}) {

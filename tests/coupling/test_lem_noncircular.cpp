@@ -1,4 +1,5 @@
 // The non-circular search on every slope scene of cases/, and its scene key and report block.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -18,7 +19,7 @@ namespace {
 
 std::vector<fs::path> case_files() {
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(fs::path(SPHSLOPE_SOURCE_DIR) / "cases"))
+  for (const auto& entry : fs::directory_iterator(fs::path(test_paths::source_dir()) / "cases"))
     if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
@@ -54,7 +55,7 @@ TEST_CASE("non-circular search on every case: the optimised polyline is not abov
 }
 
 TEST_CASE("analyses.lem.noncircular_search: read, refused when wrong, reported", "[lem][noncircular]") {
-  const fs::path file = fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / "acads_ex3_weak_layer.json";
+  const fs::path file = fs::path(test_paths::source_dir()) / "cases" / "acads_ex3_weak_layer.json";
   json scene = json::parse(std::ifstream(file));
   scene["analyses"]["lem"]["methods"] = {"spencer", "ordinary"};
   scene["analyses"]["lem"]["noncircular_search"] = {{"segments", 16}};

@@ -1,5 +1,6 @@
 // report.html: the page's content follows report.json (every factor in the table, the verdict, the warnings) and
 // stands alone (figures inlined). Its one-page layout is checked in Chromium by scripts/check-report-html.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -34,7 +35,7 @@ std::string three_decimals(const json& value) {
 
 TEST_CASE("report.html of a limit-equilibrium run: every factor of the report, both figures inlined",
           "[report_html][lem]") {
-  json scene = json::parse(std::ifstream(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / "acads_ex3_weak_layer.json"));
+  json scene = json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases" / "acads_ex3_weak_layer.json"));
   scene["name"] = "Weak layer <ACADS 3> & its \"specified\" surface";
   const coupling::Scene parsed = coupling::parse_scene(scene.dump(), "acads3.json");
   const TemporaryFolder folder("report-html");
@@ -65,7 +66,7 @@ TEST_CASE("report.html of a limit-equilibrium run: every factor of the report, b
 TEST_CASE("report.html lists errors and warnings once each, marks a failed run, names a missing figure",
           "[report_html]") {
   const coupling::Scene scene = coupling::parse_scene(
-      read_text(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / "griffiths_lane_1999.json"), "gl.json");
+      read_text(fs::path(test_paths::source_dir()) / "cases" / "griffiths_lane_1999.json"), "gl.json");
   json report = {{"status", "failed"},
                  {"analyses", {"lem", "sph"}},
                  {"errors", {"sph: the run stopped: non-positive density"}},

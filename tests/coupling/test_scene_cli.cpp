@@ -1,5 +1,6 @@
 // The sphslope program on malformed and good scene files: exit statuses, messages naming the JSON path, and an
 // end-to-end limit-equilibrium run that writes report.json.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
@@ -27,7 +28,7 @@ std::string quoted(const std::string& text) { return "'" + text + "'"; }
 
 ProgramRun run_program(const std::string& arguments) { return run_sphslope(arguments); }
 
-fs::path source_path(const std::string& relative) { return fs::path(SPHSLOPE_SOURCE_DIR) / relative; }
+fs::path source_path(const std::string& relative) { return fs::path(test_paths::source_dir()) / relative; }
 
 struct BadScene {
   const char* file;  // in tests/coupling/bad_scenes/
@@ -284,7 +285,7 @@ TEST_CASE("sphslope lem on Griffiths & Lane (1999) writes a complete report.json
 TEST_CASE("sphslope lem without -o prints the table and writes nothing", "[cli][lem]") {
   TemporaryFolder folder("print-only");
   const fs::path scene = source_path("cases/two_layer_water.json");
-  const std::string command = "cd " + quoted(folder.path.string()) + " && " + quoted(SPHSLOPE_BINARY) + " lem " +
+  const std::string command = "cd " + quoted(folder.path.string()) + " && " + quoted(test_paths::binary()) + " lem " +
                               quoted(scene.string()) + " 2>&1";
   FILE* pipe = ::popen(command.c_str(), "r");
   REQUIRE(pipe != nullptr);
@@ -305,7 +306,7 @@ TEST_CASE("sphslope run writes runs/<scene stem>/report.json by default, pore pr
           "[cli][run]") {
   TemporaryFolder folder("run-default");
   const fs::path scene = source_path("cases/two_layer_water.json");
-  const std::string command = "cd " + quoted(folder.path.string()) + " && " + quoted(SPHSLOPE_BINARY) + " run " +
+  const std::string command = "cd " + quoted(folder.path.string()) + " && " + quoted(test_paths::binary()) + " run " +
                               quoted(scene.string()) + " >/dev/null 2>&1";
   const int raw = std::system(command.c_str());
   REQUIRE(WIFEXITED(raw));

@@ -1,5 +1,6 @@
 // Scene loading in-process: SI conversion, defaults, what is accepted, errors collected with their JSON paths,
 // the report builder.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
@@ -316,7 +317,7 @@ TEST_CASE("scene: SPH carries the section loads, and ignore_loads leaves one out
           "[scene][sph]") {
   // docs/scene-format.md, analyses.sph.ignore_loads: SPH carries water, surcharges and k_h like limit equilibrium;
   // the user may leave one out on purpose (the report then warns), never one the section does not have.
-  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/two_layer_water.json"));
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water.json"));
   scene["section"]["seismic"]["horizontal_coefficient"] = 0.1;
   scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 1.0}};
   CHECK(coupling::loads_sph_leaves_out(parse_scene(scene.dump())).empty());
@@ -334,7 +335,7 @@ TEST_CASE("scene: SPH carries the section loads, and ignore_loads leaves one out
 }
 
 TEST_CASE("scene: k_h on a section level at both ends is refused for SPH (no direction)", "[scene][sph]") {
-  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/two_layer_water.json"));
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water.json"));
   scene["section"]["seismic"]["horizontal_coefficient"] = 0.1;
   scene["section"]["profile_lines"][0]["points_m"] = {{0, 20}, {20, 20}, {30, 10}, {40, 20}, {60, 20}};
   scene["section"]["profile_lines"][1]["points_m"] = {{0, 8}, {60, 8}};

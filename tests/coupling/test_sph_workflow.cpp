@@ -1,5 +1,6 @@
 // End-to-end SPH runs through the sphslope program: the comparison on thesis slope 2 at a coarse resolution,
 // and resuming a killed run.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <signal.h>
@@ -47,7 +48,7 @@ fs::path fresh_dir(const std::string& name) {
 }
 
 int run_program(const std::string& arguments) {
-  const std::string command = std::string("\"") + SPHSLOPE_BINARY + "\" " + arguments + " > /dev/null 2>&1";
+  const std::string command = std::string("\"") + test_paths::binary() + "\" " + arguments + " > /dev/null 2>&1";
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
@@ -68,7 +69,7 @@ bool finite_numbers(const nlohmann::json& value) {
 
 // Starts the program with stdout and stderr sent to /dev/null; returns its process id.
 pid_t spawn_program(std::vector<std::string> args) {
-  args.insert(args.begin(), SPHSLOPE_BINARY);
+  args.insert(args.begin(), test_paths::binary());
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -77,7 +78,7 @@ pid_t spawn_program(std::vector<std::string> args) {
   posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
   pid_t pid = 0;
-  const int error = posix_spawn(&pid, SPHSLOPE_BINARY, &actions, nullptr, argv.data(), environ);
+  const int error = posix_spawn(&pid, test_paths::binary(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   return error == 0 ? pid : -1;
 }
@@ -91,7 +92,7 @@ TEST_CASE("thesis slope 2, coarse: the SPH failure surface runs from behind the 
   // thesis finds (Fig. 5-24 b) that its SPH surface and the Geo-Studio critical surface start and end at the same
   // points. Here at dx = 0.5 m (20 particles over the height) and 3 s of collapse.
   const fs::path dir = fresh_dir("slope2");
-  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/thesis_slope2.json");
+  nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases/thesis_slope2.json");
   scene["analyses"]["sph"]["particle_spacing_m"] = 0.5;
   scene["analyses"]["sph"]["end_time_s"] = 3.0;
   scene["analyses"]["lem"]["methods"] = {"bishop", "spencer"};
@@ -147,7 +148,7 @@ TEST_CASE("an SPH run killed mid-way and resumed ends in the same state as an un
   // wall time. The killed run is stopped with SIGKILL (no chance to write anything more) once its first
   // checkpoint exists; `--resume` must then reach bitwise the same final checkpoint as the uninterrupted run.
   const fs::path dir = fresh_dir("resume");
-  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/bui2008_column_collapse.json");
+  nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases/bui2008_column_collapse.json");
   scene["analyses"]["sph"]["particle_spacing_m"] = 0.005;
   scene["analyses"]["sph"]["end_time_s"] = 0.4;
   scene["analyses"]["sph"]["output_interval_s"] = 0.1;
@@ -187,7 +188,7 @@ TEST_CASE("an SPH run killed mid-way and resumed ends in the same state as an un
 // as in the uninterrupted run. A journal written for other settings is refused.
 TEST_CASE("a strength reduction killed mid-trial and resumed gives the same trials and FS", "[srm][resume][cli]") {
   const fs::path dir = fresh_dir("srm_resume");
-  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/griffiths_lane_1999_srm.json");
+  nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases/griffiths_lane_1999_srm.json");
   scene["analyses"]["sph"]["particle_spacing_m"] = 1.0;
   scene["analyses"]["sph"]["checkpoint_interval_s"] = 0.05;
   scene["analyses"]["srm"] = {{"tolerance", 0.2}};
@@ -240,7 +241,7 @@ TEST_CASE("an SPH run killed at any moment leaves a checkpoint that loads", "[sp
   // stepping: each time, the checkpoint on disk must be a whole one (its checksum and sizes are checked by
   // read_checkpoint), never torn.
   const fs::path dir = fresh_dir("kill_any_moment");
-  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/bui2008_column_collapse.json");
+  nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases/bui2008_column_collapse.json");
   scene["analyses"]["sph"]["particle_spacing_m"] = 0.005;
   scene["analyses"]["sph"]["end_time_s"] = 5.0;  // long: it is killed well before
   scene["analyses"]["sph"]["checkpoint_interval_s"] = 0.001;
@@ -271,7 +272,7 @@ TEST_CASE("SPH run without the loads the user let it leave out: the report warns
   // cases/two_layer_water.json has a water table and a crest surcharge; with analyses.sph.ignore_loads the SPH run
   // leaves them out, and sph, srm and the comparison say what was left out.
   const fs::path dir = fresh_dir("ignored_loads");
-  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/two_layer_water.json");
+  nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases/two_layer_water.json");
   scene["analyses"]["lem"]["methods"] = {"bishop"};
   scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 0.2}, {"ignore_loads", {"water", "surcharges"}}};
   scene["analyses"]["compare"] = nlohmann::json::object();
@@ -289,7 +290,7 @@ TEST_CASE("SPH run without the loads the user let it leave out: the report warns
 
 TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted, and a checkpoint", "[sph][resume][cli]") {
   const fs::path dir = fresh_dir("interrupt");
-  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/bui2008_column_collapse.json");
+  nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases/bui2008_column_collapse.json");
   scene["analyses"]["sph"]["particle_spacing_m"] = 0.005;
   scene["analyses"]["sph"]["end_time_s"] = 5.0;  // long: it is interrupted well before
   write_json(dir / "scene.json", scene);
@@ -323,7 +324,7 @@ TEST_CASE("the thesis slopes fill with the thesis's particle counts", "[sph][fil
   const std::pair<const char*, std::size_t> cases[] = {
       {"cases/thesis_slope1.json", 3200}, {"cases/thesis_slope2.json", 3725}, {"cases/thesis_slope3.json", 7100}};
   for (const auto& [file, expected] : cases) {
-    const coupling::Scene scene = coupling::load_scene(fs::path(SPHSLOPE_SOURCE_DIR) / file);
+    const coupling::Scene scene = coupling::load_scene(fs::path(test_paths::source_dir()) / file);
     const double dx = scene.analyses.sph->settings.particle_spacing;
     INFO(file);
     CHECK(coupling::fill_section(scene.section->section, dx).points.size() == expected);
@@ -337,7 +338,7 @@ TEST_CASE("the demo with water: two_layer_water_sph at 1 m runs end to end, SPH 
   // and that LE agrees, and the strength reduction finds FS_SPH near Bishop's (measured 1.540 at 1 m, +7.1 %;
   // 15 % as the dry Griffiths & Lane test at this resolution). No load is left out, so no warning about loads.
   const fs::path dir = fresh_dir("demo_water");
-  nlohmann::json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/two_layer_water_sph.json");
+  nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases/two_layer_water_sph.json");
   scene["analyses"]["sph"]["particle_spacing_m"] = 1.0;
   scene["analyses"]["srm"]["tolerance"] = 0.05;
   write_json(dir / "scene.json", scene);

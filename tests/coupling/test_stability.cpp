@@ -2,6 +2,7 @@
 // each must finish with physically sensible results or stop with a clear diagnostic, and never write a null or
 // NaN number that the report does not explain. The long SPH cases (stiff soil at 2e4 steps, the 50 m slope) run in
 // scripts/stability-matrix only. Reference values: closed forms and charts named at each check.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <fcntl.h>
@@ -38,11 +39,11 @@ struct Run {
   double max_rss_MiB = 0;   // peak resident memory of the program
 };
 
-fs::path case_file(const std::string& stem) { return fs::path(SPHSLOPE_SOURCE_DIR) / "cases/stability" / (stem + ".json"); }
+fs::path case_file(const std::string& stem) { return fs::path(test_paths::source_dir()) / "cases/stability" / (stem + ".json"); }
 
 // Runs the program with the arguments, output into a file; wait4 gives the child's own peak memory.
 Run run_program(std::vector<std::string> args, const fs::path& log) {
-  args.insert(args.begin(), SPHSLOPE_BINARY);
+  args.insert(args.begin(), test_paths::binary());
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -52,7 +53,7 @@ Run run_program(std::vector<std::string> args, const fs::path& log) {
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
   pid_t pid = 0;
   Run run;
-  const int error = posix_spawn(&pid, SPHSLOPE_BINARY, &actions, nullptr, argv.data(), environ);
+  const int error = posix_spawn(&pid, test_paths::binary(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   REQUIRE(error == 0);
   int status = 0;
@@ -647,7 +648,7 @@ TEST_CASE("stability: gravity ramp and wall layers are read and validated with t
 TEST_CASE("stability: a particle body with fewer than 4 particles across is refused like a section",
           "[stability][scene]") {
   // The column of Bui et al. (2008) is 0.1 m high: 0.03 m leaves 3.3 particles across.
-  json scene = read_json(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/bui2008_column_collapse.json");
+  json scene = read_json(fs::path(test_paths::source_dir()) / "cases/bui2008_column_collapse.json");
   scene["analyses"]["sph"]["particle_spacing_m"] = 0.03;
   std::string message;
   try {

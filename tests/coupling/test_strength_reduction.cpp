@@ -1,5 +1,6 @@
 // SPH factor of safety by strength reduction (analyses.srm): the bisection with a fake failure oracle, the scene
 // keys, and Griffiths & Lane (1999) example 1 at a coarse spacing against limit equilibrium.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -29,7 +30,7 @@ std::function<SrmTrial(double)> threshold_oracle(double critical, int* calls) {
 }
 
 nlohmann::json griffiths_lane() {
-  std::ifstream in(std::string(SPHSLOPE_SOURCE_DIR) + "/cases/griffiths_lane_1999.json");
+  std::ifstream in(std::string(test_paths::source_dir()) + "/cases/griffiths_lane_1999.json");
   return nlohmann::json::parse(in);
 }
 

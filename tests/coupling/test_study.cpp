@@ -1,5 +1,6 @@
 // Error against run time (sphslope study): the order estimates on manufactured data, the elastic-column study
 // against the closed form (convergence with refinement), resume, and the refusals.
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
@@ -42,7 +43,7 @@ nlohmann::json case_json(const fs::path& file) {
 }
 
 nlohmann::json case_file(const std::string& name) {
-  std::ifstream in(std::string(SPHSLOPE_SOURCE_DIR) + "/cases/" + name);
+  std::ifstream in(std::string(test_paths::source_dir()) + "/cases/" + name);
   return nlohmann::json::parse(in);
 }
 
@@ -53,7 +54,7 @@ StudyResult finished_study(const std::string& name, const std::vector<double>& s
   options.spacings = spacings;
   options.output_dir = dir;
   options.log = &log;
-  const StudyResult r = run_study(fs::path(SPHSLOPE_SOURCE_DIR) / "cases" / name, options);
+  const StudyResult r = run_study(fs::path(test_paths::source_dir()) / "cases" / name, options);
   INFO(log.str());
   REQUIRE(r.status == ExitStatus::ok);
   return r;
@@ -98,7 +99,7 @@ TEST_CASE("study: elastic column converges to the closed-form stress", "[study][
   options.output_dir = dir;
   std::ostringstream log;
   options.log = &log;
-  const StudyResult r = run_study(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/elastic_column.json", options);
+  const StudyResult r = run_study(fs::path(test_paths::source_dir()) / "cases/elastic_column.json", options);
   INFO(log.str());
   REQUIRE(r.status == ExitStatus::ok);
   const auto& study = r.study;
@@ -132,7 +133,7 @@ TEST_CASE("study: elastic column converges to the closed-form stress", "[study][
     std::ostringstream again;
     options.log = &again;
     options.resume = true;
-    const StudyResult resumed = run_study(fs::path(SPHSLOPE_SOURCE_DIR) / "cases/elastic_column.json", options);
+    const StudyResult resumed = run_study(fs::path(test_paths::source_dir()) / "cases/elastic_column.json", options);
     REQUIRE(resumed.status == ExitStatus::ok);
     CHECK(again.str().find("dx = 0.1 m already done") != std::string::npos);
     CHECK(again.str().find("sph:") == std::string::npos);  // nothing was run again
@@ -148,7 +149,7 @@ TEST_CASE("study: the WC-MPS dry collapse is measured against the 2-D scaling la
   StudyOptions options;
   std::ostringstream log;
   const StudyResult r = finished_study("mps_dry_collapse_lajeunesse.json", {0.01, 0.02}, dir, options, log);
-  const fs::path scene = fs::path(SPHSLOPE_SOURCE_DIR) / "cases/mps_dry_collapse_lajeunesse.json";
+  const fs::path scene = fs::path(test_paths::source_dir()) / "cases/mps_dry_collapse_lajeunesse.json";
   const auto& study = r.study;
   CHECK(study["reference_case"] == "mps_dry_collapse");
   CHECK(study["quantities"][0]["key"] == "runout_m");
@@ -198,7 +199,7 @@ TEST_CASE("study: the ISPH dam break is measured against Martin & Moyce's table"
   StudyOptions options;
   std::ostringstream log;
   const StudyResult r = finished_study("isph_dam_break_martin_moyce.json", {0.005715}, dir, options, log);
-  const fs::path scene = fs::path(SPHSLOPE_SOURCE_DIR) / "cases/isph_dam_break_martin_moyce.json";
+  const fs::path scene = fs::path(test_paths::source_dir()) / "cases/isph_dam_break_martin_moyce.json";
   const auto& study = r.study;
   CHECK(study["reference_case"] == "isph_dam_break_martin_moyce");
   CHECK(study["quantities"][0]["key"] == "front_rms_error");
@@ -266,7 +267,7 @@ TEST_CASE("study: refusals name what is wrong", "[study]") {
   const fs::path dir = fresh_dir("refusals");
   StudyOptions options;
   options.output_dir = dir / "out";
-  const fs::path column = fs::path(SPHSLOPE_SOURCE_DIR) / "cases/elastic_column.json";
+  const fs::path column = fs::path(test_paths::source_dir()) / "cases/elastic_column.json";
 
   options.spacings = {};
   auto r = run_study(column, options);

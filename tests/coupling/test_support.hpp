@@ -1,5 +1,6 @@
 #pragma once
 // Small helpers shared by the coupling tests that run the program on files.
+#include "test_paths.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -71,7 +72,7 @@ struct ProgramRun {
 };
 
 inline ProgramRun run_sphslope(const std::string& arguments) {
-  const std::string command = std::string("'") + SPHSLOPE_BINARY + "' " + arguments + " 2>&1";
+  const std::string command = std::string("'") + test_paths::binary() + "' " + arguments + " 2>&1";
   ProgramRun result;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) throw std::runtime_error("cannot start " + command);  // fails the test

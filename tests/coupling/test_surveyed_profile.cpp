@@ -1,6 +1,7 @@
 // The surveyed-profile case (cases/surveyed_profile.json: 2427 vertices of a real LiDAR transect) through
 // `sphslope lem`, checked against the same profile reduced to its 38 main breaks
 // (cases/surveyed_profile_simplified.json, Douglas-Peucker with a 1 m tolerance).
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
@@ -40,7 +41,7 @@ fs::path with_methods(const fs::path& scene, const nlohmann::json& methods, cons
 TEST_CASE("surveyed profile: LE on 2427 LiDAR vertices agrees with the profile reduced to its main breaks",
           "[cli][lem][e2e][survey]") {
   TemporaryFolder folder("survey");
-  const fs::path cases = fs::path(SPHSLOPE_SOURCE_DIR) / "cases";
+  const fs::path cases = fs::path(test_paths::source_dir()) / "cases";
   const nlohmann::json scene = read_json(cases / "surveyed_profile.json");
   const auto& ground = scene["section"]["profile_lines"][0]["points_m"];
   REQUIRE(ground.size() >= 1000);  // a real survey, not a handful of breaks
