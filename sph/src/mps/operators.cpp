@@ -98,14 +98,11 @@ terms::StrainRate strain_rate(const Neighbourhood& nb, std::size_t i, const doub
 
 Vector2 viscous_force(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, const double* mu,
                       const LatticeConstants& lattice, InteractionViscosity interaction) {
-  const bool harmonic = interaction == InteractionViscosity::harmonic_mean;
   Vector2 f;
   for_each_mps_neighbour(nb, i, [&](std::size_t j, double, double, double, double w) {
-    const double mu_ij = harmonic ? terms::harmonic_mean_viscosity(mu[i], mu[j]) : mu[i];
-    f.x += terms::viscous_share(mu_ij, u[j] - u[i], w);
-    f.y += terms::viscous_share(mu_ij, v[j] - v[i], w);
+    add_viscous_share(f, i, j, w, u, v, mu, interaction);
   });
-  const double c = terms::laplacian_prefactor(lattice.n0, lattice.lambda);
+  const double c = viscous_prefactor(lattice);
   return {c * f.x, c * f.y};
 }
 
@@ -116,6 +113,19 @@ double smoothed_pressure(const Neighbourhood& nb, std::size_t i, const double* p
     sum_w += w;
   });
   return sum_w > 0 ? sum_pw / sum_w : 0.0;
+}
+
+PressureAndStrainRate smoothed_pressure_and_strain_rate(const Neighbourhood& nb, std::size_t i, const double* p,
+                                                        const double* u, const double* v, double n0) {
+  double sum_pw = 0, sum_w = 0;
+  terms::StrainRate s;
+  for_each_mps_neighbour(nb, i, [&](std::size_t j, double x_ij, double y_ij, double r2, double w) {
+    sum_pw += terms::smoothed_pressure_share(p[j], w);
+    sum_w += w;
+    terms::add_strain_rate_share(s, u[j] - u[i], v[j] - v[i], x_ij, y_ij, w, r2);
+  });
+  const double c = terms::gradient_prefactor(n0);
+  return {sum_w > 0 ? sum_pw / sum_w : 0.0, {c * s.xx, c * s.yy, c * s.xy}};
 }
 
 }  // namespace sph::mps

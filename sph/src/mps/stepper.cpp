@@ -172,7 +172,6 @@ void Step::viscosities() {
   ParticleSet& p = model_.particles;
   const Arrays a = model_.arrays();
   const Settings& st = model_.settings;
-  const Neighbourhood nb = neighbourhood();
   const auto n = static_cast<Index>(p.size());
   const bool hydrostatic = st.effective_pressure == EffectivePressure::hydrostatic;
   const bool indirect = st.stress_divergence == StressDivergence::indirect;
@@ -187,15 +186,16 @@ void Step::viscosities() {
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    const double total = hydrostatic ? impl_->weight_above[i] : smoothed_pressure(nb, i, a.pressure);
-    a.smoothed_pressure[i] = std::max(total - pore_pressure(i), 0.0);
     const Material& mat = model_.materials[material_of(i)];
     const bool water = mat.type == Material::Type::water;
-    if (water && !indirect) {
+    const bool needs_rate = indirect || !water;
+    const PressureAndStrainRate ps = pressure_and_strain_rate(i, hydrostatic, needs_rate);
+    a.smoothed_pressure[i] = std::max(ps.smoothed_pressure - pore_pressure(i), 0.0);
+    if (!needs_rate) {
       a.viscosity[i] = mat.viscosity;
       continue;
     }
-    const terms::StrainRate d = strain_rate(nb, i, p.vx.data(), p.vy.data(), lattice_.n0);
+    const terms::StrainRate& d = ps.strain_rate;
     a.viscosity[i] = water ? mat.viscosity
                            : effective_viscosity(mat.granular, a.smoothed_pressure[i], terms::strain_rate_norm(d),
                                                  st.regularisation, st.viscosity_cap);
@@ -207,19 +207,42 @@ void Step::viscosities() {
   }
 }
 
+// Particle i's total p' before the pore pressure (hydrostatic, or Shepard from p^m) and, when needed, its strain
+// rate D: one neighbour pass when both come from the neighbours.
+PressureAndStrainRate Step::pressure_and_strain_rate(std::size_t i, bool hydrostatic, bool needs_rate) const {
+  const ParticleSet& p = model_.particles;
+  const Neighbourhood nb = neighbourhood();
+  const double* pressure = p.field(model_.fields.pressure).data();
+  PressureAndStrainRate ps;
+  if (hydrostatic) {
+    ps.smoothed_pressure = impl_->weight_above[i];
+    if (needs_rate) ps.strain_rate = strain_rate(nb, i, p.vx.data(), p.vy.data(), lattice_.n0);
+  } else if (needs_rate) {
+    ps = smoothed_pressure_and_strain_rate(nb, i, pressure, p.vx.data(), p.vy.data(), lattice_.n0);
+  } else {
+    ps.smoothed_pressure = smoothed_pressure(nb, i, pressure);
+  }
+  return ps;
+}
 
+// The base of eq. 24's differences: the smallest pressure among particle i and its neighbours that carry pressure
+// (pressure_gradient_minimum), else p_i [Pa].
+double Step::gradient_base(std::size_t i, const double* p) const {
+  double base = p[i];
+  if (!model_.settings.pressure_gradient_minimum) return base;
+  const double* dummy = model_.particles.field(model_.dummy).data();
+  for_each_weighted_neighbour(neighbourhood(), i, [&](std::size_t j, double, double, double, double) {
+    if (dummy[j] == 0.0) base = std::min(base, p[j]);
+  });
+  return base;
+}
 
 // [M4] eq. 24 over the particles that carry pressure (moving and wall particles; dummy particles are left out).
 Vector2 Step::pressure_gradient(std::size_t i, const double* p) const {
-  const Neighbourhood nb = neighbourhood();
   const double* dummy = model_.particles.field(model_.dummy).data();
+  const double base = gradient_base(i, p);
   Vector2 g;
-  double base = p[i];
-  if (model_.settings.pressure_gradient_minimum)
-    for_each_weighted_neighbour(nb, i, [&](std::size_t j, double, double, double, double) {
-      if (dummy[j] == 0.0) base = std::min(base, p[j]);
-    });
-  for_each_weighted_neighbour(nb, i, [&](std::size_t j, double dx, double dy, double r2, double w) {
+  for_each_weighted_neighbour(neighbourhood(), i, [&](std::size_t j, double dx, double dy, double r2, double w) {
     if (dummy[j] != 0.0) return;
     const double f = terms::gradient_factor(p[j] - base, w, r2);
     g.x -= f * dx;  // x_ij = x_j - x_i = -dx
@@ -227,6 +250,27 @@ Vector2 Step::pressure_gradient(std::size_t i, const double* p) const {
   });
   const double c = terms::gradient_prefactor(lattice_.n0);
   return {c * g.x, c * g.y};
+}
+
+// The predictor's direct viscous force (eq. 22, viscous_force) and pressure gradient (eq. 24, pressure_gradient)
+// of particle i gathered in one pass over its neighbours after the base's: the same sums in the same order as the
+// two functions, so the same values bit for bit.
+Step::Forces Step::viscous_and_pressure_forces(std::size_t i, const double* p) const {
+  const ParticleSet& set = model_.particles;
+  const double* dummy = set.field(model_.dummy).data();
+  const double* mu = set.field(model_.fields.viscosity).data();
+  const InteractionViscosity interaction = model_.settings.interaction_viscosity;
+  const double base = gradient_base(i, p);
+  Vector2 v, g;
+  for_each_weighted_neighbour(neighbourhood(), i, [&](std::size_t j, double dx, double dy, double r2, double w) {
+    add_viscous_share(v, i, j, w, set.vx.data(), set.vy.data(), mu, interaction);
+    if (dummy[j] != 0.0) return;
+    const double f = terms::gradient_factor(p[j] - base, w, r2);
+    g.x -= f * dx;
+    g.y -= f * dy;
+  });
+  const double cv = viscous_prefactor(lattice_), cg = terms::gradient_prefactor(lattice_.n0);
+  return {{cv * v.x, cv * v.y}, {cg * g.x, cg * g.y}};
 }
 
 // Steps d and e: u* (eq. 28) and r* = r^m + u* dt for the moving particles; r^m kept for step h.
@@ -245,11 +289,13 @@ void Step::predict(double dt) {
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] != kMoving) continue;
-    const Vector2 v =
+    const Forces f =
         st.stress_divergence == StressDivergence::indirect
-            ? stress_divergence(nb, i, impl_->sxx.data(), impl_->syy.data(), impl_->sxy.data(), lattice_.n0)
-            : viscous_force(nb, i, p.vx.data(), p.vy.data(), a.viscosity, lattice_, st.interaction_viscosity);
-    const Vector2 g = pressure_gradient(i, a.pressure);
+            ? Forces{stress_divergence(nb, i, impl_->sxx.data(), impl_->syy.data(), impl_->sxy.data(), lattice_.n0),
+                     pressure_gradient(i, a.pressure)}
+            : viscous_and_pressure_forces(i, a.pressure);
+    const Vector2& v = f.viscous;
+    const Vector2& g = f.pressure_gradient;
     const double rho = impl_->density[material_of(i)];  // rho_i, the phase's density (eqs. 25-26)
     impl_->fx[i] = terms::predicted_velocity(p.vx[i], dt, rho, rho * gx, v.x, g.x, alpha);
     impl_->fy[i] = terms::predicted_velocity(p.vy[i], dt, rho, rho * gy, v.y, g.y, alpha);

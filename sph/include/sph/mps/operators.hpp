@@ -89,6 +89,21 @@ terms::StrainRate strain_rate(const Neighbourhood& nb, std::size_t i, const doub
 Vector2 viscous_force(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, const double* mu,
                       const LatticeConstants& lattice, InteractionViscosity interaction);
 
+// The pair (i, j)'s share of viscous_force's sum before its prefactor, added to f: mu_ij (u_j - u_i) w_ij with mu_ij
+// by `interaction` (for a pass that gathers other sums in the same loop).
+inline void add_viscous_share(Vector2& f, std::size_t i, std::size_t j, double w, const double* u, const double* v,
+                              const double* mu, InteractionViscosity interaction) {
+  const double mu_ij =
+      interaction == InteractionViscosity::harmonic_mean ? terms::harmonic_mean_viscosity(mu[i], mu[j]) : mu[i];
+  f.x += terms::viscous_share(mu_ij, u[j] - u[i], w);
+  f.y += terms::viscous_share(mu_ij, v[j] - v[i], w);
+}
+
+// viscous_force's prefactor 2d/(lambda n0) [1/m^2].
+inline double viscous_prefactor(const LatticeConstants& lattice) {
+  return terms::laplacian_prefactor(lattice.n0, lattice.lambda);
+}
+
 // [M29] the indirect stress divergence of seed eq. 23: <div tau>_i = (<d tau_xx/dx> + <d tau_xy/dy>, <d tau_xy/dx> +
 // <d tau_yy/dy>) [N/m^3] by the MPS gradient [M4] of the particles' stresses tau = 2 mu D [Pa] (symmetric: sxy is
 // both off-diagonal components). One neighbour pass for the three gradients.
@@ -98,5 +113,14 @@ Vector2 stress_divergence(const Neighbourhood& nb, std::size_t i, const double* 
 // [M14] p'_i = sum_{j != i} p_j w_ij / sum_{j != i} w_ij [Pa] (Shepard, A4), not clamped (the yield stress clamps
 // it); 0 for a particle without neighbours.
 double smoothed_pressure(const Neighbourhood& nb, std::size_t i, const double* p);
+
+// smoothed_pressure and strain_rate of particle i in one neighbour pass: the same sums in the same order, so the
+// same values bit for bit.
+struct PressureAndStrainRate {
+  double smoothed_pressure = 0;  // [Pa]
+  terms::StrainRate strain_rate;  // [1/s]
+};
+PressureAndStrainRate smoothed_pressure_and_strain_rate(const Neighbourhood& nb, std::size_t i, const double* p,
+                                                        const double* u, const double* v, double n0);
 
 }  // namespace sph::mps

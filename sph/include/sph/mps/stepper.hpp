@@ -73,7 +73,14 @@ class Step : public Stepper {
   void equation_of_state();
   void correct(double dt);
   void collide_with_walls(double dt);
+  PressureAndStrainRate pressure_and_strain_rate(std::size_t i, bool hydrostatic, bool needs_rate) const;
+  double gradient_base(std::size_t i, const double* p) const;
   Vector2 pressure_gradient(std::size_t i, const double* p) const;
+  struct Forces {
+    Vector2 viscous;  // [N/m^3]
+    Vector2 pressure_gradient;  // [Pa/m]
+  };
+  Forces viscous_and_pressure_forces(std::size_t i, const double* p) const;
   double gate_rise(double dt) const;
   double gravity_x() const;
   double gravity_y() const;
