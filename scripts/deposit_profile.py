@@ -5,7 +5,12 @@ bins two spacings wide), the toe where the deposit is at least 1, 2 and 5 spacin
 soil particle) and each profile's difference from the first folder's, the integral of |h - h_ref| over that of h_ref.
 
 Usage: scripts/deposit_profile.py SPACING_M RUN_DIR [RUN_DIR ...]
+
+With --toes, for runs at different spacings (each run's spacing from its report.json): the toe where the deposit
+is at least 5, 10 and 20 mm thick, in bins 10 mm wide for every run, beside the report's front and the top:
+       scripts/deposit_profile.py --toes RUN_DIR [RUN_DIR ...]
 """
+import json
 import glob
 import re
 import struct
@@ -57,7 +62,28 @@ def toe(h, width, thickness):
     return b * width
 
 
+def toes_at_thickness(runs, width=0.01, thicknesses=(0.005, 0.01, 0.02)):
+    """Toes at fixed thicknesses [m] in bins of one width [m] for every run, whatever its spacing."""
+    print("| run | dx (mm) | report front (m) | " + " | ".join("toe, %g mm thick (m)" % (1000 * t) for t in thicknesses)
+          + " | top (m) |")
+    print("|---|---|---|" + "---|" * len(thicknesses) + "---|")
+    for run in runs:
+        sph = json.load(open(run + "/report.json"))["sph"]
+        dx = sph["particle_spacing_m"]
+        pts = soil_points(run)
+        h = {}
+        for p in pts:
+            b = int(p[0] // width)
+            h[b] = max(h.get(b, 0.0), p[1] + dx / 2)
+        print("| %s | %g | %.3f | %s | %.4f |" % (
+            run, 1000 * dx, sph["deposit"]["final_length_m"],
+            " | ".join("%.3f" % toe(h, width, t) for t in thicknesses), max(p[1] for p in pts) + dx / 2))
+
+
 def main():
+    if len(sys.argv) >= 3 and sys.argv[1] == "--toes":
+        toes_at_thickness(sys.argv[2:])
+        return
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     dx = float(sys.argv[1])
