@@ -46,8 +46,8 @@ def soil_points(run_dir):
     return [p for p, k in zip(a["Points"], a["kind"]) if k == 0]
 
 
-def profile(points, dx):
-    width = 2 * dx
+def profile(points, dx, width=None):
+    width = width or 2 * dx
     h = {}
     for p in points:
         b = int(p[0] // width)
@@ -71,10 +71,7 @@ def toes_at_thickness(runs, width=0.01, thicknesses=(0.005, 0.01, 0.02)):
         sph = json.load(open(run + "/report.json"))["sph"]
         dx = sph["particle_spacing_m"]
         pts = soil_points(run)
-        h = {}
-        for p in pts:
-            b = int(p[0] // width)
-            h[b] = max(h.get(b, 0.0), p[1] + dx / 2)
+        h, _ = profile(pts, dx, width)
         print("| %s | %g | %.3f | %s | %.4f |" % (
             run, 1000 * dx, sph["deposit"]["final_length_m"],
             " | ".join("%.3f" % toe(h, width, t) for t in thicknesses), max(p[1] for p in pts) + dx / 2))

@@ -18,6 +18,14 @@ constexpr std::uint8_t kMoving = static_cast<std::uint8_t>(ParticleKind::soil);
 // The candidates' margin beyond r_e in spacings: at the time step of eq. 30 (cfl 0.2, c0 >= 10 |u|max) a particle
 // moves at most 0.02 dx per step, so the candidates last at least a dozen steps.
 constexpr double list_skin = 0.5;
+
+// The pair's share of eq. 24's sum before its prefactor, added to g: (p_j - base) w_ij / r^2 x_ij, with the
+// engine's (dx, dy) = x_i - x_j = -x_ij.
+inline void add_gradient_share(Vector2& g, double p_difference, double dx, double dy, double r2, double w) {
+  const double f = terms::gradient_factor(p_difference, w, r2);
+  g.x -= f * dx;
+  g.y -= f * dy;
+}
 }  // namespace
 
 struct Step::Impl {
@@ -243,10 +251,7 @@ Vector2 Step::pressure_gradient(std::size_t i, const double* p) const {
   const double base = gradient_base(i, p);
   Vector2 g;
   for_each_weighted_neighbour(neighbourhood(), i, [&](std::size_t j, double dx, double dy, double r2, double w) {
-    if (dummy[j] != 0.0) return;
-    const double f = terms::gradient_factor(p[j] - base, w, r2);
-    g.x -= f * dx;  // x_ij = x_j - x_i = -dx
-    g.y -= f * dy;
+    if (dummy[j] == 0.0) add_gradient_share(g, p[j] - base, dx, dy, r2, w);
   });
   const double c = terms::gradient_prefactor(lattice_.n0);
   return {c * g.x, c * g.y};
@@ -264,10 +269,7 @@ Step::Forces Step::viscous_and_pressure_forces(std::size_t i, const double* p) c
   Vector2 v, g;
   for_each_weighted_neighbour(neighbourhood(), i, [&](std::size_t j, double dx, double dy, double r2, double w) {
     add_viscous_share(v, i, j, w, set.vx.data(), set.vy.data(), mu, interaction);
-    if (dummy[j] != 0.0) return;
-    const double f = terms::gradient_factor(p[j] - base, w, r2);
-    g.x -= f * dx;
-    g.y -= f * dy;
+    if (dummy[j] == 0.0) add_gradient_share(g, p[j] - base, dx, dy, r2, w);
   });
   const double cv = viscous_prefactor(lattice_), cg = terms::gradient_prefactor(lattice_.n0);
   return {{cv * v.x, cv * v.y}, {cg * g.x, cg * g.y}};
