@@ -9,6 +9,10 @@ Usage: scripts/deposit_profile.py SPACING_M RUN_DIR [RUN_DIR ...]
 With --toes, for runs at different spacings (each run's spacing from its report.json): the toe where the deposit
 is at least 5, 10 and 20 mm thick, in bins 10 mm wide for every run, beside the report's front and the top:
        scripts/deposit_profile.py --toes RUN_DIR [RUN_DIR ...]
+
+With --track, the N soil particles furthest downstream in the last frame followed back through every frame: their
+mean position, height and x-velocity and how many of them carry no stress (the front's history):
+       scripts/deposit_profile.py --track N RUN_DIR
 """
 import json
 import glob
@@ -77,7 +81,37 @@ def toes_at_thickness(runs, width=0.01, thicknesses=(0.005, 0.01, 0.02)):
             " | ".join("%.3f" % toe(h, width, t) for t in thicknesses), max(p[1] for p in pts) + dx / 2))
 
 
+def frame_time(path):
+    """The simulated time of a frame [s], from its ASCII TimeValue."""
+    head = open(path, "rb").read(2000)
+    m = re.search(rb'Name="TimeValue"[^>]*>\s*([-+0-9.eE]+)', head)
+    return float(m.group(1)) if m else float("nan")
+
+
+def track_front(run, count):
+    """The `count` furthest soil particles of the last frame, by id, through every frame of the run."""
+    frames = sorted(glob.glob(run + "/frames/frame_*.vtu"))
+    last = read_vtu(frames[-1], ("Points", "kind", "id"))
+    soil = sorted((p[0], i) for p, k, i in zip(last["Points"], last["kind"], last["id"]) if k == 0)
+    ids = [i for _, i in soil[-count:]]
+    fields = ("Points", "id", "velocity", "stress_xx", "stress_yy")
+    print("| t (s) | mean x (m) | mean y (mm) | mean vx (m/s) | mean sigma_yy (Pa) | without stress |")
+    print("|---|---|---|---|---|---|")
+    for frame in frames:
+        a = read_vtu(frame, fields)
+        at = {pid: k for k, pid in enumerate(a["id"])}
+        rows = [at[i] for i in ids]
+        n = len(rows)
+        free = sum(1 for k in rows if abs(a["stress_xx"][k]) + abs(a["stress_yy"][k]) < 1.0)
+        print("| %.3f | %.3f | %.1f | %.3f | %.1f | %d of %d |" % (
+            frame_time(frame), sum(a["Points"][k][0] for k in rows) / n, 1000 * sum(a["Points"][k][1] for k in rows) / n,
+            sum(a["velocity"][k][0] for k in rows) / n, sum(a["stress_yy"][k] for k in rows) / n, free, n))
+
+
 def main():
+    if len(sys.argv) == 4 and sys.argv[1] == "--track":
+        track_front(sys.argv[3], int(sys.argv[2]))
+        return
     if len(sys.argv) >= 3 and sys.argv[1] == "--toes":
         toes_at_thickness(sys.argv[2:])
         return

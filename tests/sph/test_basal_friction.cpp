@@ -1,0 +1,144 @@
+// The friction of the no-slip floor on a soil layer sliding over it (docs/accuracy.md, "The floor's friction on a
+// sliding layer"): a closed form a granular front's run-out depends on.
+//
+// A cohesionless Drucker-Prager layer (psi = 0) in steady simple shear flows plastically with s parallel to the
+// strain rate, so its normal stresses are equal (sigma_xx = sigma_yy = sigma_zz = -p) and the yield condition gives
+// |tau| = 3 alpha_phi p on the floor. The layer then decelerates at g 3 alpha_phi = g tan(phi)/sqrt(1 + 4/3 tan^2(phi)),
+// whatever its thickness (3.26 m/s^2 for phi = 19.8 deg; the Jaumann terms are O(tau/G) ~ 1e-3 of it).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "sph/engine/fill.hpp"
+#include "sph/soil/model.hpp"
+#include "sph/soil/soil_step.hpp"
+#include "sphslope/units.hpp"
+
+namespace {
+
+constexpr double kFrictionAngleDeg = 19.8;  // the aluminium bars of Bui et al. (2008)
+
+double closed_form_deceleration() {
+  const double t = std::tan(kFrictionAngleDeg * sphslope::pi / 180.0);
+  return sphslope::standard_gravity * t / std::sqrt(1.0 + 4.0 / 3.0 * t * t);
+}
+
+bool is_soil(const sph::ParticleSet& p, std::size_t i) {
+  return p.kind[i] == static_cast<std::uint8_t>(sph::ParticleKind::soil);
+}
+
+// Mean x-velocity of the soil particles in the middle third of the layer's current extent [m/s].
+double middle_speed(const sph::ParticleSet& p) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (is_soil(p, i)) {
+      lo = std::min(lo, p.x[i]);
+      hi = std::max(hi, p.x[i]);
+    }
+  const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+  double sum = 0;
+  int count = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (is_soil(p, i) && p.x[i] > a && p.x[i] < b) {
+      sum += p.vx[i];
+      ++count;
+    }
+  return sum / count;
+}
+
+// A layer `rows` particles thick and 1 m long, at rest under its geostatic (K0) stress on a no-slip floor, set
+// sliding at 1 m/s at its middle (x = 1 m) and stretched at `stretch` [1/s] (v = 1 + stretch (x - 1)). Returns the deceleration of its middle third [m/s^2], the least-squares slope of the speed over
+// 0.08-0.24 s (after the start-up, before it stops at about 0.3 s), sampled every 5 ms.
+double sliding_deceleration(int rows, double dx, double stretch = 0.0) {
+  sph::Model m;
+  sph::Material mat;
+  mat.name = "aluminium bars";
+  mat.density = 2650;
+  mat.youngs_modulus = 0.84e6;
+  mat.poisson_ratio = 0.3;
+  mat.friction_angle_deg = kFrictionAngleDeg;
+  mat.cohesion = 0;
+  mat.dilatancy_angle_deg = 0;
+  m.materials.push_back(mat);
+  auto& s = m.settings;
+  s.particle_spacing = dx;
+  s.gravity_mode = sph::GravityMode::geostatic_k0;
+  s.output_interval = 0;
+  sph::add_soil(m.particles,
+                sph::lattice_points_in_region(0.5, 0, 1.5, rows * dx, dx, [](double, double) { return true; }), dx,
+                0, mat.density);
+  sph::BoxWalls floor;
+  floor.x_min = 0;
+  floor.x_max = 3.0;
+  floor.y_min = 0;
+  floor.height = 0.1;
+  floor.left = floor.right = false;
+  sph::add_box_walls(m.particles, floor, dx, s.smoothing_length(), 0, mat.density);
+  for (std::size_t i = 0; i < m.particles.size(); ++i)
+    if (is_soil(m.particles, i)) m.particles.vx[i] = 1.0 + stretch * (m.particles.x[i] - 1.0);
+  sph::SoilStep step(m);
+  step.initialise();
+  std::vector<double> times, speeds;
+  double t = 0, next = 0.08;
+  while (t <= 0.24) {
+    if (t >= next) {
+      times.push_back(t);
+      speeds.push_back(middle_speed(m.particles));
+      next += 0.005;
+    }
+    step.advance(step.stable_time_step());
+    t = m.state.time;
+    REQUIRE(step.check_health().ok);
+  }
+  double mt = 0, mv = 0;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    mt += times[k];
+    mv += speeds[k];
+  }
+  mt /= static_cast<double>(times.size());
+  mv /= static_cast<double>(times.size());
+  double stv = 0, stt = 0;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    stv += (times[k] - mt) * (speeds[k] - mv);
+    stt += (times[k] - mt) * (times[k] - mt);
+  }
+  return -stv / stt;
+}
+
+}  // namespace
+
+TEST_CASE("basal friction: a sliding layer one or two particles thick decelerates at the closed-form friction rate",
+          "[sph][walls][validation]") {
+  const double expected = closed_form_deceleration();
+  CHECK(expected == Approx(3.26).margin(0.01));
+  // Measured (2026-11-27): 1 row 3.109, 2 rows 3.175 m/s^2 at dx = 5 mm (-4.7 %, -2.6 %); a frictionless floor
+  // would give 0, a floor with only the particle's own stress and no weight under a thin layer far less.
+  for (const int rows : {1, 2}) {
+    INFO("rows = " << rows);
+    CHECK(sliding_deceleration(rows, 0.005) == Approx(expected).epsilon(0.08));
+  }
+}
+
+// The study of docs/accuracy.md (hidden: about four minutes on two threads; run it by name,
+// build/tests/test_sph "[basal_friction_study]"): a 10 mm layer at four spacings, 1-8 rows at 5 mm, and a layer
+// stretched at 2 /s. Prints the table and checks what the document claims of it.
+TEST_CASE("basal friction study: spacing, thickness and stretching", "[.][basal_friction_study]") {
+  const double expected = closed_form_deceleration();
+  const auto row = [&](const char* what, int rows, double dx, double stretch) {
+    const double a = sliding_deceleration(rows, dx, stretch);
+    std::printf("| %s | %d | %g | %g | %.3f | %+.1f %% |\n", what, rows, 1000 * dx, stretch, a,
+                100 * (a / expected - 1));
+    return a;
+  };
+  std::printf("closed form: %.4f m/s^2\n| layer | rows | dx (mm) | stretch (1/s) | deceleration (m/s^2) | error |\n"
+              "|---|---|---|---|---|---|\n", expected);
+  const double coarse = row("10 mm thick", 1, 0.01, 0);
+  for (const double dx : {0.005, 0.0025, 0.00125})
+    CHECK(row("10 mm thick", static_cast<int>(std::lround(0.01 / dx)), dx, 0) == Approx(expected).epsilon(0.05));
+  CHECK(coarse < expected);
+  for (const int rows : {1, 4, 8}) CHECK(row("at 5 mm", rows, 0.005, 0) == Approx(expected).epsilon(0.08));
+  CHECK(row("stretched", 2, 0.005, 2.0) < sliding_deceleration(2, 0.005));
+}
