@@ -356,6 +356,40 @@ TEST_CASE("mps indirect stress divergence of eq. 23 is div(2 mu D) where the dir
   CHECK(std::abs(rotation_direct.y) > 1.0);  // a spurious force [N/m^3]
 }
 
+// The transposed term of "direct_full" completes eq. 22 to div(2 mu D) for divergence-free flows. A pure extension
+// (u, v) = (a x, -a y) with a = 2 /s in mu = 1 + 100 x [Pa s]: div(2 mu D) = (2 a dmu/dx, 0) = (400, 0) N/m^3;
+// eq. 22 gives about half, d/dx(mu a); the transposed term (grad u)^T grad mu adds a dmu/dx = 200. On the rigid
+// rotation (-y, x) in the same viscosity the term cancels eq. 22's spurious force, -omega dmu/dx in y.
+TEST_CASE("mps direct_full stress divergence adds the transposed term eq. 22 leaves out", "[mps]") {
+  const Lattice lat(25, 25);
+  const sph::mps::LatticeConstants c = sph::mps::lattice_constants(dx, re);
+  const auto nb = lat.neighbourhood();
+  const std::size_t centre = lat.at(12, 12);
+  const std::vector<double> graded = lat.sample([](double x, double) { return 1.0 + 100.0 * x; });  // [Pa s]
+  const std::vector<double> ue = lat.sample([](double x, double) { return 2.0 * x; });
+  const std::vector<double> ve = lat.sample([](double, double y) { return -2.0 * y; });
+  const sph::mps::Vector2 t = sph::mps::transposed_viscous_term(nb, centre, ue.data(), ve.data(), graded.data(), c.n0);
+  CHECK(t.x == Approx(200.0).epsilon(1e-9));  // exact for linear fields on the lattice
+  CHECK(std::abs(t.y) < 1e-9);
+  const sph::mps::Vector2 direct = sph::mps::viscous_force(nb, centre, ue.data(), ve.data(), graded.data(), c,
+                                                           sph::mps::InteractionViscosity::harmonic_mean);
+  const sph::mps::Vector2 full{direct.x + t.x, direct.y + t.y};
+  INFO("eq. 22: (" << direct.x << ", " << direct.y << "), with the term: (" << full.x << ", " << full.y << ") N/m^3");
+  CHECK(direct.x == Approx(200.0).epsilon(0.01));  // eq. 22: half (200.33 measured)
+  CHECK(full.x == Approx(400.0).epsilon(0.01));    // 400.33 measured: the harmonic mean's share of eq. 22
+
+  const std::vector<double> ur = lat.sample([](double, double y) { return -y; });
+  const std::vector<double> vr = lat.sample([](double x, double) { return x; });
+  const sph::mps::Vector2 rd = sph::mps::viscous_force(nb, centre, ur.data(), vr.data(), graded.data(), c,
+                                                       sph::mps::InteractionViscosity::harmonic_mean);
+  const sph::mps::Vector2 rt = sph::mps::transposed_viscous_term(nb, centre, ur.data(), vr.data(), graded.data(), c.n0);
+  INFO("rotation: eq. 22 (" << rd.x << ", " << rd.y << "), the term (" << rt.x << ", " << rt.y << ") N/m^3");
+  CHECK(rt.y == Approx(-100.0).epsilon(1e-9));  // -omega dmu/dx with omega = 1 /s
+  CHECK(std::hypot(rd.x + rt.x, rd.y + rt.y) < 0.01 * std::hypot(rd.x, rd.y));  // 0.17 of 100.2 N/m^3 left
+  CHECK(sph::mps::stress_divergence_from("direct_full") == sph::mps::StressDivergence::direct_full);
+  CHECK(std::string(sph::mps::stress_divergence_key(sph::mps::StressDivergence::direct_full)) == "direct_full");
+}
+
 TEST_CASE("mps harmonic-mean interaction viscosity keeps a near-rigid particle from driving its neighbours", "[mps]") {
   CHECK(terms::harmonic_mean_viscosity(1.0, 1.0) == 1.0);
   CHECK(terms::harmonic_mean_viscosity(1.0, 3.0) == Approx(1.5).epsilon(1e-15));

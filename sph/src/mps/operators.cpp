@@ -71,6 +71,25 @@ Vector2 stress_divergence(const Neighbourhood& nb, std::size_t i, const double* 
   return {c * d.x, c * d.y};
 }
 
+Vector2 transposed_viscous_term(const Neighbourhood& nb, std::size_t i, const double* u, const double* v,
+                                const double* mu, double n0) {
+  double ux = 0, uy = 0, vx = 0, vy = 0, mx = 0, my = 0;  // the sums of the MPS gradients of u, v and mu
+  for_each_mps_neighbour(nb, i, [&](std::size_t j, double x_ij, double y_ij, double r2, double w) {
+    const double fu = terms::gradient_factor(u[j] - u[i], w, r2);
+    const double fv = terms::gradient_factor(v[j] - v[i], w, r2);
+    const double fm = terms::gradient_factor(mu[j] - mu[i], w, r2);
+    ux += fu * x_ij;
+    uy += fu * y_ij;
+    vx += fv * x_ij;
+    vy += fv * y_ij;
+    mx += fm * x_ij;
+    my += fm * y_ij;
+  });
+  const double c = terms::gradient_prefactor(n0);
+  const double c2 = c * c;
+  return {c2 * (ux * mx + vx * my), c2 * (uy * mx + vy * my)};
+}
+
 double divergence(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, double n0) {
   double sum = 0;
   for_each_mps_neighbour(nb, i, [&](std::size_t j, double x_ij, double y_ij, double r2, double w) {

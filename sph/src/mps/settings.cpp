@@ -50,10 +50,19 @@ const char* pore_pressure_key(PorePressure p) { return p == PorePressure::none ?
 StressDivergence stress_divergence_from(const std::string& key) {
   if (key == "direct") return StressDivergence::direct;
   if (key == "indirect") return StressDivergence::indirect;
-  throw std::invalid_argument("mps stress divergence '" + key + "': expected \"direct\" or \"indirect\"");
+  if (key == "direct_full") return StressDivergence::direct_full;
+  throw std::invalid_argument("mps stress divergence '" + key +
+                              "': expected \"direct\", \"indirect\" or \"direct_full\"");
 }
 
-const char* stress_divergence_key(StressDivergence s) { return s == StressDivergence::direct ? "direct" : "indirect"; }
+const char* stress_divergence_key(StressDivergence s) {
+  switch (s) {
+    case StressDivergence::direct: return "direct";
+    case StressDivergence::indirect: return "indirect";
+    case StressDivergence::direct_full: return "direct_full";
+  }
+  return "direct";
+}
 
 std::string sound_speed_problem(double c0, double u_max) {
   if (terms::sound_speed_sufficient(c0, u_max)) return {};

@@ -104,6 +104,12 @@ inline double viscous_prefactor(const LatticeConstants& lattice) {
   return terms::laplacian_prefactor(lattice.n0, lattice.lambda);
 }
 
+// The transposed part of div(2 mu D) that eq. 22 (viscous_force) leaves out, for a divergence-free flow:
+// ((grad u)^T grad mu)_a = sum_b (d u_b / d x_a) (d mu / d x_b) [N/m^3], with the velocity and viscosity gradients
+// of particle i by the MPS gradient [M4] in one neighbour pass (stress_divergence "direct_full").
+Vector2 transposed_viscous_term(const Neighbourhood& nb, std::size_t i, const double* u, const double* v,
+                                const double* mu, double n0);
+
 // [M29] the indirect stress divergence of seed eq. 23: <div tau>_i = (<d tau_xx/dx> + <d tau_xy/dy>, <d tau_xy/dx> +
 // <d tau_yy/dy>) [N/m^3] by the MPS gradient [M4] of the particles' stresses tau = 2 mu D [Pa] (symmetric: sxy is
 // both off-diagonal components). One neighbour pass for the three gradients.

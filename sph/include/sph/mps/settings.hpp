@@ -60,6 +60,12 @@ enum class StressDivergence {
   // div tau = (d tau_xx/dx + d tau_xy/dy, d tau_xy/dx + d tau_yy/dy): div(2 mu D) for any viscosity field; the
   // paper reports fluctuations of viscosity and velocity with it
   indirect,
+  // "direct_full": eq. 22 plus the transposed part of div(2 mu D) that eq. 22 leaves out, div(mu (grad u)^T) =
+  // (grad u)^T grad mu + mu grad(div u), its first term from each particle's velocity and viscosity gradients (the
+  // MPS gradient [M4], one more neighbour pass; no second differentiation): div(2 mu D) for a divergence-free flow
+  // in any viscosity field (an extension carries its whole stress, a rigid rotation feels no force). Not in the
+  // paper (docs/mps.md, section 7).
+  direct_full,
 };
 
 struct Settings : EngineSettings {
