@@ -46,7 +46,7 @@ void read_numerics(JsonReader& r, sph::mps::Settings& s) {
   read_choice(r, "effective_pressure", "\"smoothed\" or \"hydrostatic\"", sph::mps::effective_pressure_from,
               s.effective_pressure);
   read_choice(r, "pore_pressure", "\"none\" or \"hydrostatic\"", sph::mps::pore_pressure_from, s.pore_pressure);
-  read_choice(r, "stress_divergence", "\"direct\", \"indirect\" or \"direct_full\"", sph::mps::stress_divergence_from,
+  read_choice(r, "stress_divergence", "\"direct\", \"indirect\" or \"full\"", sph::mps::stress_divergence_from,
               s.stress_divergence);
   read_choice(r, "interaction_viscosity", "\"harmonic_mean\" or \"own\"", sph::mps::interaction_viscosity_from,
               s.interaction_viscosity);

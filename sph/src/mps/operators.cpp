@@ -71,23 +71,19 @@ Vector2 stress_divergence(const Neighbourhood& nb, std::size_t i, const double* 
   return {c * d.x, c * d.y};
 }
 
-Vector2 transposed_viscous_term(const Neighbourhood& nb, std::size_t i, const double* u, const double* v,
-                                const double* mu, double n0) {
-  double ux = 0, uy = 0, vx = 0, vy = 0, mx = 0, my = 0;  // the sums of the MPS gradients of u, v and mu
+Vector2 full_viscous_force(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, const double* mu,
+                           const LatticeConstants& lattice, InteractionViscosity interaction) {
+  Vector2 f;
   for_each_mps_neighbour(nb, i, [&](std::size_t j, double x_ij, double y_ij, double r2, double w) {
-    const double fu = terms::gradient_factor(u[j] - u[i], w, r2);
-    const double fv = terms::gradient_factor(v[j] - v[i], w, r2);
-    const double fm = terms::gradient_factor(mu[j] - mu[i], w, r2);
-    ux += fu * x_ij;
-    uy += fu * y_ij;
-    vx += fv * x_ij;
-    vy += fv * y_ij;
-    mx += fm * x_ij;
-    my += fm * y_ij;
+    const double mu_ij =
+        interaction == InteractionViscosity::harmonic_mean ? terms::harmonic_mean_viscosity(mu[i], mu[j]) : mu[i];
+    const double du = u[j] - u[i], dv = v[j] - v[i];
+    const double along = (du * x_ij + dv * y_ij) / r2;  // (e . du) / r
+    f.x += mu_ij * w * (0.5 * du + 2.0 * along * x_ij);
+    f.y += mu_ij * w * (0.5 * dv + 2.0 * along * y_ij);
   });
-  const double c = terms::gradient_prefactor(n0);
-  const double c2 = c * c;
-  return {c2 * (ux * mx + vx * my), c2 * (uy * mx + vy * my)};
+  const double c = viscous_prefactor(lattice);
+  return {c * f.x, c * f.y};
 }
 
 double divergence(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, double n0) {

@@ -50,16 +50,15 @@ const char* pore_pressure_key(PorePressure p) { return p == PorePressure::none ?
 StressDivergence stress_divergence_from(const std::string& key) {
   if (key == "direct") return StressDivergence::direct;
   if (key == "indirect") return StressDivergence::indirect;
-  if (key == "direct_full") return StressDivergence::direct_full;
-  throw std::invalid_argument("mps stress divergence '" + key +
-                              "': expected \"direct\", \"indirect\" or \"direct_full\"");
+  if (key == "full") return StressDivergence::full;
+  throw std::invalid_argument("mps stress divergence '" + key + "': expected \"direct\", \"indirect\" or \"full\"");
 }
 
 const char* stress_divergence_key(StressDivergence s) {
   switch (s) {
     case StressDivergence::direct: return "direct";
     case StressDivergence::indirect: return "indirect";
-    case StressDivergence::direct_full: return "direct_full";
+    case StressDivergence::full: return "full";
   }
   return "direct";
 }

@@ -291,15 +291,17 @@ void Step::predict(double dt) {
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
     if (p.kind[i] != kMoving) continue;
-    Forces f =
-        st.stress_divergence == StressDivergence::indirect
-            ? Forces{stress_divergence(nb, i, impl_->sxx.data(), impl_->syy.data(), impl_->sxy.data(), lattice_.n0),
-                     pressure_gradient(i, a.pressure)}
-            : viscous_and_pressure_forces(i, a.pressure);
-    if (st.stress_divergence == StressDivergence::direct_full) {
-      const Vector2 t = transposed_viscous_term(nb, i, p.vx.data(), p.vy.data(), a.viscosity, lattice_.n0);
-      f.viscous.x += t.x;
-      f.viscous.y += t.y;
+    Forces f;
+    switch (st.stress_divergence) {
+      case StressDivergence::direct: f = viscous_and_pressure_forces(i, a.pressure); break;
+      case StressDivergence::indirect:
+        f = {stress_divergence(nb, i, impl_->sxx.data(), impl_->syy.data(), impl_->sxy.data(), lattice_.n0),
+             pressure_gradient(i, a.pressure)};
+        break;
+      case StressDivergence::full:
+        f = {full_viscous_force(nb, i, p.vx.data(), p.vy.data(), a.viscosity, lattice_, st.interaction_viscosity),
+             pressure_gradient(i, a.pressure)};
+        break;
     }
     const Vector2& v = f.viscous;
     const Vector2& g = f.pressure_gradient;

@@ -104,11 +104,13 @@ inline double viscous_prefactor(const LatticeConstants& lattice) {
   return terms::laplacian_prefactor(lattice.n0, lattice.lambda);
 }
 
-// The transposed part of div(2 mu D) that eq. 22 (viscous_force) leaves out, for a divergence-free flow:
-// ((grad u)^T grad mu)_a = sum_b (d u_b / d x_a) (d mu / d x_b) [N/m^3], with the velocity and viscosity gradients
-// of particle i by the MPS gradient [M4] in one neighbour pass (stress_divergence "direct_full").
-Vector2 transposed_viscous_term(const Neighbourhood& nb, std::size_t i, const double* u, const double* v,
-                                const double* mu, double n0);
+// The viscous force div(2 mu D) as a pair sum (stress_divergence "full") [N/m^3]: (2d/(lambda n0)) sum_j mu_ij w_ij
+// (du/2 + 2 (e . du) e), du = u_j - u_i, e = r_ij/|r_ij|, mu_ij as in viscous_force. With the 2-D averages
+// <e e> = I/2 and <e_a e_b e_c e_d> = (d_ab d_cd + d_ac d_bd + d_ad d_bc)/8 the first term gives mu lap(u)/2 and the
+// second mu (lap u + 2 grad div u)/2: together mu (lap u + grad div u) = div(2 mu D) for a uniform mu. With the
+// harmonic-mean mu_ij a pair's two forces are equal and opposite and their power is never positive.
+Vector2 full_viscous_force(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, const double* mu,
+                           const LatticeConstants& lattice, InteractionViscosity interaction);
 
 // [M29] the indirect stress divergence of seed eq. 23: <div tau>_i = (<d tau_xx/dx> + <d tau_xy/dy>, <d tau_xy/dx> +
 // <d tau_yy/dy>) [N/m^3] by the MPS gradient [M4] of the particles' stresses tau = 2 mu D [Pa] (symmetric: sxy is

@@ -60,12 +60,11 @@ enum class StressDivergence {
   // div tau = (d tau_xx/dx + d tau_xy/dy, d tau_xy/dx + d tau_yy/dy): div(2 mu D) for any viscosity field; the
   // paper reports fluctuations of viscosity and velocity with it
   indirect,
-  // "direct_full": eq. 22 plus the transposed part of div(2 mu D) that eq. 22 leaves out, div(mu (grad u)^T) =
-  // (grad u)^T grad mu + mu grad(div u), its first term from each particle's velocity and viscosity gradients (the
-  // MPS gradient [M4], one more neighbour pass; no second differentiation): div(2 mu D) for a divergence-free flow
-  // in any viscosity field (an extension carries its whole stress, a rigid rotation feels no force). Not in the
-  // paper (docs/mps.md, section 7).
-  direct_full,
+  // "full": div(2 mu D) as a pair sum in the manner of eq. 22 (full_viscous_force): (2d/(lambda n0)) sum mu_ij
+  // w_ij (du/2 + 2 (e . du) e), du = u_j - u_i, e = r_ij/|r_ij|; exact (to the lattice's isotropy) for a uniform
+  // viscosity, divergence included; each pair's forces are equal and opposite and dissipate. Not in the paper
+  // (docs/mps.md, section 7).
+  full,
 };
 
 struct Settings : EngineSettings {
