@@ -50,9 +50,8 @@ double middle_speed(const sph::ParticleSet& p) {
 }
 
 // A layer `rows` particles thick and 1 m long, at rest under its geostatic (K0) stress on a no-slip floor, set
-// sliding at 1 m/s at its middle (x = 1 m) and stretched at `stretch` [1/s] (v = 1 + stretch (x - 1)). Returns the deceleration of its middle third [m/s^2], the least-squares slope of the speed over
-// 0.08-0.24 s (after the start-up, before it stops at about 0.3 s), sampled every 5 ms.
-double sliding_deceleration(int rows, double dx, double stretch = 0.0) {
+// sliding at 1 m/s at its middle (x = 1 m) and stretched at `stretch` [1/s] (v = 1 + stretch (x - 1)).
+sph::Model sliding_layer(int rows, double dx, double stretch) {
   sph::Model m;
   sph::Material mat;
   mat.name = "aluminium bars";
@@ -79,33 +78,44 @@ double sliding_deceleration(int rows, double dx, double stretch = 0.0) {
   sph::add_box_walls(m.particles, floor, dx, s.smoothing_length(), 0, mat.density);
   for (std::size_t i = 0; i < m.particles.size(); ++i)
     if (is_soil(m.particles, i)) m.particles.vx[i] = 1.0 + stretch * (m.particles.x[i] - 1.0);
+  return m;
+}
+
+// The least-squares slope of y against t.
+double least_squares_slope(const std::vector<double>& t, const std::vector<double>& y) {
+  double mt = 0, my = 0;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    mt += t[k];
+    my += y[k];
+  }
+  mt /= static_cast<double>(t.size());
+  my /= static_cast<double>(t.size());
+  double sty = 0, stt = 0;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    sty += (t[k] - mt) * (y[k] - my);
+    stt += (t[k] - mt) * (t[k] - mt);
+  }
+  return sty / stt;
+}
+
+// The deceleration of the sliding layer's middle third [m/s^2]: the least-squares slope of its speed over 0.08-0.24 s
+// (after the start-up, before it stops at about 0.3 s), sampled every 5 ms.
+double sliding_deceleration(int rows, double dx, double stretch = 0.0) {
+  sph::Model m = sliding_layer(rows, dx, stretch);
   sph::SoilStep step(m);
   step.initialise();
   std::vector<double> times, speeds;
-  double t = 0, next = 0.08;
-  while (t <= 0.24) {
-    if (t >= next) {
-      times.push_back(t);
+  double next = 0.08;
+  while (m.state.time <= 0.24) {
+    if (m.state.time >= next) {
+      times.push_back(m.state.time);
       speeds.push_back(middle_speed(m.particles));
       next += 0.005;
     }
     step.advance(step.stable_time_step());
-    t = m.state.time;
     REQUIRE(step.check_health().ok);
   }
-  double mt = 0, mv = 0;
-  for (std::size_t k = 0; k < times.size(); ++k) {
-    mt += times[k];
-    mv += speeds[k];
-  }
-  mt /= static_cast<double>(times.size());
-  mv /= static_cast<double>(times.size());
-  double stv = 0, stt = 0;
-  for (std::size_t k = 0; k < times.size(); ++k) {
-    stv += (times[k] - mt) * (speeds[k] - mv);
-    stt += (times[k] - mt) * (times[k] - mt);
-  }
-  return -stv / stt;
+  return -least_squares_slope(times, speeds);
 }
 
 }  // namespace
