@@ -13,16 +13,15 @@
 #include <vector>
 
 #include "sph/engine/fill.hpp"
+#include "sph/soil/benchmarks.hpp"
 #include "sph/soil/model.hpp"
 #include "sph/soil/soil_step.hpp"
 #include "sphslope/units.hpp"
 
 namespace {
 
-constexpr double kFrictionAngleDeg = 19.8;  // the aluminium bars of Bui et al. (2008)
-
 double closed_form_deceleration() {
-  const double t = std::tan(kFrictionAngleDeg * sphslope::pi / 180.0);
+  const double t = std::tan(sph::aluminium_bars().friction_angle_deg * sphslope::pi / 180.0);
   return sphslope::standard_gravity * t / std::sqrt(1.0 + 4.0 / 3.0 * t * t);
 }
 
@@ -53,14 +52,7 @@ double middle_speed(const sph::ParticleSet& p) {
 // sliding at 1 m/s at its middle (x = 1 m) and stretched at `stretch` [1/s] (v = 1 + stretch (x - 1)).
 sph::Model sliding_layer(int rows, double dx, double stretch) {
   sph::Model m;
-  sph::Material mat;
-  mat.name = "aluminium bars";
-  mat.density = 2650;
-  mat.youngs_modulus = 0.84e6;
-  mat.poisson_ratio = 0.3;
-  mat.friction_angle_deg = kFrictionAngleDeg;
-  mat.cohesion = 0;
-  mat.dilatancy_angle_deg = 0;
+  const sph::Material mat = sph::aluminium_bars();
   m.materials.push_back(mat);
   auto& s = m.settings;
   s.particle_spacing = dx;

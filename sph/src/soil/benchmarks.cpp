@@ -8,8 +8,7 @@
 
 namespace sph {
 
-Model make_column_collapse(const ColumnCollapseCase& c) {
-  Model m;
+Material aluminium_bars() {
   Material al;
   al.name = "aluminium bars (Bui et al. 2008)";
   al.density = 2650.0;
@@ -18,6 +17,12 @@ Model make_column_collapse(const ColumnCollapseCase& c) {
   al.cohesion = 0.0;
   al.friction_angle_deg = 19.8;
   al.dilatancy_angle_deg = 0.0;
+  return al;
+}
+
+Model make_column_collapse(const ColumnCollapseCase& c) {
+  Model m;
+  const Material al = aluminium_bars();
   m.materials.push_back(al);
   Settings& s = m.settings;
   s.particle_spacing = c.dx;

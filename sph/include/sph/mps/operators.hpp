@@ -89,12 +89,16 @@ terms::StrainRate strain_rate(const Neighbourhood& nb, std::size_t i, const doub
 Vector2 viscous_force(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, const double* mu,
                       const LatticeConstants& lattice, InteractionViscosity interaction);
 
+// The viscosity of the pair (i, j) [Pa s]: the harmonic mean of mu_i and mu_j, or mu_i (`interaction`).
+inline double pair_viscosity(std::size_t i, std::size_t j, const double* mu, InteractionViscosity interaction) {
+  return interaction == InteractionViscosity::harmonic_mean ? terms::harmonic_mean_viscosity(mu[i], mu[j]) : mu[i];
+}
+
 // The pair (i, j)'s share of viscous_force's sum before its prefactor, added to f: mu_ij (u_j - u_i) w_ij with mu_ij
 // by `interaction` (for a pass that gathers other sums in the same loop).
 inline void add_viscous_share(Vector2& f, std::size_t i, std::size_t j, double w, const double* u, const double* v,
                               const double* mu, InteractionViscosity interaction) {
-  const double mu_ij =
-      interaction == InteractionViscosity::harmonic_mean ? terms::harmonic_mean_viscosity(mu[i], mu[j]) : mu[i];
+  const double mu_ij = pair_viscosity(i, j, mu, interaction);
   f.x += terms::viscous_share(mu_ij, u[j] - u[i], w);
   f.y += terms::viscous_share(mu_ij, v[j] - v[i], w);
 }

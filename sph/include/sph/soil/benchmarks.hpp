@@ -18,6 +18,9 @@ struct ColumnCollapseCase {
   WallSlip wall_slip = WallSlip::no_slip;
 };
 
+// The aluminium bars of that case (rho = 2650 kg/m^3, E = 0.84 MPa, nu = 0.3, phi = 19.8 deg, c = 0, psi = 0).
+Material aluminium_bars();
+
 Model make_column_collapse(const ColumnCollapseCase& c);
 
 struct DepositShape {
