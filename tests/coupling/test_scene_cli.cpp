@@ -116,7 +116,8 @@ const BadScene bad_scenes[] = {
      "analyses.mps.pore_pressure: \"hydrostatic\" takes the pore water's density from a material of type \"water\""},
     {"mps_negative_density.json", "check", "analyses.mps.materials[1].density_kg_m3: must be > 0 (got -1324)"},
     {"mps_unknown_effective_pressure.json", "check",
-     "analyses.mps.effective_pressure: expected \"smoothed\" or \"hydrostatic\", got \"lithostatic\""},
+     "analyses.mps.effective_pressure: expected \"smoothed\", \"hydrostatic\" or \"smoothed_thin_layer\", got "
+     "\"lithostatic\""},
     // Valid on its own; only the search itself finds that the limits admit no slip circle.
     {"no_valid_circle.json", "lem", "analyses.lem.search: the search limits admit no valid slip circle"},
 };
@@ -396,10 +397,13 @@ TEST_CASE("sphslope run on an isph scene writes the isph block and monitors.csv"
 }
 
 // The mps analysis from the command line: the Lajeunesse dry collapse of cases/ at dx = 10 mm (60 grains, 16,000
-// steps, about 7 s), its report block and monitors.csv (time_s, front_x_m, wall_height_m). The grains must have
-// left the column (the front beyond l0 = 0.1 m) and stay in the tank, the column must have slumped (the height at
-// the wall below h0 = 0.06 m), the mass is kept, and the deposit is at rest at 0.6 s (measured: front 0.235 m,
-// height at the wall 0.0356 m, largest speed 0.008 m/s; docs/mps.md section 7 compares them with the scaling laws).
+// steps, about 7 s; the case's thin-layer p' and full stress divergence), its report block and monitors.csv
+// (time_s, front_x_m, wall_height_m). The grains must have left the column and stay in the tank, the column must have
+// slumped (the height at the wall below h0 = 0.06 m), the mass is kept, and the deposit is at rest at 0.6 s.
+// Reference for the front: the 2-D scaling laws' band L = l0 (1 + lambda a), lambda = 1.2 to 1.8 (Lube et al. 2005,
+// Lajeunesse et al. 2005; shared/references/fluids-granular.md section 4): 0.172 to 0.208 m. Measured: front 0.1950
+// m, height at the wall 0.0409 m (32 % below h0: not checked against the laws, docs/mps.md section 7), 0.006 m/s.
+// With the paper's forms the front is 0.235 m, outside the band; at 5 and 2.5 mm docs/mps.md gives the trend.
 TEST_CASE("sphslope run on an mps scene writes the mps block and monitors.csv", "[cli][mps][e2e]") {
   TemporaryFolder folder("mps");
   std::ifstream in(source_path("cases/mps_dry_collapse_lajeunesse.json"));
@@ -417,8 +421,8 @@ TEST_CASE("sphslope run on an mps scene writes the mps block and monitors.csv", 
   const nlohmann::json& mps = report["mps"];
   CHECK(mps["status"] == "ok");
   CHECK(mps["particles"]["moving"] == 60);
-  CHECK(mps["effective_pressure"] == "smoothed");
-  CHECK(mps["stress_divergence"] == "direct");
+  CHECK(mps["effective_pressure"] == "smoothed_thin_layer");
+  CHECK(mps["stress_divergence"] == "full");
   CHECK(mps["simulated_time_s"].get<double>() == Approx(0.6));
   CHECK(mps["mass_kg_per_m"]["end"].get<double>() == Approx(1500.0 * 0.1 * 0.06));  // rho0 l0 h0 [kg/m]
   CHECK(mps["mass_kg_per_m"]["start"].get<double>() == Approx(1500.0 * 0.1 * 0.06));
@@ -426,8 +430,8 @@ TEST_CASE("sphslope run on an mps scene writes the mps block and monitors.csv", 
   CHECK(deposit["front_x_m"]["start"].get<double>() == Approx(0.1));
   CHECK(deposit["wall_height_m"]["start"].get<double>() == Approx(0.06));
   const double front = deposit["front_x_m"]["end"].get<double>();
-  CHECK(front > 0.12);
-  CHECK(front < 0.3);
+  CHECK(front >= 0.1 * (1 + 1.2 * 0.6));  // the scaling laws' band, a = h0/l0 = 0.6
+  CHECK(front <= 0.1 * (1 + 1.8 * 0.6));
   CHECK(deposit["wall_height_m"]["end"].get<double>() < 0.06);
   CHECK(deposit["max_speed_end_m_s"].get<double>() < 0.05);
   CHECK(mps["warnings"].empty());  // c0 = 20 m/s against a largest speed of 0.76 m/s
@@ -504,8 +508,11 @@ TEST_CASE("WC-MPS dry collapse: the hydrostatic p' gives a steeper deposit than 
           "paper reports",
           "[cli][mps][long]") {
   TemporaryFolder folder("mps_direction");
-  const MpsDeposit smoothed = mps_collapse_deposit(folder.path, "smoothed", nlohmann::json::object());
-  const MpsDeposit hydrostatic = mps_collapse_deposit(folder.path, "hydrostatic", {{"effective_pressure", "hydrostatic"}});
+  // both with the paper's eq. 22, whatever the case file chooses
+  const MpsDeposit smoothed = mps_collapse_deposit(
+      folder.path, "smoothed", {{"effective_pressure", "smoothed"}, {"stress_divergence", "direct"}});
+  const MpsDeposit hydrostatic = mps_collapse_deposit(
+      folder.path, "hydrostatic", {{"effective_pressure", "hydrostatic"}, {"stress_divergence", "direct"}});
   const double steep_smoothed = smoothed.wall_height / smoothed.front;
   const double steep_hydrostatic = hydrostatic.wall_height / hydrostatic.front;
   std::printf("mps direction at 5 mm: smoothed p' front %.4f m, H %.4f m, H/L %.4f, speed %.3f m/s; hydrostatic p' "

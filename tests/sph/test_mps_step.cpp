@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -211,6 +212,45 @@ TEST_CASE("MPS hydrostatic effective pressure is the weight of the material abov
   CHECK(at(0.045, 0.055) == Approx(rho_g * 0.005).epsilon(1e-12));  // the top row: half its own cell
   CHECK(at(0.045, -0.005) == Approx(rho_g * 0.065).epsilon(1e-12));
   CHECK(at(0.255, -0.005) == 0.0);
+}
+
+// effective_pressure smoothed_thin_layer (docs/mps.md section 7): the same column at rest at the start, where the EOS
+// pressure p^m is still 0 everywhere, so the smoothed p' is 0. On a flat lattice surface with r_e = 4 dx the top
+// three rows miss neighbours (n/n0 = 0.634, 0.908, 0.991) and get the weight above them, rho0 g (h + dx/2); the
+// fourth row and below, away from the column's free side, have complete neighbourhoods and keep the smoothed 0; the
+// grain at the free side (x = 0.095 m) misses neighbours at any depth. With "smoothed" every grain has 0.
+TEST_CASE("MPS thin-layer effective pressure gives the weight above where the neighbourhood is incomplete", "[mps]") {
+  auto start = [](sph::mps::EffectivePressure choice) {
+    sph::mps::Settings st;
+    st.particle_spacing = 0.01;
+    st.end_time = 0.1;
+    st.effective_pressure = choice;
+    auto model = std::make_unique<sph::mps::Model>(st, std::vector{sph::mps::Material::granular_material()});
+    sph::mps::add_block(*model, 0.0, 0.0, 0.1, 0.06, 0);
+    sph::mps::add_box(*model, 0.0, 0.3, 0.0, 0.12, 0);
+    sph::mps::Step step(*model);
+    step.initialise();
+    return model;
+  };
+  auto at = [](const sph::mps::Model& model, double x, double y) {
+    const sph::ParticleSet& p = model.particles;
+    const double* pp = p.field(model.fields.smoothed_pressure).data();
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (std::abs(p.x[i] - x) < 1e-6 && std::abs(p.y[i] - y) < 1e-6) return pp[i];
+    FAIL("no particle at " << x << ", " << y);
+    return 0.0;
+  };
+  const auto thin = start(sph::mps::EffectivePressure::smoothed_thin_layer);
+  const double rho_g = 1500.0 * g;
+  CHECK(at(*thin, 0.045, 0.055) == Approx(rho_g * 0.005).epsilon(1e-12));  // the top row: half its own cell
+  CHECK(at(*thin, 0.045, 0.045) == Approx(rho_g * 0.015).epsilon(1e-12));
+  CHECK(at(*thin, 0.045, 0.035) == Approx(rho_g * 0.025).epsilon(1e-12));  // n/n0 = 0.991
+  CHECK(at(*thin, 0.045, 0.025) == 0.0);  // complete: the smoothed p'
+  CHECK(at(*thin, 0.045, 0.005) == 0.0);
+  CHECK(at(*thin, 0.095, 0.025) == Approx(rho_g * 0.035).epsilon(1e-12));  // the free side
+  const auto smoothed = start(sph::mps::EffectivePressure::smoothed);
+  CHECK(at(*smoothed, 0.045, 0.055) == 0.0);
+  CHECK(at(*smoothed, 0.095, 0.025) == 0.0);
 }
 
 namespace {

@@ -43,8 +43,8 @@ void read_numerics(JsonReader& r, sph::mps::Settings& s) {
   s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, 1.0, true});
   s.output_interval = r.number_or("output_interval_s", s.output_interval, Bounds::non_negative());
   read_choice(r, "regularisation", "\"consistent\" or \"as_printed\"", sph::mps::regularisation_from, s.regularisation);
-  read_choice(r, "effective_pressure", "\"smoothed\" or \"hydrostatic\"", sph::mps::effective_pressure_from,
-              s.effective_pressure);
+  read_choice(r, "effective_pressure", "\"smoothed\", \"hydrostatic\" or \"smoothed_thin_layer\"",
+              sph::mps::effective_pressure_from, s.effective_pressure);
   read_choice(r, "pore_pressure", "\"none\" or \"hydrostatic\"", sph::mps::pore_pressure_from, s.pore_pressure);
   read_choice(r, "stress_divergence", "\"direct\", \"indirect\" or \"full\"", sph::mps::stress_divergence_from,
               s.stress_divergence);

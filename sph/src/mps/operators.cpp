@@ -139,7 +139,7 @@ PressureAndStrainRate smoothed_pressure_and_strain_rate(const Neighbourhood& nb,
     terms::add_strain_rate_share(s, u[j] - u[i], v[j] - v[i], x_ij, y_ij, w, r2);
   });
   const double c = terms::gradient_prefactor(n0);
-  return {sum_w > 0 ? sum_pw / sum_w : 0.0, {c * s.xx, c * s.yy, c * s.xy}};
+  return {sum_w > 0 ? sum_pw / sum_w : 0.0, {c * s.xx, c * s.yy, c * s.xy}, sum_w};
 }
 
 }  // namespace sph::mps

@@ -32,11 +32,18 @@ const char* interaction_viscosity_key(InteractionViscosity v) {
 EffectivePressure effective_pressure_from(const std::string& key) {
   if (key == "smoothed") return EffectivePressure::smoothed;
   if (key == "hydrostatic") return EffectivePressure::hydrostatic;
-  throw std::invalid_argument("mps effective pressure '" + key + "': expected \"smoothed\" or \"hydrostatic\"");
+  if (key == "smoothed_thin_layer") return EffectivePressure::smoothed_thin_layer;
+  throw std::invalid_argument("mps effective pressure '" + key +
+                              "': expected \"smoothed\", \"hydrostatic\" or \"smoothed_thin_layer\"");
 }
 
 const char* effective_pressure_key(EffectivePressure p) {
-  return p == EffectivePressure::smoothed ? "smoothed" : "hydrostatic";
+  switch (p) {
+    case EffectivePressure::smoothed: return "smoothed";
+    case EffectivePressure::hydrostatic: return "hydrostatic";
+    case EffectivePressure::smoothed_thin_layer: return "smoothed_thin_layer";
+  }
+  return "smoothed";
 }
 
 PorePressure pore_pressure_from(const std::string& key) {

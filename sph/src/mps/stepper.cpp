@@ -45,6 +45,7 @@ struct Step::Impl {
   double pore_density = 0;  // rho_w of the pore pressure (PorePressure::hydrostatic), else 0
   double gravity = 0;  // |g| at the current step [m/s^2] (the pore pressure)
   std::vector<double> depth;  // each particle's depth below the moving material's surface [m] (hydrostatic p', pores)
+  std::unique_ptr<SurfaceStrips> strips;  // the moving material's surface at r^m (smoothed_thin_layer)
 };
 
 Step::Step(Model& model) : model_(model), impl_(std::make_unique<Impl>()) {
@@ -152,19 +153,36 @@ void Step::depths_below_surface() {
   impl_->depth = depth_below_surface(p, surface, model_.settings.particle_spacing);
 }
 
-// [M25] (eq. 18), the hydrostatic p' of every particle: rho_i |g| (h + dx/2) below the moving material's surface
-// (rho_i its material's density); 0 for a wall particle with no moving particle above it.
+// [M25] (eq. 18), the hydrostatic p' of particle i at depth h below the moving material's surface: rho_i |g|
+// (h + dx/2) (rho_i its material's density); 0 for a wall particle with no moving particle above it.
+double Step::weight_above(std::size_t i, double h) const {
+  if (model_.particles.kind[i] != kMoving && !(h > 0)) return 0.0;
+  const double depth = h + 0.5 * model_.settings.particle_spacing;
+  return hydrostatic_pressure(impl_->density[material_of(i)], impl_->gravity, depth);
+}
+
+// The hydrostatic p' of every particle (weight_above at impl_->depth).
 void Step::hydrostatic_pressures() {
-  const ParticleSet& p = model_.particles;
-  const Settings& st = model_.settings;
   const std::vector<double>& h = impl_->depth;
   std::vector<double>& w = impl_->weight_above;
-  w.assign(p.size(), 0.0);
-  const double g = std::hypot(gravity_x(), gravity_y());
-  for (std::size_t i = 0; i < p.size(); ++i)
-    w[i] = p.kind[i] == kMoving || h[i] > 0
-               ? hydrostatic_pressure(impl_->density[material_of(i)], g, h[i] + 0.5 * st.particle_spacing)
-               : 0.0;
+  w.resize(h.size());
+  for (std::size_t i = 0; i < h.size(); ++i) w[i] = weight_above(i, h[i]);
+}
+
+// The moving material's surface at r^m, for the depths of the thin layers (smoothed_thin_layer).
+void Step::surface_strips() {
+  const ParticleSet& p = model_.particles;
+  std::vector<std::uint8_t> surface(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) surface[i] = p.kind[i] == kMoving ? 1 : 0;
+  impl_->strips = std::make_unique<SurfaceStrips>(p, surface, model_.settings.particle_spacing);
+}
+
+// smoothed_thin_layer: particle i's p' before the pore pressure [Pa], the smoothed p' or, where its neighbourhood is
+// incomplete (n_i below n0 by more than rounding), the weight above it if that is larger.
+double Step::thin_layer_pressure(std::size_t i, const PressureAndStrainRate& ps) const {
+  constexpr double complete = 1.0 - 1e-6;  // an interior particle's n_i differs from n0 by rounding only
+  if (!(ps.number_density < complete * lattice_.n0)) return ps.smoothed_pressure;
+  return std::max(ps.smoothed_pressure, weight_above(i, impl_->strips->depth(i)));
 }
 
 // A6, PorePressure::hydrostatic: rho_w |g| (h + dx/2) for a granular particle, else 0 [Pa].
@@ -182,10 +200,12 @@ void Step::viscosities() {
   const Settings& st = model_.settings;
   const auto n = static_cast<Index>(p.size());
   const bool hydrostatic = st.effective_pressure == EffectivePressure::hydrostatic;
+  const bool thin_layer = st.effective_pressure == EffectivePressure::smoothed_thin_layer;
   const bool indirect = st.stress_divergence == StressDivergence::indirect;
   impl_->gravity = std::hypot(gravity_x(), gravity_y());
   if (hydrostatic || impl_->pore_density > 0) depths_below_surface();
   if (hydrostatic) hydrostatic_pressures();
+  if (thin_layer) surface_strips();
   if (indirect) {
     impl_->sxx.assign(p.size(), 0.0);
     impl_->syy.assign(p.size(), 0.0);
@@ -198,7 +218,8 @@ void Step::viscosities() {
     const bool water = mat.type == Material::Type::water;
     const bool needs_rate = indirect || !water;
     const PressureAndStrainRate ps = pressure_and_strain_rate(i, hydrostatic, needs_rate);
-    a.smoothed_pressure[i] = std::max(ps.smoothed_pressure - pore_pressure(i), 0.0);
+    const double total = thin_layer && !water ? thin_layer_pressure(i, ps) : ps.smoothed_pressure;
+    a.smoothed_pressure[i] = std::max(total - pore_pressure(i), 0.0);
     if (!needs_rate) {
       a.viscosity[i] = mat.viscosity;
       continue;

@@ -18,6 +18,21 @@ namespace sph::mps {
 std::vector<double> depth_below_surface(const ParticleSet& set, const std::vector<std::uint8_t>& surface,
                                         double strip_half_width);
 
+// depth_below_surface for one particle at a time: the surface particles binned by x in strips once, then depth(i)
+// of any particle of the set (a const read, so threads may ask at once) [m]. For a pass that needs the depth of a
+// few particles only (the thin layers of EffectivePressure::smoothed_thin_layer). The set must not move meanwhile.
+class SurfaceStrips {
+ public:
+  SurfaceStrips(const ParticleSet& set, const std::vector<std::uint8_t>& surface, double strip_half_width);
+  double depth(std::size_t i) const;
+
+ private:
+  long strip_of(double x) const;
+  const ParticleSet& set_;
+  double half_width_ = 0, x_min_ = 0;
+  std::vector<std::vector<std::size_t>> strips_;  // the surface particles of each strip
+};
+
 // [M25] eq. 18: p'_i = rho_b g h_i [Pa] with the bulk density rho_b [kg/m^3] and |g| [m/s^2].
 inline double hydrostatic_pressure(double bulk_density, double gravity, double depth) {
   return bulk_density * gravity * depth;

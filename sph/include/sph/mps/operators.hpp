@@ -131,6 +131,7 @@ double smoothed_pressure(const Neighbourhood& nb, std::size_t i, const double* p
 struct PressureAndStrainRate {
   double smoothed_pressure = 0;  // [Pa]
   terms::StrainRate strain_rate;  // [1/s]
+  double number_density = 0;  // n_i = sum w_ij, Shepard's denominator [-] (smoothed_pressure_and_strain_rate only)
 };
 PressureAndStrainRate smoothed_pressure_and_strain_rate(const Neighbourhood& nb, std::size_t i, const double* p,
                                                         const double* u, const double* v, double n0);

@@ -36,6 +36,11 @@ enum class EffectivePressure {
   // top edge. Wall particles get the weight above them too (their viscosity is the floor's friction in the
   // harmonic mean). The paper's comparison: it ignores vertical accelerations
   hydrostatic,
+  // "smoothed_thin_layer": the smoothed p' where the particle's neighbourhood is complete; where it is not
+  // (n_i < (1 - 1e-6) n0 at r^m, within about r_e of a free surface, where the EOS pressure is clipped to 0 and so
+  // a layer up to three particles thick carries no yield stress), the larger of the smoothed p' and the hydrostatic
+  // one. For the granular particles (their p' sets their yield stress). Not in the paper (docs/mps.md, section 7).
+  smoothed_thin_layer,
 };
 
 // The pore pressure taken off p' for the granular particles (seed A6: the paper does not say how submerged
@@ -127,7 +132,7 @@ struct Settings : EngineSettings {
 // "as_printed" / "consistent". Throws std::invalid_argument on other names.
 Regularisation regularisation_from(const std::string& key);
 const char* regularisation_key(Regularisation r);
-// "smoothed" / "hydrostatic". Throws std::invalid_argument on other names.
+// "smoothed" / "hydrostatic" / "smoothed_thin_layer". Throws std::invalid_argument on other names.
 EffectivePressure effective_pressure_from(const std::string& key);
 const char* effective_pressure_key(EffectivePressure p);
 // "none" / "hydrostatic". Throws std::invalid_argument on other names.

@@ -1,7 +1,8 @@
 #pragma once
 // One time step of the WC-MPS (seed 2.11, eqs. 27-30), on the engine's Stepper interface:
 //   a  the neighbours within r_e at r^m (below)
-//   b  p' = Shepard-smoothed p^m (eq. 20, clamped >= 0) or the hydrostatic weight above (eqs. 18-19, the setting
+//   b  p' = Shepard-smoothed p^m (eq. 20, clamped >= 0) or the hydrostatic weight above (eqs. 18-19), or the
+//      smoothed p' with the weight above as its floor where the neighbourhood is incomplete (the setting
 //      effective_pressure), the strain rate D (eq. 17)
 //   c  mu_i: the material's constant viscosity (water) or the capped regularised Herschel-Bulkley law (granular)
 //   d  <div tau>^m (eq. 22, or eq. 23 with stress_divergence indirect) and <grad p>^m (eq. 24)
@@ -66,6 +67,9 @@ class Step : public Stepper {
   void viscosities();
   void depths_below_surface();
   void hydrostatic_pressures();
+  double weight_above(std::size_t i, double h) const;
+  void surface_strips();
+  double thin_layer_pressure(std::size_t i, const PressureAndStrainRate& ps) const;
   double pore_pressure(std::size_t i) const;
   void mixture_densities();
   std::size_t material_of(std::size_t i) const;
