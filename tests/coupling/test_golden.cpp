@@ -460,6 +460,15 @@ TEST_CASE("golden: MPS dry collapse coarse (default settings)", "[golden][sph][m
   check_mps_golden({"mps_dry_collapse.txt", "default settings", sph::mps::Settings{}, false, 400});
 }
 
+// The forms of cases/mps_dry_collapse_lajeunesse.json: the thin-layer p' and the full stress divergence.
+TEST_CASE("golden: MPS dry collapse coarse (smoothed_thin_layer + full)", "[golden][sph][mps]") {
+  sph::mps::Settings st;
+  st.effective_pressure = sph::mps::EffectivePressure::smoothed_thin_layer;
+  st.stress_divergence = sph::mps::StressDivergence::full;
+  check_mps_golden({"mps_dry_collapse_thin_full.txt", "effective_pressure smoothed_thin_layer, stress_divergence full",
+                    st, false, 400});
+}
+
 // Every comparison option at its other value, a water block beside the column, the plain pressure difference.
 TEST_CASE("golden: MPS granular column and water block (hydrostatic + indirect + own viscosity + as printed)",
           "[golden][sph][mps]") {

@@ -75,11 +75,7 @@ Vector2 full_viscous_force(const Neighbourhood& nb, std::size_t i, const double*
                            const LatticeConstants& lattice, InteractionViscosity interaction) {
   Vector2 f;
   for_each_mps_neighbour(nb, i, [&](std::size_t j, double x_ij, double y_ij, double r2, double w) {
-    const double mu_ij = pair_viscosity(i, j, mu, interaction);
-    const double du = u[j] - u[i], dv = v[j] - v[i];
-    const double along = (du * x_ij + dv * y_ij) / r2;  // (e . du) / r
-    f.x += mu_ij * w * (0.5 * du + 2.0 * along * x_ij);
-    f.y += mu_ij * w * (0.5 * dv + 2.0 * along * y_ij);
+    add_full_viscous_share(f, i, j, x_ij, y_ij, r2, w, u, v, mu, interaction);
   });
   const double c = viscous_prefactor(lattice);
   return {c * f.x, c * f.y};

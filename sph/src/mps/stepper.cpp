@@ -278,22 +278,28 @@ Vector2 Step::pressure_gradient(std::size_t i, const double* p) const {
   return {c * g.x, c * g.y};
 }
 
-// The predictor's direct viscous force (eq. 22, viscous_force) and pressure gradient (eq. 24, pressure_gradient)
-// of particle i gathered in one pass over its neighbours after the base's: the same sums in the same order as the
-// two functions, so the same values bit for bit.
+// The predictor's viscous force, direct (eq. 22, viscous_force) or full (full_viscous_force), and pressure gradient
+// (eq. 24, pressure_gradient) of particle i gathered in one pass over its neighbours after the base's: the same sums
+// in the same order as the two functions, so the same values bit for bit.
+template <bool Full>
 Step::Forces Step::viscous_and_pressure_forces(std::size_t i, const double* p) const {
   const ParticleSet& set = model_.particles;
   const double* dummy = set.field(model_.dummy).data();
   const double* mu = set.field(model_.fields.viscosity).data();
+  const double* u = set.vx.data();
+  const double* v = set.vy.data();
   const InteractionViscosity interaction = model_.settings.interaction_viscosity;
   const double base = gradient_base(i, p);
-  Vector2 v, g;
+  Vector2 f, g;
   for_each_weighted_neighbour(neighbourhood(), i, [&](std::size_t j, double dx, double dy, double r2, double w) {
-    add_viscous_share(v, i, j, w, set.vx.data(), set.vy.data(), mu, interaction);
+    if constexpr (Full)
+      add_full_viscous_share(f, i, j, -dx, -dy, r2, w, u, v, mu, interaction);  // x_ij = -(x_i - x_j)
+    else
+      add_viscous_share(f, i, j, w, u, v, mu, interaction);
     if (dummy[j] == 0.0) add_gradient_share(g, p[j] - base, dx, dy, r2, w);
   });
   const double cv = viscous_prefactor(lattice_), cg = terms::gradient_prefactor(lattice_.n0);
-  return {{cv * v.x, cv * v.y}, {cg * g.x, cg * g.y}};
+  return {{cv * f.x, cv * f.y}, {cg * g.x, cg * g.y}};
 }
 
 // Steps d and e: u* (eq. 28) and r* = r^m + u* dt for the moving particles; r^m kept for step h.
@@ -314,15 +320,12 @@ void Step::predict(double dt) {
     if (p.kind[i] != kMoving) continue;
     Forces f;
     switch (st.stress_divergence) {
-      case StressDivergence::direct: f = viscous_and_pressure_forces(i, a.pressure); break;
+      case StressDivergence::direct: f = viscous_and_pressure_forces<false>(i, a.pressure); break;
       case StressDivergence::indirect:
         f = {stress_divergence(nb, i, impl_->sxx.data(), impl_->syy.data(), impl_->sxy.data(), lattice_.n0),
              pressure_gradient(i, a.pressure)};
         break;
-      case StressDivergence::full:
-        f = {full_viscous_force(nb, i, p.vx.data(), p.vy.data(), a.viscosity, lattice_, st.interaction_viscosity),
-             pressure_gradient(i, a.pressure)};
-        break;
+      case StressDivergence::full: f = viscous_and_pressure_forces<true>(i, a.pressure); break;
     }
     const Vector2& v = f.viscous;
     const Vector2& g = f.pressure_gradient;

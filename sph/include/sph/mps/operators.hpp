@@ -116,6 +116,18 @@ inline double viscous_prefactor(const LatticeConstants& lattice) {
 Vector2 full_viscous_force(const Neighbourhood& nb, std::size_t i, const double* u, const double* v, const double* mu,
                            const LatticeConstants& lattice, InteractionViscosity interaction);
 
+// The pair (i, j)'s share of full_viscous_force's sum before its prefactor, added to f: mu_ij w_ij (du/2 + 2 (e . du)
+// e) with x_ij = x_j - x_i, y_ij and r2 = |x_ij|^2 (for a pass that gathers other sums in the same loop).
+inline void add_full_viscous_share(Vector2& f, std::size_t i, std::size_t j, double x_ij, double y_ij, double r2,
+                                   double w, const double* u, const double* v, const double* mu,
+                                   InteractionViscosity interaction) {
+  const double mu_ij = pair_viscosity(i, j, mu, interaction);
+  const double du = u[j] - u[i], dv = v[j] - v[i];
+  const double along = (du * x_ij + dv * y_ij) / r2;  // (e . du) / r
+  f.x += mu_ij * w * (0.5 * du + 2.0 * along * x_ij);
+  f.y += mu_ij * w * (0.5 * dv + 2.0 * along * y_ij);
+}
+
 // [M29] the indirect stress divergence of seed eq. 23: <div tau>_i = (<d tau_xx/dx> + <d tau_xy/dy>, <d tau_xy/dx> +
 // <d tau_yy/dy>) [N/m^3] by the MPS gradient [M4] of the particles' stresses tau = 2 mu D [Pa] (symmetric: sxy is
 // both off-diagonal components). One neighbour pass for the three gradients.

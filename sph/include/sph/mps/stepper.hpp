@@ -84,6 +84,7 @@ class Step : public Stepper {
     Vector2 viscous;  // [N/m^3]
     Vector2 pressure_gradient;  // [Pa/m]
   };
+  template <bool Full>
   Forces viscous_and_pressure_forces(std::size_t i, const double* p) const;
   double gate_rise(double dt) const;
   double gravity_x() const;
