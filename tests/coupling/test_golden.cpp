@@ -456,11 +456,14 @@ TEST_CASE("golden: SPH thesis slope 2 coarse (geostatic K0 + Wendland + XSPH + d
   check_sph_golden({"sph_thesis_slope2_geostatic_wendland_xsph.txt", "thesis_slope2.json", patch, 400});
 }
 
-TEST_CASE("golden: MPS dry collapse coarse (default settings)", "[golden][sph][mps]") {
-  check_mps_golden({"mps_dry_collapse.txt", "default settings", sph::mps::Settings{}, false, 400});
+TEST_CASE("golden: MPS dry collapse coarse (the paper's forms: smoothed p', eq. 22)", "[golden][sph][mps]") {
+  sph::mps::Settings st;
+  st.effective_pressure = sph::mps::EffectivePressure::smoothed;
+  st.stress_divergence = sph::mps::StressDivergence::direct;
+  check_mps_golden({"mps_dry_collapse.txt", "effective_pressure smoothed, stress_divergence direct", st, false, 400});
 }
 
-// The forms of cases/mps_dry_collapse_lajeunesse.json: the thin-layer p' and the full stress divergence.
+// The defaults, as in cases/mps_dry_collapse_lajeunesse.json: the thin-layer p' and the full stress divergence.
 TEST_CASE("golden: MPS dry collapse coarse (smoothed_thin_layer + full)", "[golden][sph][mps]") {
   sph::mps::Settings st;
   st.effective_pressure = sph::mps::EffectivePressure::smoothed_thin_layer;

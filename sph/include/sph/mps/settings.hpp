@@ -30,13 +30,13 @@ enum class InteractionViscosity {
 
 // The effective pressure p' of the yield stress tau_y = c cos(phi) + p' sin(phi) (seed section 2.9, Figs 6-7).
 enum class EffectivePressure {
-  smoothed,  // "smoothed" (default): the Shepard average of the EOS pressure (eq. 20), clamped at 0
+  smoothed,  // "smoothed" (the paper's): the Shepard average of the EOS pressure (eq. 20), clamped at 0
   // "hydrostatic": the weight of the material above, rho0 |g| (h + dx/2), h the depth of the particle's centre below
   // the highest moving particle's centre within dx in x (eqs. 18-19); + dx/2 because the surface is that particle's
   // top edge. Wall particles get the weight above them too (their viscosity is the floor's friction in the
   // harmonic mean). The paper's comparison: it ignores vertical accelerations
   hydrostatic,
-  // "smoothed_thin_layer": the smoothed p' where the particle's neighbourhood is complete; where it is not
+  // "smoothed_thin_layer" (default): the smoothed p' where the particle's neighbourhood is complete; where it is not
   // (n_i < (1 - 1e-6) n0 at r^m, within about r_e of a free surface, where the EOS pressure is clipped to 0 and so
   // a layer up to three particles thick carries no yield stress), the larger of the smoothed p' and the hydrostatic
   // one. For the granular particles (their p' sets their yield stress). Not in the paper (docs/mps.md, section 7).
@@ -56,7 +56,7 @@ enum class PorePressure {
 
 // The divergence of the viscous stress in the momentum equation (seed eqs. 22-23, Figs 10-11).
 enum class StressDivergence {
-  // "direct" (default): eq. 22, the MPS Laplacian with the pair viscosity, (2d/(lambda n0)) sum mu_ij (u_j - u_i) w;
+  // "direct" (the paper's): eq. 22, the MPS Laplacian with the pair viscosity, (2d/(lambda n0)) sum mu_ij (u_j - u_i) w;
   // it is div(mu grad u), which is div(2 mu D) only where mu is uniform and the flow divergence-free: it carries
   // the simple-shear stress exactly, half the stress of a pure extension, and a rigid rotation in a viscosity
   // gradient feels a force (docs/mps.md, section 7)
@@ -65,7 +65,7 @@ enum class StressDivergence {
   // div tau = (d tau_xx/dx + d tau_xy/dy, d tau_xy/dx + d tau_yy/dy): div(2 mu D) for any viscosity field; the
   // paper reports fluctuations of viscosity and velocity with it
   indirect,
-  // "full": div(2 mu D) as a pair sum in the manner of eq. 22 (full_viscous_force): (2d/(lambda n0)) sum mu_ij
+  // "full" (default): div(2 mu D) as a pair sum in the manner of eq. 22 (full_viscous_force): (2d/(lambda n0)) sum mu_ij
   // w_ij (du/2 + 2 (e . du) e), du = u_j - u_i, e = r_ij/|r_ij|; exact (to the lattice's isotropy) for a uniform
   // viscosity, divergence included; each pair's forces are equal and opposite and dissipate. Not in the paper
   // (docs/mps.md, section 7).
@@ -95,9 +95,11 @@ struct Settings : EngineSettings {
   // code lineage's 200 Pa s; its sensitivity is to be studied (issue 12, the stability matrix)
   double viscosity_cap = 200.0;
   Regularisation regularisation = Regularisation::consistent;  // A2
-  EffectivePressure effective_pressure = EffectivePressure::smoothed;
+  // smoothed_thin_layer and full: this project's forms, the ones whose dry-collapse front converges (docs/mps.md
+  // section 7); the paper's are "smoothed" and "direct"
+  EffectivePressure effective_pressure = EffectivePressure::smoothed_thin_layer;
   PorePressure pore_pressure = PorePressure::none;  // A6
-  StressDivergence stress_divergence = StressDivergence::direct;
+  StressDivergence stress_divergence = StressDivergence::full;
   InteractionViscosity interaction_viscosity = InteractionViscosity::harmonic_mean;
   // alpha of eqs. 28-29 (A23): the share of the pressure force taken at the new time level, "typically 0.5"
   double pressure_split = 0.5;
