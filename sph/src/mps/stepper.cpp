@@ -45,7 +45,7 @@ struct Step::Impl {
   double pore_density = 0;  // rho_w of the pore pressure (PorePressure::hydrostatic), else 0
   double gravity = 0;  // |g| at the current step [m/s^2] (the pore pressure)
   std::vector<double> depth;  // each particle's depth below the moving material's surface [m] (hydrostatic p', pores)
-  std::unique_ptr<SurfaceStrips> strips;  // the moving material's surface at r^m (smoothed_thin_layer)
+  std::unique_ptr<SurfaceStrips> strips;  // the moving material's surface at r^m (the depths of eq. 19)
 };
 
 Step::Step(Model& model) : model_(model), impl_(std::make_unique<Impl>()) {
@@ -145,12 +145,12 @@ void Step::initialise() {
   model_.state.rates_valid = true;  // the carried state is p^m (checkpointed) and the positions and velocities
 }
 
-// [M24] (eq. 19): every particle's depth below the highest moving particle's centre within dx in x [m].
+// [M24] (eq. 19): every particle's depth below the highest moving particle's centre within dx in x [m], from the
+// strips of surface_strips().
 void Step::depths_below_surface() {
-  const ParticleSet& p = model_.particles;
-  std::vector<std::uint8_t> surface(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) surface[i] = p.kind[i] == kMoving ? 1 : 0;
-  impl_->depth = depth_below_surface(p, surface, model_.settings.particle_spacing);
+  const SurfaceStrips& strips = *impl_->strips;
+  impl_->depth.resize(model_.particles.size());
+  for (std::size_t i = 0; i < impl_->depth.size(); ++i) impl_->depth[i] = strips.depth(i);
 }
 
 // [M25] (eq. 18), the hydrostatic p' of particle i at depth h below the moving material's surface: rho_i |g|
@@ -169,7 +169,7 @@ void Step::hydrostatic_pressures() {
   for (std::size_t i = 0; i < h.size(); ++i) w[i] = weight_above(i, h[i]);
 }
 
-// The moving material's surface at r^m, for the depths of the thin layers (smoothed_thin_layer).
+// The moving material's surface at r^m, binned in strips of dx, for the depths of eq. 19.
 void Step::surface_strips() {
   const ParticleSet& p = model_.particles;
   std::vector<std::uint8_t> surface(p.size());
@@ -203,9 +203,10 @@ void Step::viscosities() {
   const bool thin_layer = st.effective_pressure == EffectivePressure::smoothed_thin_layer;
   const bool indirect = st.stress_divergence == StressDivergence::indirect;
   impl_->gravity = std::hypot(gravity_x(), gravity_y());
-  if (hydrostatic || impl_->pore_density > 0) depths_below_surface();
+  const bool all_depths = hydrostatic || impl_->pore_density > 0;
+  if (all_depths || thin_layer) surface_strips();  // thin_layer asks for the depths of a few particles only
+  if (all_depths) depths_below_surface();
   if (hydrostatic) hydrostatic_pressures();
-  if (thin_layer) surface_strips();
   if (indirect) {
     impl_->sxx.assign(p.size(), 0.0);
     impl_->syy.assign(p.size(), 0.0);
