@@ -13,6 +13,10 @@ is at least 5, 10 and 20 mm thick, in bins 10 mm wide for every run, beside the 
 With --track, the N soil particles furthest downstream in the last frame followed back through every frame: their
 mean position, height and x-velocity and how many of them carry no stress (the front's history):
        scripts/deposit_profile.py --track N RUN_DIR
+
+With --region, for a WC-MPS run: the grains that start in the box X0 < x < X1, Y0 < y < Y1 [m] followed through
+every frame: their mean viscosity [Pa s], mean p' (smoothed_pressure) [Pa] and mean displacement [mm]:
+       scripts/deposit_profile.py --region X0 X1 Y0 Y1 RUN_DIR
 """
 import json
 import glob
@@ -108,7 +112,36 @@ def track_front(run, count):
             sum(a["velocity"][k][0] for k in rows) / n, sum(a["stress_yy"][k] for k in rows) / n, free, n))
 
 
+def track_region(run, box):
+    """The moving particles (kind 0) inside `box` (x0, x1, y0, y1) [m] in the first frame, by id, through every frame."""
+    x0, x1, y0, y1 = box
+    frames = sorted(glob.glob(run + "/frames/frame_*.vtu"))
+    if not frames:
+        sys.exit("deposit_profile: no frames/frame_*.vtu in " + run)
+    first = read_vtu(frames[0], ("Points", "kind", "id"))
+    ids = [i for p, k, i in zip(first["Points"], first["kind"], first["id"])
+           if k == 0 and x0 < p[0] < x1 and y0 < p[1] < y1]
+    if not ids:
+        sys.exit("deposit_profile: no moving particle starts in the box %g < x < %g, %g < y < %g m" % box)
+    fields = ("id", "displacement", "viscosity", "smoothed_pressure")
+    print("%d grains start in %g < x < %g m, %g < y < %g m" % ((len(ids),) + tuple(box)))
+    print("| t (s) | mean viscosity (Pa s) | mean p' (Pa) | mean displacement x (mm) | mean displacement y (mm) |")
+    print("|---|---|---|---|---|")
+    for frame in frames:
+        a = read_vtu(frame, fields)
+        at = {pid: k for k, pid in enumerate(a["id"])}
+        rows = [at[i] for i in ids]
+        n = len(rows)
+        print("| %.2f | %.1f | %.0f | %.1f | %.1f |" % (
+            frame_time(frame), sum(a["viscosity"][k] for k in rows) / n,
+            sum(a["smoothed_pressure"][k] for k in rows) / n,
+            1000 * sum(a["displacement"][k][0] for k in rows) / n, 1000 * sum(a["displacement"][k][1] for k in rows) / n))
+
+
 def main():
+    if len(sys.argv) == 7 and sys.argv[1] == "--region":
+        track_region(sys.argv[6], tuple(float(v) for v in sys.argv[2:6]))
+        return
     if len(sys.argv) == 4 and sys.argv[1] == "--track":
         track_front(sys.argv[3], int(sys.argv[2]))
         return
