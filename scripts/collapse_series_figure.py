@@ -6,9 +6,12 @@ run-out (d - L0)/L0 and the normalised final height h_f/H0 against a = H0/L0, SP
 the true-2-D laws of Nguyen, Bui & Fukagawa (2015), arXiv:1512.05180, aluminium rods:
   (d - d0)/d0 = 3.25 a^0.96 (fitted for 0.65 < a < 1.5), 3.80 a^0.73 (a > 1.5);
   h_f/h0 = 1 (a < 0.65), 1/(1.42 a^(2/3)) above,
-with the +-10 % band of the acceptance criterion (issue 14). Prints a Markdown table of the runs on stdout.
+with the +-10 % band of the acceptance criterion (issue 14). Prints a Markdown table of the runs on stdout, then
+the acceptance of each column at its finest spacing (d and h_f within 10 %, at least 20 particles across); exits
+with 1 when a column misses it.
 Usage: collapse_series_figure.py OUT.svg STUDY_FOLDER...
 """
+import html
 import json
 import math
 import os
@@ -116,6 +119,9 @@ def figure(cases, path):
            'font-family="sans-serif">', '<rect width="100%" height="100%" fill="white"/>',
            '<text x="500" y="24" font-size="16" text-anchor="middle">Granular column collapse series (aluminium '
            'bars, Bui et al. 2008): SPH against the true-2-D laws</text>']
+    settings = os.environ.get("SPH_SETTINGS", "").strip()
+    step = "analyses.sph " + settings if settings not in ("", "{}") else "the scenes' own settings"
+    out.append(f'<text x="80" y="532" font-size="12">SPH step and settings: {html.escape(step)}</text>')
     out.append(band(left, runout_law, 0.4, 5.0, 1.0))
     out.append(band(right, height_law, 0.4, 5.0, 0.0))
     out += axes(left, "run-out", "(d - L0)/L0 (-)", (1, 2, 5, 10, 20))
@@ -162,13 +168,36 @@ def table(cases):
                   f"{100 * (r['h'] - h_law) / h_law:+.1f} % |")
 
 
+def acceptance(cases, tolerance=0.10, least_across=20):
+    """Each column's finest run against the laws; returns the list of columns that miss."""
+    missed = []
+    print(f"\nacceptance: d and h_f within {100 * tolerance:g} % at the finest spacing (>= {least_across} across)")
+    for c in sorted(cases, key=lambda c: c["a"]):
+        r = min(c["runs"], key=lambda r: r["dx"])
+        across = round(c["L0"] / r["dx"])
+        if "d" not in r:
+            verdict = f"missed: the run failed ({r['failed']})"
+        else:
+            d_err = (r["d"] - c["L0"] * (1 + runout_law(c["a"]))) / (c["L0"] * (1 + runout_law(c["a"])))
+            h_err = (r["h"] - c["H0"] * height_law(c["a"])) / (c["H0"] * height_law(c["a"]))
+            ok = abs(d_err) <= tolerance and abs(h_err) <= tolerance and across >= least_across
+            verdict = f"{'met' if ok else 'missed'}: d {100 * d_err:+.1f} %, h_f {100 * h_err:+.1f} %"
+        print(f"- a = {c['a']:g} at {across} across: {verdict}")
+        if not verdict.startswith("met"):
+            missed.append(c["a"])
+    return missed
+
+
 def main():
     if len(sys.argv) < 3:
         sys.exit("usage: collapse_series_figure.py OUT.svg STUDY_FOLDER...")
     cases = [load(f) for f in sys.argv[2:]]
     figure(cases, sys.argv[1])
     table(cases)
+    missed = acceptance(cases)
     print(f"\nfigure: {sys.argv[1]}", file=sys.stderr)
+    if missed:
+        sys.exit("collapse_series_figure: the acceptance is missed at a = " + ", ".join(f"{a:g}" for a in missed))
 
 
 if __name__ == "__main__":
