@@ -92,32 +92,43 @@ def frame_time(path):
     return float(m.group(1)) if m else float("nan")
 
 
+def run_frames(run):
+    """The run's VTK frames in order; exits with a message when it has none."""
+    frames = sorted(glob.glob(run + "/frames/frame_*.vtu"))
+    if not frames:
+        sys.exit("deposit_profile: no frames/frame_*.vtu in " + run)
+    return frames
+
+
+def followed(frames, ids, fields):
+    """For every frame: its time [s], its arrays `fields` (with "id") and the rows of the particles `ids` in them."""
+    for frame in frames:
+        a = read_vtu(frame, fields)
+        at = {pid: k for k, pid in enumerate(a["id"])}
+        yield frame_time(frame), a, [at[i] for i in ids]
+
+
 def track_front(run, count):
     """The `count` furthest soil particles of the last frame, by id, through every frame of the run."""
-    frames = sorted(glob.glob(run + "/frames/frame_*.vtu"))
+    frames = run_frames(run)
     last = read_vtu(frames[-1], ("Points", "kind", "id"))
     soil = sorted((p[0], i) for p, k, i in zip(last["Points"], last["kind"], last["id"]) if k == 0)
     ids = [i for _, i in soil[-count:]]
     fields = ("Points", "id", "velocity", "stress_xx", "stress_yy")
     print("| t (s) | mean x (m) | mean y (mm) | mean vx (m/s) | mean sigma_yy (Pa) | without stress |")
     print("|---|---|---|---|---|---|")
-    for frame in frames:
-        a = read_vtu(frame, fields)
-        at = {pid: k for k, pid in enumerate(a["id"])}
-        rows = [at[i] for i in ids]
+    for t, a, rows in followed(frames, ids, fields):
         n = len(rows)
         free = sum(1 for k in rows if abs(a["stress_xx"][k]) + abs(a["stress_yy"][k]) < 1.0)
         print("| %.3f | %.3f | %.1f | %.3f | %.1f | %d of %d |" % (
-            frame_time(frame), sum(a["Points"][k][0] for k in rows) / n, 1000 * sum(a["Points"][k][1] for k in rows) / n,
+            t, sum(a["Points"][k][0] for k in rows) / n, 1000 * sum(a["Points"][k][1] for k in rows) / n,
             sum(a["velocity"][k][0] for k in rows) / n, sum(a["stress_yy"][k] for k in rows) / n, free, n))
 
 
 def track_region(run, box):
     """The moving particles (kind 0) inside `box` (x0, x1, y0, y1) [m] in the first frame, by id, through every frame."""
     x0, x1, y0, y1 = box
-    frames = sorted(glob.glob(run + "/frames/frame_*.vtu"))
-    if not frames:
-        sys.exit("deposit_profile: no frames/frame_*.vtu in " + run)
+    frames = run_frames(run)
     first = read_vtu(frames[0], ("Points", "kind", "id"))
     ids = [i for p, k, i in zip(first["Points"], first["kind"], first["id"])
            if k == 0 and x0 < p[0] < x1 and y0 < p[1] < y1]
@@ -127,13 +138,10 @@ def track_region(run, box):
     print("%d grains start in %g < x < %g m, %g < y < %g m" % ((len(ids),) + tuple(box)))
     print("| t (s) | mean viscosity (Pa s) | mean p' (Pa) | mean displacement x (mm) | mean displacement y (mm) |")
     print("|---|---|---|---|---|")
-    for frame in frames:
-        a = read_vtu(frame, fields)
-        at = {pid: k for k, pid in enumerate(a["id"])}
-        rows = [at[i] for i in ids]
+    for t, a, rows in followed(frames, ids, fields):
         n = len(rows)
         print("| %.2f | %.1f | %.0f | %.1f | %.1f |" % (
-            frame_time(frame), sum(a["viscosity"][k] for k in rows) / n,
+            t, sum(a["viscosity"][k] for k in rows) / n,
             sum(a["smoothed_pressure"][k] for k in rows) / n,
             1000 * sum(a["displacement"][k][0] for k in rows) / n, 1000 * sum(a["displacement"][k][1] for k in rows) / n))
 
