@@ -44,6 +44,11 @@ MaterialConstants MaterialConstants::from(const Material& m) {
   }
   c.sound_speed = std::sqrt((c.bulk_modulus + 4.0 * c.shear_modulus / 3.0) / m.density);
   c.k0 = std::isnan(m.k0) ? m.poisson_ratio / (1.0 - m.poisson_ratio) : m.k0;
+  c.lambda_denominator = 9.0 * c.alpha_phi * c.alpha_psi * c.bulk_modulus + c.shear_modulus;
+  c.plastic_strain_per_lambda = std::sqrt(2.0 * c.alpha_psi * c.alpha_psi + 1.0 / 3.0);
+  c.half_inv_shear = 0.5 / c.shear_modulus;
+  c.inv_9_bulk = 1.0 / (9.0 * c.bulk_modulus);
+  c.apex_i1 = c.alpha_phi > 0.0 ? c.k_c / c.alpha_phi : std::numeric_limits<double>::infinity();
   return c;
 }
 

@@ -229,7 +229,7 @@ void SoilStep::advance_verlet(double dt) {
     const SoilArrays sa = model_.soil();  // the sort may have swapped the arrays' buffers
     const int substeps = model_.settings.stress_substeps;
     const Index ns = static_cast<Index>(w.soil.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 64)  // the yielding particles take sub-steps: uneven work
     for (Index k = 0; k < ns; ++k) {
       const std::size_t i = w.soil[static_cast<std::size_t>(k)];
       p.rho[i] += dt * sa.drho[i];
@@ -284,10 +284,14 @@ void SoilStep::advance_verlet(double dt) {
 void SoilStep::update_stress_in_substeps(const SoilArrays& sa, std::size_t i, double dt, int n_max) const {
   const ParticleSet& p = model_.particles;
   const auto& w = *impl_;
-  const MaterialConstants& mc = mc_[p.material[i]];
+  // Local copies: the loop's values stay in registers (no write through the arrays can alias them); the operations
+  // and their order are those of one update per sub-step written to the arrays.
+  const MaterialConstants mc = mc_[p.material[i]];
+  const double exx = w.lxx[i], eyy = w.lyy[i], exy = w.lexy[i], wxy = w.lwxy[i], rho = p.rho[i];
   const Stress s0{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
-  const int n = stress_substep_count(mc, s0, w.lxx[i], w.lyy[i], w.lexy[i], dt, n_max);
+  const int n = stress_substep_count(mc, s0, exx, eyy, exy, dt, n_max);
   const double h = dt / n;
+  double plastic_strain = sa.plastic_strain[i], plastic_work = sa.plastic_work[i];
   Stress s = s0;
   for (int q = 0; q < n; ++q) {
     const Stress start = s;
@@ -295,18 +299,20 @@ void SoilStep::update_stress_in_substeps(const SoilArrays& sa, std::size_t i, do
     if (q == 0) {  // the kinematic pass's rate at the step's start stress
       sr.rate = {sa.dsxx[i], sa.dsyy[i], sa.dszz[i], sa.dsxy[i]};
       sr.plastic_strain_rate = sa.dplastic_strain[i];
-      sr.plastic_work_rate = sa.dplastic_work[i] * p.rho[i];
+      sr.plastic_work_rate = sa.dplastic_work[i] * rho;
     } else {
-      sr = stress_rate(mc, s, w.lxx[i], w.lyy[i], w.lexy[i], w.lwxy[i]);
+      sr = stress_rate(mc, s, exx, eyy, exy, wxy);
     }
     s.xx += h * sr.rate.xx;
     s.yy += h * sr.rate.yy;
     s.zz += h * sr.rate.zz;
     s.xy += h * sr.rate.xy;
     const ReturnResult rr = return_to_yield_surface(mc, s, &start);
-    sa.plastic_strain[i] += h * sr.plastic_strain_rate + rr.plastic_strain;
-    sa.plastic_work[i] += (h * sr.plastic_work_rate + rr.plastic_work) / p.rho[i];
+    plastic_strain += h * sr.plastic_strain_rate + rr.plastic_strain;
+    plastic_work += (h * sr.plastic_work_rate + rr.plastic_work) / rho;
   }
+  sa.plastic_strain[i] = plastic_strain;
+  sa.plastic_work[i] = plastic_work;
   sa.sxx[i] = s.xx;
   sa.syy[i] = s.yy;
   sa.szz[i] = s.zz;

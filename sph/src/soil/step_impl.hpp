@@ -19,6 +19,26 @@ struct Evaluators {
 };
 }  // namespace soil_detail
 
+namespace soil_detail {
+// The pairs found by the Verlet step's kinematic pass, read back by its forces pass (no particle moves between the
+// two passes): each soil particle's neighbours j with r_ij and F(r_ij) (grad_i W_ij = F x_ij), in the order of the
+// candidate scan, so that the forces' sums are bitwise those of a new scan. Entries go to the buffer of the thread
+// that gathered the particle; per soil particle (its position k in `soil`): that buffer, the first entry, the count.
+struct PairCache {
+  struct alignas(128) Buffer {  // a cache line (pair) of its own: the threads append to theirs concurrently
+    std::vector<std::uint32_t> j;
+    std::vector<double> r, f;
+    void clear() {
+      j.clear();
+      r.clear();
+      f.clear();
+    }
+  };
+  std::vector<Buffer> buffers;
+  std::vector<std::uint32_t> thread, first, count;
+};
+}  // namespace soil_detail
+
 struct SoilStep::Impl {
   CellSortedSet sorted;  // the particles sorted by cell, and the cell list
   // index lists (sorted positions), rebuilt after every sort
@@ -36,6 +56,7 @@ struct SoilStep::Impl {
   std::vector<double> bxx, bxy, byy;  // corrected kernel gradient: B_i (symmetric)
   std::vector<double> block_a, block_b, block_c;
   soil_detail::Evaluators eval;
+  soil_detail::PairCache pairs;  // the Verlet step's pairs, from its kinematic pass to its forces pass
   double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
   double gravity_x = 0.0, gravity_y = 0.0;  // gravity of the current evaluation (ramped: at its time), m/s^2
   double load_factor = 0.0;                 // the fraction of the loads acting at that time (as of gravity)

@@ -3,6 +3,8 @@
 #include "step_impl.hpp"
 #include "terms.hpp"
 
+#include <omp.h>
+
 #include <cmath>
 
 namespace sph::soil_detail {
@@ -209,76 +211,111 @@ void corrected_momentum(std::size_t i, std::uint32_t j, const PairInputs& in, do
   momentum(in.mass[j], jxx, jyy, jxy, gj, sum.ax, sum.ay);
 }
 
-// Gathers the pair terms of particle i over its neighbours: the kinematic terms [C, L, X] when kRates, the forces
-// [AV, AS, M] when kForces (both: the combined evaluation, in the order its results were pinned with);
-// kCorrected: with the corrected kernel gradient (Settings::kernel_gradient).
+// The pair terms of particle i: the kinematic terms [C, L, X] when kRates, the forces [AV, AS, M] when kForces
+// (both: the combined evaluation, in the order its results were pinned with); kCorrected: with the corrected kernel
+// gradient (Settings::kernel_gradient). add() takes one neighbour within the support: x_ij, r_ij^2, r_ij and F(r_ij).
 template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces, bool kCorrected>
-PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, const CellList& cells) {
-  const double xi = in.x[i], yi = in.y[i], vxi = in.vx[i], vyi = in.vy[i], rhoi = in.rho[i], ci = in.snd[i];
-  [[maybe_unused]] const double pxxi = in.pxx[i], pyyi = in.pyy[i], pxyi = in.pxy[i];
-  [[maybe_unused]] double rxxi = 0, ryyi = 0, rxyi = 0;
-  if constexpr (kArtificialStress) {
-    rxxi = in.rxx[i]; ryyi = in.ryy[i]; rxyi = in.rxy[i];
+struct PairTerms {
+  const PairInputs& in;
+  const Kernel& kernel;
+  std::size_t i;
+  double xi, yi, vxi, vyi, rhoi, ci, pxxi, pyyi, pxyi, rxxi = 0, ryyi = 0, rxyi = 0;
+
+  PairTerms(std::size_t i_, const PairInputs& in_, const Kernel& kernel_)
+      : in(in_), kernel(kernel_), i(i_), xi(in_.x[i_]), yi(in_.y[i_]), vxi(in_.vx[i_]), vyi(in_.vy[i_]),
+        rhoi(in_.rho[i_]), ci(in_.snd[i_]), pxxi(in_.pxx[i_]), pyyi(in_.pyy[i_]), pxyi(in_.pxy[i_]) {
+    if constexpr (kArtificialStress) {
+      rxxi = in.rxx[i]; ryyi = in.ryy[i]; rxyi = in.rxy[i];
+    }
   }
+
+  void add(std::uint32_t j, double dx, double dy, double r2, double r, double F, PairSums& sum) const {
+    const PairGeometry g{dx, dy, r2, r, F * dx, F * dy};
+    const double dvx = vxi - in.vx[j], dvy = vyi - in.vy[j];  // v_i - v_j (a wall: its ghost velocity)
+    const double mj = in.mass[j];
+    const double rho_bar = mean_density(rhoi, in.rho[j]);
+    if constexpr (kCorrected) {
+      const PairGeometry gi = corrected(g, in.bxx[i], in.bxy[i], in.byy[i]);
+      if constexpr (kRates) {
+        sum.drho += continuity(mj, vxi - in.is_soil[j] * in.vx[j], vyi - in.is_soil[j] * in.vy[j], gi);
+        sum.gradient.add(in.vol[j], dvx, dvy, gi);
+      }
+      if constexpr (kForces) {
+        const double pi_ij = artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
+        const double fn = kArtificialStress ? artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n) : 0.0;
+        corrected_momentum<kArtificialStress>(i, j, in, pi_ij, fn, gi, corrected(g, in.bxx[j], in.bxy[j], in.byy[j]),
+                                              sum);
+      }
+    } else if constexpr (kRates) {
+      // [C] with the walls' own velocity (at rest): with the no-slip ghost velocity -v_avg here, a particle sliding
+      // down a wall next to the free surface, whose wall neighbours above see only it, lost density at a rate
+      // ~ 2 v |grad W| until it went negative (docs/stability.md).
+      sum.drho += continuity(mj, vxi - in.is_soil[j] * in.vx[j], vyi - in.is_soil[j] * in.vy[j], g);
+      sum.gradient.add(in.vol[j], dvx, dvy, g);
+    }
+    if constexpr (kForces && !kCorrected) {
+      const double pi_ij = artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
+      double txx = pxxi + in.pxx[j] - pi_ij;
+      double tyy = pyyi + in.pyy[j] - pi_ij;
+      double txy = pxyi + in.pxy[j];
+      if constexpr (kArtificialStress) {
+        const double fn = artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n);
+        txx += fn * (rxxi + in.rxx[j]);
+        tyy += fn * (ryyi + in.ryy[j]);
+        txy += fn * (rxyi + in.rxy[j]);
+      }
+      momentum(mj, txx, tyy, txy, g, sum.ax, sum.ay);
+    }
+    if constexpr (kXsph && kRates) {
+      const double wv = xsph_weight(mj, rho_bar, kernel.value(r));
+      sum.xsph_x -= wv * dvx;
+      sum.xsph_y -= wv * dvy;
+    }
+  }
+};
+
+// Gathers the pair terms of particle i over the candidates of its cell neighbourhood; with a buffer, records each
+// pair within the support in it (the Verlet step's kinematic pass, for its forces pass).
+template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces, bool kCorrected>
+PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, const CellList& cells,
+                   PairCache::Buffer* record) {
+  const PairTerms<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected> terms(i, in, kernel);
   PairSums sum;
   IndexRange ranges[3];
   const int nr = cells.candidate_ranges(i, ranges);
   for (int rr = 0; rr < nr; ++rr) {
     for (std::uint32_t j = ranges[rr].begin; j < ranges[rr].end; ++j) {
-      const double dx = xi - in.x[j], dy = yi - in.y[j];
+      const double dx = terms.xi - in.x[j], dy = terms.yi - in.y[j];
       const double r2 = dx * dx + dy * dy;
       if (r2 >= in.support2) continue;
       const double r = std::sqrt(r2);
       const double F = kernel.gradient_factor(r);
-      const PairGeometry g{dx, dy, r2, r, F * dx, F * dy};
-      const double dvx = vxi - in.vx[j], dvy = vyi - in.vy[j];  // v_i - v_j (a wall: its ghost velocity)
-      const double mj = in.mass[j];
-      const double rho_bar = mean_density(rhoi, in.rho[j]);
-      if constexpr (kCorrected) {
-        const PairGeometry gi = corrected(g, in.bxx[i], in.bxy[i], in.byy[i]);
-        if constexpr (kRates) {
-          sum.drho += continuity(mj, vxi - in.is_soil[j] * in.vx[j], vyi - in.is_soil[j] * in.vy[j], gi);
-          sum.gradient.add(in.vol[j], dvx, dvy, gi);
-        }
-        if constexpr (kForces) {
-          const double pi_ij =
-              artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
-          const double fn =
-              kArtificialStress ? artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n) : 0.0;
-          corrected_momentum<kArtificialStress>(i, j, in, pi_ij, fn, gi,
-                                                corrected(g, in.bxx[j], in.bxy[j], in.byy[j]), sum);
-        }
-      } else if constexpr (kRates) {
-        // [C] with the walls' own velocity (at rest): with the no-slip ghost velocity -v_avg here, a particle sliding
-        // down a wall next to the free surface, whose wall neighbours above see only it, lost density at a rate
-        // ~ 2 v |grad W| until it went negative (docs/stability.md).
-        sum.drho += continuity(mj, vxi - in.is_soil[j] * in.vx[j], vyi - in.is_soil[j] * in.vy[j], g);
-        sum.gradient.add(in.vol[j], dvx, dvy, g);
+      if (record) {
+        record->j.push_back(j);
+        record->r.push_back(r);
+        record->f.push_back(F);
       }
-      if constexpr (kForces && !kCorrected) {
-        const double pi_ij =
-            artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
-        double txx = pxxi + in.pxx[j] - pi_ij;
-        double tyy = pyyi + in.pyy[j] - pi_ij;
-        double txy = pxyi + in.pxy[j];
-        if constexpr (kArtificialStress) {
-          const double fn = artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n);
-          txx += fn * (rxxi + in.rxx[j]);
-          tyy += fn * (ryyi + in.ryy[j]);
-          txy += fn * (rxyi + in.rxy[j]);
-        }
-        momentum(mj, txx, tyy, txy, g, sum.ax, sum.ay);
-      }
-      if constexpr (kXsph && kRates) {
-        const double wv = xsph_weight(mj, rho_bar, kernel.value(r));
-        sum.xsph_x -= wv * dvx;
-        sum.xsph_y -= wv * dvy;
-      }
+      terms.add(j, dx, dy, r2, r, F, sum);
     }
   }
   return sum;
 }
 
+// The same sums over the `count` pairs recorded from `first` in a buffer.
+template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces, bool kCorrected>
+PairSums recorded_pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, const PairCache::Buffer& buffer,
+                            std::size_t first, std::size_t count) {
+  const PairTerms<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected> terms(i, in, kernel);
+  PairSums sum;
+  const std::uint32_t* js = buffer.j.data() + first;
+  const double *rs = buffer.r.data() + first, *fs = buffer.f.data() + first;
+  for (std::size_t m = 0; m < count; ++m) {
+    const std::uint32_t j = js[m];
+    const double dx = terms.xi - in.x[j], dy = terms.yi - in.y[j];
+    terms.add(j, dx, dy, dx * dx + dy * dy, rs[m], fs[m], sum);
+  }
+  return sum;
+}
 
 // The accelerations of the loads besides gravity (sph/soil/loads.hpp), at the evaluation's load factor: the seismic
 // body force, minus the pore-pressure gradient over the density, the surface forces over the mass.
@@ -335,11 +372,33 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   const CellList& cells = w.sorted.cells();
 
   const Index ns = static_cast<Index>(w.soil.size());
+  // The Verlet step's kinematic pass records its pairs; its forces pass reads them (PairCache).
+  constexpr bool kRecord = kRates && !kForces, kRecorded = kForces && !kRates;
+  PairCache& cache = w.pairs;
+  if constexpr (kRecord) {
+    cache.buffers.resize(static_cast<std::size_t>(omp_get_max_threads()));
+    for (auto& b : cache.buffers) b.clear();
+    for (auto* v : {&cache.thread, &cache.first, &cache.count}) v->resize(w.soil.size());
+  }
 #pragma omp parallel for schedule(dynamic, 256)  // gather per particle: results do not depend on the schedule
   for (Index k = 0; k < ns; ++k) {
     const std::size_t i = w.soil[static_cast<std::size_t>(k)];
-    const PairSums sum =
-        pair_sums<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected>(i, in, kernel, cells);
+    const auto kk = static_cast<std::size_t>(k);
+    PairSums sum;
+    if constexpr (kRecorded) {
+      sum = recorded_pair_sums<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected>(
+          i, in, kernel, cache.buffers[cache.thread[kk]], cache.first[kk], cache.count[kk]);
+    } else if constexpr (kRecord) {
+      const auto t = static_cast<std::size_t>(omp_get_thread_num());
+      PairCache::Buffer& buffer = cache.buffers[t];
+      const std::size_t first = buffer.j.size();
+      sum = pair_sums<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected>(i, in, kernel, cells, &buffer);
+      cache.thread[kk] = static_cast<std::uint32_t>(t);
+      cache.first[kk] = static_cast<std::uint32_t>(first);
+      cache.count[kk] = static_cast<std::uint32_t>(buffer.j.size() - first);
+    } else {
+      sum = pair_sums<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected>(i, in, kernel, cells, nullptr);
+    }
     if constexpr (kForces) {
       const double vxi = p.vx[i], vyi = p.vy[i];
       sa.ax[i] = sum.ax + gx - damping * vxi;

@@ -36,6 +36,12 @@ struct MaterialConstants {
   double sound_speed = 0;    // P-wave speed sqrt((K + 4G/3)/rho)
   double k0 = 0;             // geostatic sigma_h / sigma_v
   bool plastic = true;
+  // Derived once, with the expressions the functions below would evaluate at every call (so bitwise the same):
+  double lambda_denominator = 0;         // 9 alpha_phi alpha_psi K + G
+  double plastic_strain_per_lambda = 0;  // sqrt(2 alpha_psi^2 + 1/3)
+  double half_inv_shear = 0;             // 0.5 / G
+  double inv_9_bulk = 0;                 // 1 / (9 K)
+  double apex_i1 = 0;                    // k_c / alpha_phi, the I1 of the apex (alpha_phi > 0)
 
   static MaterialConstants from(const Material& m);
 };
@@ -91,8 +97,7 @@ inline StressRate stress_rate(const MaterialConstants& mc, const Stress& s, doub
   const double tol = 1e-8 * (std::fabs(mc.alpha_phi * I1) + sqrtJ2 + std::fabs(mc.k_c)) + 1e-300;
   if (mc.plastic && f >= -tol && sqrtJ2 > 0.0) {
     const double s_dot_e = dxx * exx + dyy * eyy + 2.0 * s.xy * exy;
-    const double lambda =
-        (3.0 * mc.alpha_phi * K * ekk + (G / sqrtJ2) * s_dot_e) / (9.0 * mc.alpha_phi * mc.alpha_psi * K + G);
+    const double lambda = (3.0 * mc.alpha_phi * K * ekk + (G / sqrtJ2) * s_dot_e) / mc.lambda_denominator;
     if (lambda > 0.0) {
       const double iso = 3.0 * mc.alpha_psi * K * lambda;
       const double dev = G / sqrtJ2 * lambda;
@@ -102,7 +107,7 @@ inline StressRate stress_rate(const MaterialConstants& mc, const Stress& s, doub
       out.rate.xy -= dev * s.xy;
       out.plastic_multiplier = lambda;
       // eps_p_dot = lambda (alpha_psi I + s/(2 sqrt J2)) => |.|^2 = lambda^2 (3 alpha_psi^2 + 1/2)
-      out.plastic_strain_rate = lambda * std::sqrt(2.0 * mc.alpha_psi * mc.alpha_psi + 1.0 / 3.0);
+      out.plastic_strain_rate = lambda * mc.plastic_strain_per_lambda;
       out.plastic_work_rate = lambda * (mc.alpha_psi * I1 + sqrtJ2);
     }
   }
@@ -156,7 +161,7 @@ inline ReturnResult return_to_yield_surface(const MaterialConstants& mc, Stress&
   const Stress start = step_start ? *step_start : s;
   double I1 = s.xx + s.yy + s.zz;
   if (mc.alpha_phi > 0.0 && mc.alpha_phi * I1 - mc.k_c > 0.0) {
-    const double shift = (I1 - mc.k_c / mc.alpha_phi) / 3.0;
+    const double shift = (I1 - mc.apex_i1) / 3.0;
     s.xx -= shift;
     s.yy -= shift;
     s.zz -= shift;
@@ -179,7 +184,7 @@ inline ReturnResult return_to_yield_surface(const MaterialConstants& mc, Stress&
     const double d_xx = s.xx - before.xx, d_yy = s.yy - before.yy, d_zz = s.zz - before.zz, d_xy = s.xy - before.xy;
     const double dI1 = d_xx + d_yy + d_zz;
     const double dp = dI1 / 3.0;
-    const double inv2G = 0.5 / mc.shear_modulus, inv9K = 1.0 / (9.0 * mc.bulk_modulus);
+    const double inv2G = mc.half_inv_shear, inv9K = mc.inv_9_bulk;
     const double exx = -((d_xx - dp) * inv2G + dI1 * inv9K);
     const double eyy = -((d_yy - dp) * inv2G + dI1 * inv9K);
     const double ezz = -((d_zz - dp) * inv2G + dI1 * inv9K);
