@@ -204,6 +204,7 @@ std::optional<long> read_section_walls(JsonReader& r, SphAnalysis& a) {
 void read_run_limits(JsonReader& r, SphAnalysis& a) {
   sph::Settings& s = a.settings;
   s.cfl = r.number_or("cfl", sph::default_cfl(s.integration), Bounds{0.0, false, sph::max_cfl(s.integration), true});
+  s.stress_substeps = sph::default_stress_substeps(s.integration);
   if (const auto n = r.integer("stress_substeps", Need::optional, Bounds::closed(1, 64))) {
     s.stress_substeps = static_cast<int>(*n);
     if (*n > 1 && s.integration != sph::TimeIntegration::verlet)

@@ -13,8 +13,10 @@
 namespace sph {
 
 double default_cfl(TimeIntegration integration) {
-  return integration == TimeIntegration::verlet ? 1.0 : 0.2;
+  return integration == TimeIntegration::verlet ? 0.8 : 0.2;
 }
+
+int default_stress_substeps(TimeIntegration integration) { return integration == TimeIntegration::verlet ? 16 : 1; }
 
 double max_cfl(TimeIntegration integration) { return integration == TimeIntegration::verlet ? 1.6 : 0.5; }
 
@@ -103,7 +105,9 @@ std::size_t estimate_memory_bytes(std::size_t n) {
   const std::size_t workspace = n * (2 * workspace_doubles + 11) * sizeof(double)  // half-step values (+ back), scratch
                                 + n * 2 * sizeof(std::uint32_t);  // index lists, moved list
   const std::size_t output = n * (per_particle_state + 200);  // checkpoint buffer, VTU buffer
-  return state + workspace + CellList::estimate_bytes(n) + output + (std::size_t{1} << 20);
+  // the Verlet step's recorded pairs: about 30 per particle (Wendland at h = 1.3 dx) of j, r and F, and 3 indices
+  const std::size_t pairs = n * (30 * (sizeof(std::uint32_t) + 2 * sizeof(double)) + 3 * sizeof(std::uint32_t));
+  return state + workspace + CellList::estimate_bytes(n) + output + pairs + (std::size_t{1} << 20);
 }
 
 }  // namespace sph
