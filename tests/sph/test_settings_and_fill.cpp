@@ -59,5 +59,8 @@ TEST_CASE("time-step estimate equals the stepper's bound at rest", "[sph][settin
   sph::add_soil(m.particles, sph::lattice_points_in_region(0, 0, 1, 1, 0.1, [](double, double) { return true; }), 0.1, 0,
                 m.materials[0].density);
   const double c = sph::MaterialConstants::from(m.materials[0]).sound_speed;
+  // the default cfl 0.8 (Verlet), h = 1.2 dx, alpha = 0.1
+  CHECK(sph::time_step_estimate(m) == Approx(0.8 * 0.12 / (c * 1.12)).epsilon(1e-12));
+  m.settings.use_integration(sph::TimeIntegration::predictor_corrector);
   CHECK(sph::time_step_estimate(m) == Approx(0.2 * 0.12 / (c * 1.12)).epsilon(1e-12));
 }
