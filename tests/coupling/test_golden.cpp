@@ -432,30 +432,31 @@ TEST_CASE("golden: SPH thesis slope 2 coarse (default options)", "[golden][sph]"
   check_sph_golden({"sph_thesis_slope2.txt", "thesis_slope2.json", {{"particle_spacing_m", 0.5}}, 400});
 }
 
-// The options of the predictor-corrector golden below with the default sub-stepped Verlet step (the pairs recorded
-// by its kinematic pass carry the artificial stress and XSPH terms too).
+namespace {
+// The coarse column collapse with the Wendland kernel, XSPH and artificial stress on (off by default for this
+// cohesionless material), free-slip walls and a longer smoothing length.
+nlohmann::json column_collapse_options() {
+  return {{"particle_spacing_m", 0.00625},
+          {"kernel", "wendland_c2"},
+          {"smoothing_length_ratio", 1.3},
+          {"xsph", 0.5},
+          {"artificial_stress", {{"mode", "on"}}},
+          {"walls", {{"slip", "free_slip"}}}};
+}
+}  // namespace
+
+// Those options with the default sub-stepped Verlet step (the pairs recorded by its kinematic pass carry the
+// artificial stress and XSPH terms too).
 TEST_CASE("golden: SPH column collapse coarse (verlet + Wendland + XSPH + artificial stress + free slip)",
           "[golden][sph]") {
-  const nlohmann::json patch = {{"particle_spacing_m", 0.00625},
-                                {"kernel", "wendland_c2"},
-                                {"smoothing_length_ratio", 1.3},
-                                {"xsph", 0.5},
-                                {"artificial_stress", {{"mode", "on"}}},
-                                {"walls", {{"slip", "free_slip"}}}};
-  check_sph_golden({"sph_column_collapse_verlet_wendland_xsph_stress.txt", "bui2008_column_collapse.json", patch, 300});
+  check_sph_golden({"sph_column_collapse_verlet_wendland_xsph_stress.txt", "bui2008_column_collapse.json",
+                    column_collapse_options(), 300});
 }
 
-// Wendland kernel, XSPH and artificial stress on (off by default for this cohesionless material), free-slip
-// walls and a longer smoothing length; with the predictor-corrector (the default until 2026-11-28), which keeps
-// its results pinned.
+// The same options with the predictor-corrector (the default until 2026-11-28), which keeps its results pinned.
 TEST_CASE("golden: SPH column collapse coarse (Wendland + XSPH + artificial stress + free slip)", "[golden][sph]") {
-  const nlohmann::json patch = {{"particle_spacing_m", 0.00625},
-                                {"time_integration", "predictor_corrector"},
-                                {"kernel", "wendland_c2"},
-                                {"smoothing_length_ratio", 1.3},
-                                {"xsph", 0.5},
-                                {"artificial_stress", {{"mode", "on"}}},
-                                {"walls", {{"slip", "free_slip"}}}};
+  nlohmann::json patch = column_collapse_options();
+  patch["time_integration"] = "predictor_corrector";
   check_sph_golden({"sph_column_collapse_wendland_xsph_stress.txt", "bui2008_column_collapse.json", patch, 500});
 }
 
