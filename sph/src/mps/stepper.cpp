@@ -130,7 +130,7 @@ void Step::list_neighbours() {
   }
   const double re = model_.settings.effective_radius();
   impl_->list.build_from(impl_->candidates, model_.particles, re,
-                         [re](double r2) { return terms::weight(std::sqrt(r2), re); });
+                         [re](double r2) { return terms::weight_within_support(r2, re); });
 }
 
 void Step::initialise() {

@@ -134,12 +134,46 @@ void for_each_listed_neighbour(const NeighbourList& list, const ParticleSet& set
   }
 }
 
+// One OpenMP pass: each particle's candidates are compacted without a branch (every candidate is written, the count
+// advances for those within `radius`), their squared distances kept in the value slots, and then turned into the
+// pairs' values by a second, branch-free loop over the slots that the compiler can vectorise (pair_value should then
+// be branch-free too: every r2 it sees is below radius^2). The room per particle is at least the wider list's, so
+// every candidate fits.
 template <class PairValue>
 void NeighbourList::build_from(const NeighbourList& wider, const ParticleSet& set, double radius,
                                PairValue&& pair_value) {
-  fill(set.size(), radius, pair_value, [&](std::size_t i, auto&& emit) {
-    for_each_listed_neighbour(wider, set, i, radius, [&](std::size_t j, double, double, double r2) { emit(j, r2); });
-  });
+  radius_ = radius;
+  stride_ = std::max({stride_, wider.stride_, initial_stride});
+  const std::size_t particles = set.size();
+  count_.resize(particles);
+  j_.resize(particles * stride_);
+  value_.resize(with_values_ ? particles * stride_ : 0);
+  const std::size_t room = stride_;
+  const bool values = with_values_;
+  const double r2_max = radius * radius;
+  const double* x = set.x.data();
+  const double* y = set.y.data();
+  const auto n = static_cast<std::int64_t>(particles);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const std::uint32_t* candidate = wider.neighbours(i);
+    const std::size_t m = wider.count(i);
+    std::uint32_t* out = j_.data() + i * room;
+    double* value = values ? value_.data() + i * room : nullptr;
+    const double xi = x[i], yi = y[i];
+    std::size_t c = 0;
+    for (std::size_t q = 0; q < m; ++q) {
+      const std::uint32_t j = candidate[q];
+      const double dx = xi - x[j], dy = yi - y[j], r2 = dx * dx + dy * dy;
+      out[c] = j;
+      if (values) value[c] = r2;
+      c += r2 < r2_max ? 1 : 0;
+    }
+    count_[i] = static_cast<std::uint32_t>(c);
+    if (values)
+      for (std::size_t q = 0; q < c; ++q) value[q] = pair_value(value[q]);
+  }
 }
 
 }  // namespace sph

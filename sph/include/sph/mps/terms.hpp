@@ -20,6 +20,14 @@ inline double weight(double r, double re) {
   return s * s * s;
 }
 
+// weight(sqrt(r2), re) for a pair already known to lie within the support (r2 < r_e^2, the neighbour list's filter),
+// without weight's branch, so that a loop over a particle's pairs can be vectorised: the same operations in the
+// same order, so the same value bit for bit wherever sqrt(r2) < r_e.
+inline double weight_within_support(double r2, double re) {
+  const double s = 1.0 - std::sqrt(r2) / re;
+  return s * s * s;
+}
+
 // [M2] eq. 6: the particle number density n_i = sum_{j != i} w_ij; this is the pair's share.
 inline double number_density_share(double w) { return w; }
 
