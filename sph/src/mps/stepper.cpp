@@ -34,6 +34,7 @@ struct Step::Impl {
   bool candidates_listed = false;
   std::uint64_t listings = 0;
   NeighbourList list;  // the pairs within r_e at the current positions, with w_ij
+  std::vector<std::uint8_t> near_fixed;  // 1 where a candidate is a wall, dummy or gate particle (at the listing)
   FieldId x_start = 0, y_start = 0;  // r^m during a step [m] (workspace, reordered with the set)
   std::vector<double> fx, fy;  // the non-pressure forces of the predictor [N/m^3]
   std::vector<double> weight_above;  // the hydrostatic p' of every particle [Pa] (effective_pressure hydrostatic)
@@ -85,11 +86,30 @@ void Step::list_candidates() {
   const double radius = model_.settings.effective_radius() + skin();
   impl_->sorted.sort(p, radius);
   impl_->candidates.build(impl_->sorted, p, radius, [](double) { return 0.0; });
+  near_fixed_particles();
   impl_->candidates_listed = true;
   ++impl_->listings;
 }
 
 std::uint64_t Step::candidate_listings() const { return impl_->listings; }
+
+// Marks each particle with a wall, dummy or gate particle among its candidates: the others cannot touch a wall
+// before the next listing (collide_with_walls skips them).
+void Step::near_fixed_particles() {
+  const ParticleSet& p = model_.particles;
+  const NeighbourList& c = impl_->candidates;
+  impl_->near_fixed.resize(p.size());
+  const auto n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const std::uint32_t* j = c.neighbours(i);
+    const std::size_t count = c.count(i);
+    std::uint8_t near = 0;
+    for (std::size_t q = 0; q < count; ++q) near |= p.kind[j[q]] != kMoving ? 1 : 0;
+    impl_->near_fixed[i] = near;
+  }
+}
 
 // A resumed run: the set is in the order of the sort at the stored listing positions, so sorting at those
 // positions again keeps the order (the sort is stable) and the candidates come out as they were.
@@ -120,8 +140,9 @@ bool Step::moved_beyond_half_skin() const {
 
 // The pairs within r_e at the current positions with w_ij, from the candidates (listed again when needed): the
 // passes until the next call read them (the wall collision reads them after the corrector's small move: a pair
-// closer than d_c < r_e then was within r_e at r*).
-void Step::list_neighbours() {
+// closer than d_c < r_e then was within r_e at r*). With number_density, each particle's n_i = sum w_ij [M2] summed
+// in list order as the weights are computed (the sum number_densities would give, bit for bit).
+void Step::list_neighbours(double* number_density) {
   if (!impl_->candidates_listed || moved_beyond_half_skin()) {
     list_candidates();
     ParticleSet& p = model_.particles;
@@ -130,7 +151,7 @@ void Step::list_neighbours() {
   }
   const double re = model_.settings.effective_radius();
   impl_->list.build_from(impl_->candidates, model_.particles, re,
-                         [re](double r2) { return terms::weight_within_support(r2, re); });
+                         [re](double r2) { return terms::weight_within_support(r2, re); }, number_density);
 }
 
 void Step::initialise() {
@@ -353,16 +374,14 @@ void Step::predict(double dt) {
   }
 }
 
-// Step f at r*: n*, p^{m+1} from Tait's EOS with the free-surface rule (moving and wall particles), clipped at 0,
-// 0 for dummy particles; the density rho0 n*/n0 for the frames.
+// Step f at r*: p^{m+1} from n* (summed by list_neighbours at r*) by Tait's EOS with the free-surface rule (moving
+// and wall particles), clipped at 0, 0 for dummy particles; the density rho0 n*/n0 for the frames.
 void Step::equation_of_state() {
   ParticleSet& p = model_.particles;
   const Arrays a = model_.arrays();
   const Settings& st = model_.settings;
-  const Neighbourhood nb = neighbourhood();
   const double* dummy = p.field(model_.dummy).data();
   const double n0 = lattice_.n0;
-  number_densities(nb, a.number_density);
   mixture_densities();
   const auto count = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
@@ -462,7 +481,7 @@ void Step::collide_with_walls(double dt) {
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {  // a particle writes only its own state and reads the fixed walls'
     const auto i = static_cast<std::size_t>(k);
-    if (p.kind[i] != kMoving) continue;
+    if (p.kind[i] != kMoving || !impl_->near_fixed[i]) continue;
     double vx = p.vx[i], vy = p.vy[i];
     for_each_within(nb, i, dc, [&](std::size_t j, double dx, double dy, double r2) {
       if (p.kind[j] == kMoving || r2 == 0.0) return;  // for_each_within passes r2 < d_c^2 only
@@ -484,7 +503,7 @@ void Step::advance(double dt) {
   list_neighbours();
   viscosities();
   predict(dt);
-  list_neighbours();
+  list_neighbours(model_.arrays().number_density);  // n* summed with the weights at r*
   equation_of_state();
   correct(dt);
   collide_with_walls(dt);

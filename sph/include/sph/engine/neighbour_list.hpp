@@ -35,8 +35,11 @@ class NeighbourList {
   // The pairs of `wider` (a list of a larger radius, built at earlier positions of the same set in the same order)
   // that lie closer than `radius` at the set's current positions, in the wider list's order, with pair_value(r2).
   // Complete while no particle has moved more than half the difference of the two radii since `wider` was built.
+  // With value_sums, value_sums[i] = the sum of particle i's pair values added in list order from 0 (e.g. the MPS
+  // number density, summed while the values are in cache).
   template <class PairValue>
-  void build_from(const NeighbourList& wider, const ParticleSet& set, double radius, PairValue&& pair_value);
+  void build_from(const NeighbourList& wider, const ParticleSet& set, double radius, PairValue&& pair_value,
+                  double* value_sums = nullptr);
 
   double radius() const { return radius_; }
   std::size_t particles() const { return count_.size(); }
@@ -141,7 +144,7 @@ void for_each_listed_neighbour(const NeighbourList& list, const ParticleSet& set
 // every candidate fits.
 template <class PairValue>
 void NeighbourList::build_from(const NeighbourList& wider, const ParticleSet& set, double radius,
-                               PairValue&& pair_value) {
+                               PairValue&& pair_value, double* value_sums) {
   radius_ = radius;
   stride_ = std::max({stride_, wider.stride_, initial_stride});
   const std::size_t particles = set.size();
@@ -171,8 +174,12 @@ void NeighbourList::build_from(const NeighbourList& wider, const ParticleSet& se
       c += r2 < r2_max ? 1 : 0;
     }
     count_[i] = static_cast<std::uint32_t>(c);
-    if (values)
-      for (std::size_t q = 0; q < c; ++q) value[q] = pair_value(value[q]);
+    if (!values) continue;
+    for (std::size_t q = 0; q < c; ++q) value[q] = pair_value(value[q]);
+    if (!value_sums) continue;
+    double sum = 0;
+    for (std::size_t q = 0; q < c; ++q) sum += value[q];
+    value_sums[i] = sum;
   }
 }
 

@@ -59,8 +59,9 @@ class Step : public Stepper {
 
  private:
   Neighbourhood neighbourhood() const;
-  void list_neighbours();
+  void list_neighbours(double* number_density = nullptr);
   void list_candidates();
+  void near_fixed_particles();
   void relist_candidates_at_stored_positions();
   bool moved_beyond_half_skin() const;
   double skin() const;
