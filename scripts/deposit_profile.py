@@ -17,6 +17,11 @@ mean position, height and x-velocity and how many of them carry no stress (the f
 With --region, for a WC-MPS run: the grains that start in the box X0 < x < X1, Y0 < y < Y1 [m] followed through
 every frame: their mean viscosity [Pa s], mean p' (smoothed_pressure) [Pa] and mean displacement [mm]:
        scripts/deposit_profile.py --region X0 X1 Y0 Y1 RUN_DIR
+
+With --unyielded, for a WC-MPS run: in every frame and in bins of x WIDTH [m] wide, the top of the material and the
+lowest and highest grain whose viscosity is at least MU [Pa s] (unyielded: at or near the viscosity cap) [m], and
+the grains above the highest unyielded one that are yielded (the shape of the unyielded zone, seed Fig. 14):
+       scripts/deposit_profile.py --unyielded MU WIDTH RUN_DIR
 """
 import json
 import glob
@@ -146,7 +151,34 @@ def track_region(run, box):
             1000 * sum(a["displacement"][k][0] for k in rows) / n, 1000 * sum(a["displacement"][k][1] for k in rows) / n))
 
 
+def unyielded_zone(run, mu_min, width):
+    """Per frame and x bin: the material's top, the unyielded grains' (viscosity >= mu_min) lowest and highest centre
+    and how many yielded grains lie above the highest unyielded one [m]."""
+    for frame in run_frames(run):
+        a = read_vtu(frame, ("Points", "kind", "viscosity"))
+        bins = {}
+        for p, k, mu in zip(a["Points"], a["kind"], a["viscosity"]):
+            if k == 0:
+                bins.setdefault(int(p[0] // width), []).append((p[1], mu))
+        print("t = %.2f s: x bin (m): top of the material / unyielded from .. to (m) / yielded grains above it" %
+              frame_time(frame))
+        cells = []
+        for b in sorted(bins):
+            ys = bins[b]
+            top = max(y for y, _ in ys)
+            rigid = [y for y, mu in ys if mu >= mu_min]
+            if rigid:
+                above = sum(1 for y, mu in ys if y > max(rigid) and mu < mu_min)
+                cells.append("%.3f: %.3f / %.3f..%.3f / %d" % (b * width, top, min(rigid), max(rigid), above))
+            else:
+                cells.append("%.3f: %.3f / none" % (b * width, top))
+        print("  " + "; ".join(cells))
+
+
 def main():
+    if len(sys.argv) == 5 and sys.argv[1] == "--unyielded":
+        unyielded_zone(sys.argv[4], float(sys.argv[2]), float(sys.argv[3]))
+        return
     if len(sys.argv) == 7 and sys.argv[1] == "--region":
         track_region(sys.argv[6], tuple(float(v) for v in sys.argv[2:6]))
         return
