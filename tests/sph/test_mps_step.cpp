@@ -458,4 +458,15 @@ TEST_CASE("MPS dry collapse: an unyielded zone in the bottom corner under a yiel
   CHECK(c.top_unyielded[1] == Approx(c.top_unyielded[0]).margin(0.25 * st.particle_spacing));
   CHECK(c.top_unyielded[4] < c.top_unyielded[0] - st.particle_spacing);
   for (std::size_t b = 7; b < c.top.size(); ++b) CHECK(c.top_unyielded[b] < 0);
+  // the frames carry log10 of the viscosity (issue 12: "viscosity (log)"), the cap at log10(200) = 2.30
+  const std::vector<sph::DerivedField> derived = step.derived_outputs();
+  REQUIRE(derived.size() == 1);
+  CHECK(derived[0].name == "log10_viscosity");
+  REQUIRE(derived[0].values.size() == model.particles.size());
+  const double* mu = model.particles.field(model.fields.viscosity).data();
+  std::size_t wrong = 0;
+  for (std::size_t i = 0; i < model.particles.size(); ++i)
+    if (!(derived[0].values[i] == std::log10(mu[i]))) ++wrong;
+  CHECK(wrong == 0);
+  CHECK(*std::max_element(derived[0].values.begin(), derived[0].values.end()) == Approx(std::log10(cap)));
 }

@@ -538,6 +538,14 @@ double Step::stable_time_step() const {
   return terms::time_step(st.cfl, st.particle_spacing, st.sound_speed, std::sqrt(u2), rho0, mu_max);
 }
 
+std::vector<DerivedField> Step::derived_outputs() const {
+  const ParticleSet& p = model_.particles;
+  const double* mu = p.field(model_.fields.viscosity).data();
+  DerivedField log_mu{"log10_viscosity", std::vector<double>(p.size())};
+  for (std::size_t i = 0; i < p.size(); ++i) log_mu.values[i] = std::log10(mu[i]);
+  return {log_mu};
+}
+
 Energies Step::energies() const { return moving_energies(model_.particles, model_.settings); }
 
 Health Step::check_health() const {

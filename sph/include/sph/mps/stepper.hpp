@@ -50,6 +50,9 @@ class Step : public Stepper {
   void advance(double dt) override;
   Energies energies() const override;
   Health check_health() const override;
+  // log10_viscosity = log10 of each particle's viscosity [log10(Pa s)] for the frames (a viscosity spanning orders of
+  // magnitude, seed Fig. 14); -inf where the viscosity is 0.
+  std::vector<DerivedField> derived_outputs() const override;
 
   const LatticeConstants& lattice() const { return lattice_; }
   // How often the candidates were listed (each time after a sort) since this stepper was made.
