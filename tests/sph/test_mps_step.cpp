@@ -316,6 +316,36 @@ TEST_CASE("MPS resumed between two listings of the neighbour candidates ends bit
   fs::remove_all(dir);
 }
 
+TEST_CASE("MPS n* of every step is the sum of the weights at r*, also in the steps that list the candidates again",
+          "[mps]") {
+  // The number density n* is summed while the pairs at r* are listed. A step that lists the candidates again first
+  // sorts the set, which reorders the fields and may move their storage: n* must land in the field as it is after
+  // the sort. (Written into the storage from before the sort, the steps with a sort used the previous step's n*, and
+  // the 2.5 mm dry collapse ended 0.35 mm further out; the goldens, too short to list the candidates twice, passed.)
+  sph::mps::Model model = water_dam_break();
+  sph::mps::Step step(model);
+  step.initialise();
+  const double* n = nullptr;
+  std::size_t wrong = 0, steps_with_sort = 0;
+  for (int k = 0; k < 900; ++k) {
+    const std::uint64_t before = step.candidate_listings();
+    step.advance(step.stable_time_step());
+    if (step.candidate_listings() > before) ++steps_with_sort;
+    n = model.particles.field(model.fields.number_density).data();
+    const sph::NeighbourList& pairs = step.pairs_at_predicted_positions();
+    for (std::size_t i = 0; i < model.particles.size(); ++i) {
+      double sum = 0;
+      for (std::size_t q = 0; q < pairs.count(i); ++q) sum += pairs.values(i)[q];
+      if (!(n[i] == sum)) ++wrong;
+    }
+  }
+  INFO("steps that listed the candidates again: " << steps_with_sort);
+  // measured 16 in 900 steps (a sort may come at r^m or at r*; with the storage from before the sort the check
+  // failed for 1575 particle-steps of these 900 steps, and passed over the first 300)
+  REQUIRE(steps_with_sort >= 8);
+  CHECK(wrong == 0);
+}
+
 namespace {
 
 struct GateRun {

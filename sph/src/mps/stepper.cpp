@@ -93,6 +93,8 @@ void Step::list_candidates() {
 
 std::uint64_t Step::candidate_listings() const { return impl_->listings; }
 
+const NeighbourList& Step::pairs_at_predicted_positions() const { return impl_->list; }
+
 // Marks each particle with a wall, dummy or gate particle among its candidates: the others cannot touch a wall
 // before the next listing (collide_with_walls skips them).
 void Step::near_fixed_particles() {
@@ -141,17 +143,19 @@ bool Step::moved_beyond_half_skin() const {
 // The pairs within r_e at the current positions with w_ij, from the candidates (listed again when needed): the
 // passes until the next call read them (the wall collision reads them after the corrector's small move: a pair
 // closer than d_c < r_e then was within r_e at r*). With number_density, each particle's n_i = sum w_ij [M2] summed
-// in list order as the weights are computed (the sum number_densities would give, bit for bit).
-void Step::list_neighbours(double* number_density) {
+// in list order as the weights are computed (the sum number_densities would give, bit for bit) into the field
+// number_density, whose storage is taken after the sort: a sort reorders the fields and may move them.
+void Step::list_neighbours(bool number_density) {
   if (!impl_->candidates_listed || moved_beyond_half_skin()) {
     list_candidates();
     ParticleSet& p = model_.particles;
     p.field(model_.fields.x_listed) = p.x;
     p.field(model_.fields.y_listed) = p.y;
   }
+  double* const sums = number_density ? model_.arrays().number_density : nullptr;
   const double re = model_.settings.effective_radius();
   impl_->list.build_from(impl_->candidates, model_.particles, re,
-                         [re](double r2) { return terms::weight_within_support(r2, re); }, number_density);
+                         [re](double r2) { return terms::weight_within_support(r2, re); }, sums);
 }
 
 void Step::initialise() {
@@ -503,7 +507,7 @@ void Step::advance(double dt) {
   list_neighbours();
   viscosities();
   predict(dt);
-  list_neighbours(model_.arrays().number_density);  // n* summed with the weights at r*
+  list_neighbours(true);  // n* summed with the weights at r*
   equation_of_state();
   correct(dt);
   collide_with_walls(dt);

@@ -57,12 +57,15 @@ class Step : public Stepper {
   const LatticeConstants& lattice() const { return lattice_; }
   // How often the candidates were listed (each time after a sort) since this stepper was made.
   std::uint64_t candidate_listings() const;
+  // The pairs within r_e with their weights w_ij as the last step left them: listed at r*, in the particles' order
+  // (for checks: n* of the step is each particle's sum of them).
+  const NeighbourList& pairs_at_predicted_positions() const;
 
   struct Impl;
 
  private:
   Neighbourhood neighbourhood() const;
-  void list_neighbours(double* number_density = nullptr);
+  void list_neighbours(bool number_density = false);
   void list_candidates();
   void near_fixed_particles();
   void relist_candidates_at_stored_positions();
