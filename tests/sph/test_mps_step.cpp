@@ -325,13 +325,12 @@ TEST_CASE("MPS n* of every step is the sum of the weights at r*, also in the ste
   sph::mps::Model model = water_dam_break();
   sph::mps::Step step(model);
   step.initialise();
-  const double* n = nullptr;
   std::size_t wrong = 0, steps_with_sort = 0;
   for (int k = 0; k < 900; ++k) {
     const std::uint64_t before = step.candidate_listings();
     step.advance(step.stable_time_step());
     if (step.candidate_listings() > before) ++steps_with_sort;
-    n = model.particles.field(model.fields.number_density).data();
+    const double* n = model.particles.field(model.fields.number_density).data();
     const sph::NeighbourList& pairs = step.pairs_at_predicted_positions();
     for (std::size_t i = 0; i < model.particles.size(); ++i) {
       double sum = 0;
