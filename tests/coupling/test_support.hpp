@@ -39,7 +39,7 @@ inline nlohmann::json read_json(const std::filesystem::path& file) {
 }
 
 // Every null (or non-finite number) of the report that its object does not explain: a null is explained when the
-// same object holds "error" or "<key>_error" (e.g. factor_of_safety: null next to error), or for
+// same object holds a non-empty "error" or "<key>_error" (e.g. factor_of_safety: null next to error), or for
 // lem.settings.minimum_depth_m (null = automatic, documented).
 inline void unexplained_nulls(const nlohmann::json& value, const std::string& path, const nlohmann::json* parent,
                               const std::string& key, std::vector<std::string>& found) {
@@ -50,7 +50,11 @@ inline void unexplained_nulls(const nlohmann::json& value, const std::string& pa
     for (std::size_t i = 0; i < value.size(); ++i)
       unexplained_nulls(value[i], path + "[" + std::to_string(i) + "]", parent, key, found);
   } else if (value.is_null()) {
-    const bool explained = (parent && (parent->contains("error") || parent->contains(key + "_error"))) ||
+    // a reason is a non-empty string
+    const auto reason = [&](const std::string& name) {
+      return parent->contains(name) && (*parent)[name].is_string() && !(*parent)[name].get<std::string>().empty();
+    };
+    const bool explained = (parent && (reason("error") || reason(key + "_error"))) ||
                            path.ends_with("settings.minimum_depth_m");
     if (!explained) found.push_back(path);
   } else if (value.is_number_float() && !std::isfinite(value.get<double>())) {

@@ -7,6 +7,7 @@
 
 #include "coupling/analyses/sph_model.hpp"
 #include "coupling/analyses/stage.hpp"
+#include "coupling/output/json_text.hpp"
 #include "coupling/output/report.hpp"
 #include "coupling/output/report_html.hpp"
 #include "coupling/output/run_figures.hpp"
@@ -69,7 +70,20 @@ void write_run_figures(const Scene& scene, StageContext& context, std::vector<st
   }
 }
 
+// A number the stages left NaN or infinite (where no null is documented) fails the run, naming the key; the report
+// is still written, with null there, so that the reason is in it.
+void refuse_non_finite_numbers(WorkflowResult& out) {
+  const std::vector<std::string> bad = null_non_finite_numbers(out.report);
+  if (bad.empty()) return;
+  const std::string why = std::string("report.json: ") + NonFiniteNumber(bad).what();
+  out.status = ExitStatus::failed;
+  out.errors.push_back(why);
+  out.report["status"] = "failed";
+  out.report["errors"].push_back(why);
+}
+
 void write_report(const Scene& scene, const std::filesystem::path& dir, WorkflowResult& out) {
+  refuse_non_finite_numbers(out);
   try {
     std::filesystem::create_directories(dir);
     const std::filesystem::path file = dir / "report.json";

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "sph/engine/atomic_file.hpp"
+#include "coupling/output/json_text.hpp"
 
 namespace coupling {
 
@@ -96,7 +97,7 @@ void SrmJournal::write() const {
                                   {"fingerprint", fingerprint_},
                                   {"trials", std::move(trials)},
                                   {"in_progress_factor", in_progress_ ? nlohmann::json(*in_progress_) : nullptr}};
-  sph::write_file_atomically(file_, journal.dump(1) + "\n");
+  sph::write_file_atomically(file_, json_text(journal, 1));
 }
 
 }  // namespace coupling

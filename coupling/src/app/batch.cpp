@@ -22,6 +22,7 @@
 
 #include "coupling/output/batch_summary.hpp"
 #include "sph/engine/atomic_file.hpp"
+#include "coupling/output/json_text.hpp"
 
 extern char** environ;
 
@@ -303,7 +304,7 @@ int run_batch(const BatchOptions& options) {
                                   {"exit_status", status},
                                   {"interrupted", interrupted},
                                   {"scenes", rows}};
-  sph::write_file_atomically(options.output_dir / "summary.json", summary.dump(2) + "\n");
+  sph::write_file_atomically(options.output_dir / "summary.json", json_text(summary));
   sph::write_file_atomically(options.output_dir / "summary.csv", summary_csv(rows));
   sph::write_file_atomically(options.output_dir / "junit.xml", junit_xml(rows));
   if (options.log) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "coupling/output/json_text.hpp"
 #include "coupling/output/json_values.hpp"
 #include "sphslope/units.hpp"
 
@@ -188,8 +189,6 @@ nlohmann::json noncircular_report(const slope::Section& section, const slope::No
           {"methods", std::move(methods)}};
 }
 
-std::string report_text(const nlohmann::json& report) {
-  return report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-}
+std::string report_text(const nlohmann::json& report) { return json_text(report); }
 
 }  // namespace coupling

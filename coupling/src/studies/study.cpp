@@ -16,6 +16,7 @@
 #include "coupling/output/report.hpp"
 #include "coupling/analyses/sph_stage.hpp"
 #include "study_cases.hpp"
+#include "coupling/output/json_text.hpp"
 
 namespace coupling {
 namespace {
@@ -257,7 +258,7 @@ bool run_spacings(const Scene& scene, const nlohmann::json& document, const Case
       runs.push_back(std::move(record));
       return true;
     }
-    if (record.ok) sph::write_file_atomically(saved, record.entry.dump(2) + "\n");
+    if (record.ok) sph::write_file_atomically(saved, json_text(record.entry));
     runs.push_back(std::move(record));
   }
   return false;
@@ -374,7 +375,7 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
   study["figures"] = {{"error_vs_runtime", "figures/error_vs_runtime.svg"}};
   sph::write_file_atomically(options.output_dir / "figures" / "error_vs_runtime.svg",
                error_vs_runtime_svg(scene.name + ": error against run time", series));
-  sph::write_file_atomically(options.output_dir / "study.json", study.dump(2) + "\n");
+  sph::write_file_atomically(options.output_dir / "study.json", json_text(study));
   out.status = failures.empty() ? ExitStatus::ok : ExitStatus::failed;
   return out;
 }
