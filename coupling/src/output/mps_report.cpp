@@ -25,7 +25,7 @@ nlohmann::json mps_report(const MpsStageResult& r) {
   if (r.gate)
     j["gate"] = {{"x_m", r.gate_x}, {"lift_speed_m_s", r.gate_lift_speed}, {"lift_distance_m", r.gate_lift_distance}};
   j["particles"] = {{"moving", r.moving_particles}, {"wall", r.wall_particles}};
-  j["steps"] = r.summary.steps;
+  j["steps"] = r.summary.total_steps;  // from t = 0, the steps before a --resume included
   j["simulated_time_s"] = r.summary.simulated_time;
   j["wall_s"] = r.summary.wall_seconds;
   j["mass_kg_per_m"] = {{"start", r.mass_start}, {"end", r.mass_end}};
