@@ -74,8 +74,10 @@ TEST_CASE("every case: splitting the section's lines into collinear pieces leave
       INFO(entry.path().filename().string() << ", " << slope::method_key(a.methods[k].method));
       const auto& fa = a.methods[k].result.factor_of_safety;
       const auto& fb = b.methods[k].result.factor_of_safety;
-      REQUIRE(fa.has_value() == fb.has_value());
-      if (fa) CHECK(*fb == Approx(*fa).epsilon(fs_tolerance));
+      INFO(a.methods[k].result.error);
+      REQUIRE(fa);  // every method finds its critical surface on every case (the golden LE file has no null)
+      REQUIRE(fb);
+      CHECK(*fb == Approx(*fa).epsilon(fs_tolerance));
     }
   }
   CHECK(sections >= 8);

@@ -12,6 +12,7 @@
 #include "coupling/analyses/pipeline.hpp"
 #include "coupling/output/report_html.hpp"
 #include "coupling/scene/scene.hpp"
+#include "slope/methods.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -48,6 +49,7 @@ TEST_CASE("report.html of a limit-equilibrium run: every factor of the report, b
   CHECK_THAT(html, Catch::Contains("Weak layer &lt;ACADS 3&gt; &amp; its &quot;specified&quot; surface"));
   CHECK_THAT(html, Catch::Contains("class=\"status ok\""));
   const json& lem = out.report["lem"];
+  REQUIRE(lem["methods"].size() == slope::all_methods().size());  // the scene asks for every method
   for (const auto& [key, method] : lem["methods"].items()) {
     INFO(key);
     CHECK_THAT(html, Catch::Contains("<td class=\"l\">" + key + "</td>"));

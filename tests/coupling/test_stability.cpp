@@ -24,6 +24,7 @@
 
 #include "coupling/scene/scene.hpp"
 #include "coupling/analyses/sph_model.hpp"
+#include "slope/methods.hpp"
 #include "test_support.hpp"
 
 extern char** environ;
@@ -524,6 +525,7 @@ TEST_CASE("stability: vertical cut in a c-phi soil lies between the Rankine lowe
   REQUIRE(run_case("lem", case_file("lem_vertical_face_c_phi"), folder.path / "out").status == 0);
   const json report = read_json(folder.path / "out/report.json");
   CHECK(unexplained_nulls(report).empty());
+  REQUIRE(report["lem"]["methods"].size() == slope::all_methods().size());  // the scene asks for every method
   for (auto& [method, value] : report["lem"]["methods"].items()) {
     INFO(method);
     REQUIRE(value["factor_of_safety"].is_number());  // never negative or null (Janbu's f0 gave -1.7e15)
@@ -551,6 +553,7 @@ TEST_CASE("stability: a very flat slope has FS >> 1, at the infinite-slope value
   const json report = read_json(folder.path / "out/report.json");
   CHECK(unexplained_nulls(report).empty());
   const double infinite = std::tan(30.0 * M_PI / 180.0) / 0.05;
+  REQUIRE(report["lem"]["methods"].size() == slope::all_methods().size());  // the scene asks for every method
   for (auto& [method, value] : report["lem"]["methods"].items()) {
     INFO(method);
     CHECK(value["factor_of_safety"].get<double>() >= infinite * 0.999);
@@ -591,6 +594,8 @@ TEST_CASE("stability: circles near a rigid base stay above it and cannot beat th
   deep_scene["section"]["bottom_y_m"] = -20;
   const json deep = run_variant(deep_scene, folder, "deep");
   CHECK(unexplained_nulls(near).empty());
+  int below_centre = 0;  // circles whose lowest point is inside their span (there the base constrains them)
+  REQUIRE(near["lem"]["methods"].size() == slope::all_methods().size());  // the scene asks for every method
   for (auto& [method, value] : near["lem"]["methods"].items()) {
     INFO(method);
     CHECK(value["factor_of_safety"].get<double>() >= 0.995 * fs_of(deep, method));
@@ -598,8 +603,12 @@ TEST_CASE("stability: circles near a rigid base stay above it and cannot beat th
     const double xc = s["center_m"][0], yc = s["center_m"][1], r = s["radius_m"];
     const double x0 = std::min(s["entry_m"][0].get<double>(), s["exit_m"][0].get<double>());
     const double x1 = std::max(s["entry_m"][0].get<double>(), s["exit_m"][0].get<double>());
-    if (xc > x0 && xc < x1) CHECK(yc - r >= -0.5 - 1e-6);
+    if (xc > x0 && xc < x1) {
+      ++below_centre;
+      CHECK(yc - r >= -0.5 - 1e-6);
+    }
   }
+  CHECK(below_centre > 0);  // the check above ran: some circle's lowest point lies inside its own span
 }
 
 TEST_CASE("stability: a thin weak layer lowers the factor of safety and the critical circles reach it",
@@ -612,6 +621,7 @@ TEST_CASE("stability: a thin weak layer lowers the factor of safety and the crit
   strong_scene["section"]["materials"] = json::array({scene["section"]["materials"][0]});
   const json strong = run_variant(strong_scene, folder, "strong");
   CHECK(unexplained_nulls(weak).empty());
+  REQUIRE(weak["lem"]["methods"].size() == slope::all_methods().size());  // the scene asks for every method
   for (auto& [method, value] : weak["lem"]["methods"].items()) {
     INFO(method);
     CHECK(value["factor_of_safety"].get<double>() < 0.9 * fs_of(strong, method));

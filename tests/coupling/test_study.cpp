@@ -68,7 +68,7 @@ TEST_CASE("study: observed order of manufactured errors e = 3 h^2", "[study]") {
   for (double x : h) e.push_back(3.0 * x * x);
   const auto p = observed_order(h, e);
   REQUIRE(p);
-  CHECK(*p == Approx(2.0).margin(1e-9));
+  CHECK(*p == Approx(2.0).epsilon(1e-9));
   CHECK_FALSE(observed_order({0.1}, {0.01}));                  // one run: no slope
   CHECK_FALSE(observed_order({0.1, 0.1}, {0.01, 0.02}));       // one distinct spacing
   CHECK_FALSE(observed_order({0.2, 0.1}, {0.0, 0.01}));        // a zero error is left out: one run remains
@@ -78,12 +78,12 @@ TEST_CASE("study: self-convergence order and Richardson value of f = 1 + 0.5 h^1
   auto f = [](double h) { return 1.0 + 0.5 * std::pow(h, 1.5); };
   const auto sc = self_convergence(0.4, f(0.4), 0.2, f(0.2), 0.1, f(0.1));
   REQUIRE(sc);
-  CHECK(sc->order == Approx(1.5).margin(1e-6));
-  CHECK(sc->extrapolated == Approx(1.0).margin(1e-9));
+  CHECK(sc->order == Approx(1.5).epsilon(1e-9));
+  CHECK(sc->extrapolated == Approx(1.0).epsilon(1e-9));
   // unequal ratios: 0.3, 0.2, 0.05
   const auto uneven = self_convergence(0.3, f(0.3), 0.2, f(0.2), 0.05, f(0.05));
   REQUIRE(uneven);
-  CHECK(uneven->order == Approx(1.5).margin(1e-6));
+  CHECK(uneven->order == Approx(1.5).epsilon(1e-6));
   // oscillating (not asymptotic): no order
   CHECK_FALSE(self_convergence(0.4, 1.1, 0.2, 0.95, 0.1, 1.02));
   CHECK_FALSE(self_convergence(0.1, f(0.1), 0.2, f(0.2), 0.4, f(0.4)));  // spacings must decrease

@@ -31,9 +31,9 @@ inline slope::Section simple_slope(double height, double angle_deg, double crest
 }
 
 // Griffiths & Lane (1999), Geotechnique 49(3):387-403, homogeneous 2:1 slope: H = 10 m, c' = 10 kPa,
-// phi' = 20 deg, gamma = 20 kN/m^3. Exactly the section of cases/griffiths_lane_1999.json: crest from x = 0 to 20,
-// toe at (40, 10), level ground to x = 60, a foundation of the same soil down to the rigid base at y = 0
-// (depth factor D = 2).
+// phi' = 20 deg, gamma = 20 kN/m^3: crest from x = 0 to 20, toe at (40, 10), level ground to x = 60, a foundation
+// of the same soil down to the rigid base at y = 0 (depth factor D = 2). (cases/griffiths_lane_1999.json is the
+// section without the foundation, D = 1: griffiths_lane_no_foundation() 10 m lower.)
 inline slope::Section griffiths_lane_1999() {
   slope::Section s;
   s.bottom_y = 0.0;

@@ -153,4 +153,7 @@ TEST_CASE("a circle carries a tension crack as an inscribed polyline, the crack 
     INFO(slope::method_key(m));
     CHECK(fs(*wet, m) < fs(*dry, m));
   }
+  const slope::FsResult spencer = slope::factor_of_safety(*wet, slope::Method::spencer);
+  CHECK_FALSE(spencer.factor_of_safety);  // refused, never a number
+  CHECK_FALSE(spencer.error.empty());
 }

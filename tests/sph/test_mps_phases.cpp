@@ -129,6 +129,7 @@ TEST_CASE("MPS saturated bed under water: the grains' effective pressure is thei
   st.pore_pressure = sph::mps::PorePressure::none;
   const LayeredResult total = layered_column(st, bed, water_of(1000.0));
   print("saturated bed under water, pore pressure none", total);
+  REQUIRE(total.summary.reason == sph::StopReason::end_time);
   CHECK(total.effective_ratio > 3.0);  // the total pressure: the water above and in the pores counted as grains'
 }
 
