@@ -2,6 +2,8 @@
 // must carry the hydrostatic pressure and stay at rest. SI units.
 #include <catch2/catch.hpp>
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +15,7 @@
 #include "sph/mps/model.hpp"
 #include "sph/mps/run.hpp"
 #include "sph/mps/stepper.hpp"
+#include "same_state.hpp"
 
 namespace {
 
@@ -316,6 +319,43 @@ TEST_CASE("MPS resumed between two listings of the neighbour candidates ends bit
   fs::remove_all(dir);
 }
 
+// docs/reliability.md: the same scene gives bitwise the same result with 1 or 2 threads. The water dam break over
+// 600 steps (the candidates listed again several times) and a dry granular collapse (the Herschel-Bulkley rheology
+// and the effective pressure) over 6000 steps (0.056 s), every field compared.
+TEST_CASE("MPS gives bitwise the same state with 1 and 2 threads, water and grains", "[mps]") {
+  auto granular_collapse = [] {
+    sph::mps::Settings st;
+    st.particle_spacing = 0.005;
+    st.end_time = 10.0;
+    sph::mps::Model model(st, {sph::mps::Material::granular_material()});
+    sph::mps::add_block(model, 0.0, 0.0, 0.1, 0.06, 0);
+    sph::mps::add_box(model, 0.0, 0.3, 0.0, 0.12, 0);
+    return model;
+  };
+  const int before = omp_get_max_threads();
+  for (const bool water : {true, false}) {
+    INFO((water ? "water dam break" : "granular collapse"));
+    const int steps = water ? 600 : 6000;
+    auto run_with = [&](int threads) {
+      omp_set_num_threads(threads);
+      sph::mps::Model model = water ? water_dam_break() : granular_collapse();
+      sph::mps::Step step(model);
+      step.initialise();
+      advance(step, steps);
+      return std::pair{std::move(model), step.candidate_listings()};
+    };
+    auto [one, listings_one] = run_with(1);
+    auto [two, listings_two] = run_with(2);
+    INFO("candidate listings: " << listings_one);
+    CHECK(listings_one >= 2);  // the particles moved far enough to be listed again
+    CHECK(listings_two == listings_one);
+    REQUIRE(one.state.step == two.state.step);
+    CHECK(one.state.time == two.state.time);
+    CHECK(same_state::differing_values(one.particles, two.particles) == 0);
+  }
+  omp_set_num_threads(before);
+}
+
 TEST_CASE("MPS n* of every step is the sum of the weights at r*, also in the steps that list the candidates again",
           "[mps]") {
   // The number density n* is summed while the pairs at r* are listed. A step that lists the candidates again first
@@ -408,9 +448,9 @@ TEST_CASE("MPS gate lifted at a given speed holds the column back, rises as pres
                                    << " m, speed " << held.gate_speed << " / " << slow.gate_speed << " / "
                                    << fast.gate_speed << " m/s");
   // the gate's motion: bottom row from 0.005 m up by min(v t, 0.15 m); rising at v, or at rest once it has risen
-  CHECK(held.gate_bottom == Approx(0.005).margin(1e-12));
-  CHECK(slow.gate_bottom == Approx(0.005 + 0.5 * 0.2).margin(1e-9));
-  CHECK(fast.gate_bottom == Approx(0.005 + 0.15).margin(1e-9));
+  CHECK(held.gate_bottom == Approx(0.005).epsilon(0).margin(1e-12));
+  CHECK(slow.gate_bottom == Approx(0.005 + 0.5 * 0.2).epsilon(0).margin(1e-9));
+  CHECK(fast.gate_bottom == Approx(0.005 + 0.15).epsilon(0).margin(1e-9));
   CHECK(held.gate_speed == 0.0);
   CHECK(slow.gate_speed == Approx(0.5).epsilon(1e-9));
   CHECK(fast.gate_speed == 0.0);
@@ -478,7 +518,7 @@ TEST_CASE("MPS dry collapse: an unyielded zone in the bottom corner under a yiel
   for (std::size_t b = 0; b < c.top.size(); ++b)
     std::printf("mps unyielded zone at 0.05 s: column %zu: top %.3f m, unyielded to %.3f m, bottom grain %.1f Pa s\n", b,
                 c.top[b], c.top_unyielded[b], c.bottom_viscosity[b]);
-  REQUIRE(c.top.size() >= 7);
+  REQUIRE(c.top.size() > 7);  // the loop below checks the bins from the eighth on
   // at the wall: unyielded from the bed, a yielded layer on top
   CHECK(c.bottom_viscosity[0] >= 0.5 * cap);
   CHECK(c.top_unyielded[0] > 0.02);
