@@ -274,7 +274,8 @@ void check_state_golden(const std::string& golden_file, const SphState& actual, 
   const fs::path file = golden_dir / golden_file;
   if (update_mode()) {
     write_text(file, state_text(actual, what, names));
-    WARN("wrote " << file.string());
+    // Update mode writes and never compares: it must not report a pass (CI refuses to run with it set).
+    FAIL_CHECK("update mode (SPHSLOPE_UPDATE_GOLDEN=1): wrote " << file.string() << ", compared nothing");
     return;
   }
   const SphState golden = read_state(file);
@@ -530,7 +531,8 @@ TEST_CASE("golden: LE critical factors of safety of every slope scene in cases/"
   const fs::path file = golden_dir / "lem_factors_of_safety.txt";
   if (update_mode()) {
     write_text(file, lem_text(actual));
-    WARN("wrote " << file.string());
+    // Update mode writes and never compares: it must not report a pass (CI refuses to run with it set).
+    FAIL_CHECK("update mode (SPHSLOPE_UPDATE_GOLDEN=1): wrote " << file.string() << ", compared nothing");
     return;
   }
   const std::map<std::string, LemRow> golden = read_lem_rows(file);
