@@ -98,7 +98,7 @@ TEST_CASE("a blow-up stops the run with a diagnostic naming particle, field and 
   CHECK(s.diagnostic.find("velocity") != std::string::npos);
 }
 
-TEST_CASE("the step gives the same state for 1 and 2 threads (no order-dependent reductions)", "[sph][checkpoint]") {
+TEST_CASE("the step gives the same state for 1 and 2 threads (no order-dependent reductions)", "[sph][checkpoint][threads]") {
   auto run_with = [](int threads) {
     omp_set_num_threads(threads);
     auto m = small_collapse();

@@ -129,7 +129,7 @@ TEST_CASE("ISPH resume from a checkpoint gives bitwise the same state", "[sph][i
 // (the explicit sweep; CG and BiCGSTAB, each with the diagonal and the multigrid preconditioner). A dam break at
 // dx = 2.5 mm (3200 fluid particles: above the 2048 rows from which the multigrid's loops run in parallel), 40
 // steps.
-TEST_CASE("ISPH gives bitwise the same state with 1 and 2 threads, with every pressure solver", "[sph][isph]") {
+TEST_CASE("ISPH gives bitwise the same state with 1 and 2 threads, with every pressure solver", "[sph][isph][threads]") {
   struct Solver {
     const char* name;
     PressureMode mode;

@@ -322,7 +322,7 @@ TEST_CASE("MPS resumed between two listings of the neighbour candidates ends bit
 // docs/reliability.md: the same scene gives bitwise the same result with 1 or 2 threads. The water dam break over
 // 600 steps (the candidates listed again several times) and a dry granular collapse (the Herschel-Bulkley rheology
 // and the effective pressure) over 6000 steps (0.056 s), every field compared.
-TEST_CASE("MPS gives bitwise the same state with 1 and 2 threads, water and grains", "[mps]") {
+TEST_CASE("MPS gives bitwise the same state with 1 and 2 threads, water and grains", "[mps][threads]") {
   auto granular_collapse = [] {
     sph::mps::Settings st;
     st.particle_spacing = 0.005;
