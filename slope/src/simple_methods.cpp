@@ -52,14 +52,12 @@ double ratio_residual_gsl(double F, void* params) {
   return ratio_residual(*static_cast<const RatioEquation*>(params), F, nullptr);
 }
 
-// Solves F = sum(w_i / m_i(F)) / denominator, m_i = cos a_i + p_i / F, on the admissible range: every slice with a
-// negative base angle keeps m_a >= 0.2 (Whitman & Bailey 1967). Safeguarded Newton from `guess` (converges in 3-5
-// steps from the Ordinary value); GSL Brent on the bracket if Newton has not converged.
-Outcome solve_ratio_equation(const RatioEquation& eq, double guess) {
-  Outcome out;
+// The least admissible F of the ratio equation: every slice with a negative base angle keeps m_a >= 0.2 (Whitman &
+// Bailey 1967). False (out.failure set) when a slice cannot, or when the balancing F lies below that bound.
+bool admissible_lower_bound(const RatioEquation& eq, Outcome& out, double& f_min) {
   const SliceTable& t = *eq.table;
   const int n = t.count;
-  double f_min = 0.0;
+  f_min = 0.0;
   int binding = -1;
   for (int i = 0; i < n; ++i) {
     if (t.sin_a[i] >= 0.0) continue;
@@ -67,7 +65,7 @@ Outcome solve_ratio_equation(const RatioEquation& eq, double guess) {
       out.failure = Failure::m_alpha;
       out.slice = i;
       out.value = t.cos_a[i];
-      return out;
+      return false;
     }
     if (eq.friction[i] < 0.0) {
       const double f = -eq.friction[i] / (t.cos_a[i] - minimum_m_alpha);
@@ -77,17 +75,21 @@ Outcome solve_ratio_equation(const RatioEquation& eq, double guess) {
       }
     }
   }
-  double lo = f_min;
-  double hi = std::numeric_limits<double>::infinity();
   if (f_min > 0.0) {
     const double v = ratio_residual(eq, f_min, nullptr);
     if (v > 0.0) {  // the balancing F lies below f_min, where m_a < 0.2 on slice `binding`
       out.failure = Failure::m_alpha;
       out.slice = binding;
       out.value = std::numeric_limits<double>::quiet_NaN();
-      return out;
+      return false;
     }
   }
+  return true;
+}
+
+// Safeguarded Newton on [lo, hi] from `guess` (at most 40 steps); narrows the bracket as it goes. True when it
+// converged (out.factor_of_safety set).
+bool ratio_newton(const RatioEquation& eq, double guess, double& lo, double& hi, Outcome& out) {
   double F = (std::isfinite(guess) && guess > lo) ? guess : (lo > 0.0 ? 1.5 * lo : 1.0);
   for (int it = 1; it <= 40; ++it) {
     double d = 0.0;
@@ -96,7 +98,7 @@ Outcome solve_ratio_equation(const RatioEquation& eq, double guess) {
     if (std::fabs(v) <= 1e-11 * std::max(1.0, F)) {
       out.factor_of_safety = F;
       out.iterations = it;
-      return out;
+      return true;
     }
     if (v < 0.0) lo = F;
     else hi = F;
@@ -104,7 +106,11 @@ Outcome solve_ratio_equation(const RatioEquation& eq, double guess) {
     if (!(next > lo && next < hi)) next = std::isfinite(hi) ? 0.5 * (lo + hi) : std::max(2.0 * F, lo + 1.0);
     F = next;
   }
-  // Fallback: bracket and GSL Brent.
+  return false;
+}
+
+// The fallback: bracket the root from [lo, hi) and refine it with GSL's Brent solver.
+void ratio_brent(const RatioEquation& eq, double lo, double hi, Outcome& out) {
   if (!std::isfinite(hi)) {
     for (double trial = std::max(2.0 * lo, 1.0); trial < 1e6; trial *= 2.0) {
       if (ratio_residual(eq, trial, nullptr) > 0.0) {
@@ -116,7 +122,7 @@ Outcome solve_ratio_equation(const RatioEquation& eq, double guess) {
   }
   if (!std::isfinite(hi) || !(ratio_residual(eq, std::max(lo, 1e-12), nullptr) < 0.0)) {
     out.failure = Failure::not_converged;
-    return out;
+    return;
   }
   gsl_function function{&ratio_residual_gsl, const_cast<RatioEquation*>(&eq)};
   gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
@@ -133,10 +139,23 @@ Outcome solve_ratio_equation(const RatioEquation& eq, double guess) {
   if (status != GSL_SUCCESS) {
     out.failure = Failure::not_converged;
     out.iterations = it;
-    return out;
+    return;
   }
   out.factor_of_safety = root;
   out.iterations = 40 + it;
+}
+
+// Solves F = sum(w_i / m_i(F)) / denominator, m_i = cos a_i + p_i / F, on the admissible range: every slice with a
+// negative base angle keeps m_a >= 0.2 (Whitman & Bailey 1967). Safeguarded Newton from `guess` (converges in 3-5
+// steps from the Ordinary value); GSL Brent on the bracket if Newton has not converged.
+Outcome solve_ratio_equation(const RatioEquation& eq, double guess) {
+  Outcome out;
+  double f_min = 0.0;
+  if (!admissible_lower_bound(eq, out, f_min)) return out;
+  double lo = f_min;
+  double hi = std::numeric_limits<double>::infinity();
+  if (ratio_newton(eq, guess, lo, hi, out)) return out;
+  ratio_brent(eq, lo, hi, out);
   return out;
 }
 

@@ -67,6 +67,7 @@ struct SliceTable {
 
  private:
   void compute_polyline_arms();  // shear and normal arms about a moment point (polylines)
+  double shared_loads(int i, double dir, double& scale);  // the loads and driving moment a circle and a polyline share
   void add_crack_force();        // the water thrust of a crack on the upslope slice
 };
 
@@ -112,9 +113,25 @@ class Slicer {
   // circle: the arc of a circular surface (nullptr for a polyline), to settle a base chord lying on a layer line.
   void fill_from_bounds(int dir, SliceTable& table, const Circle* circle);
   void slice_water(int i, double sdir, SliceTable& table) const;
+  struct SliceSpan {
+    double x0, x1, width, base_x, base_y, top_y;  // [m]
+  };
+  SliceSpan span_of(int i, const SliceTable& table) const;
+  double slice_layers(int i, const Circle* circle, SliceTable& table);
+  double surcharge_load(double x0, double x1) const;
   // Slice boundaries bounds_ from the mass's ends and the sorted breaks_ inside it (xr appended here).
   int place_bounds(double xl, double xr, int target_slices);
   bool shallow_gap(const Circle& circle, double x0, double x1) const;
+  // The steps of slice(): the split points of the ground against the arc, the mass between two of them, its
+  // sliding direction, the boundaries its base must break at.
+  struct MassEnds {
+    double left = 0.0, right = 0.0;  // [m]
+    bool left_is_root = false, left_is_contact = false, right_is_contact = false;
+  };
+  void split_points(const Circle& circle, double x_lo, double x_hi);
+  Rejection find_mass(const Circle& circle, double x_lo, double x_hi, MassEnds& mass);
+  int sliding_direction(double xl, double xr, double xc) const;
+  void collect_breaks(const Circle& circle, double xl, double xr);
 
   PreparedSection prepared_;
   std::vector<double> roots_, gaps_, breaks_, bounds_, arc_y_, ground_y_, line_y_;

@@ -39,95 +39,6 @@ const char* rejection_text(Rejection rejection) {
   return "unknown";
 }
 
-void SliceTable::resize(int n) {
-  count = n;
-  if (static_cast<std::size_t>(n) <= x_left.size()) return;
-  const std::size_t capacity = static_cast<std::size_t>(n) + static_cast<std::size_t>(n) / 2 + 8;
-  for (std::vector<double>* v :
-       {&x_left, &x_right, &width, &sin_a, &cos_a, &base_length, &base_x, &base_y, &top_y, &weight, &surcharge,
-        &ponded, &water_thrust, &seismic, &cohesion, &tan_phi, &pore_pressure, &cohesion_force, &pore_force,
-        &vertical, &horizontal, &drive_moment, &shear_arm, &normal_arm}) {
-    v->resize(capacity);
-  }
-  material.resize(capacity);
-}
-
-// The loads of every method, from the primitive slice data. Moments are about the circle centre, in a frame
-// mirrored so that sliding is toward +x' (x' = direction * (x - xc), y' = y - yc); a moment is positive when it
-// drives sliding (anticlockwise in the mirrored frame).
-void SliceTable::compute_loads() {
-  if (!circular) {
-    compute_polyline_arms();
-    add_crack_force();
-    return;
-  }
-  const double xc = circle.xc;
-  const double yc = circle.yc;
-  const double dir = direction >= 0 ? 1.0 : -1.0;
-  double total = 0.0, scale = 0.0;
-  for (int i = 0; i < count; ++i) {
-    cohesion_force[i] = cohesion[i] * base_length[i];
-    pore_force[i] = pore_pressure[i] * base_length[i];
-    vertical[i] = weight[i] + surcharge[i] + ponded[i];
-    horizontal[i] = seismic[i] + water_thrust[i];
-    const double x_arm = dir * (base_x[i] - xc);            // vertical loads act on the slice centre line
-    const double y_mid = 0.5 * (base_y[i] + top_y[i]) - yc;  // seismic force at mid-height
-    const double y_top = top_y[i] - yc;                      // water thrust at the slice top
-    const double m = -x_arm * vertical[i] - y_mid * seismic[i] - y_top * water_thrust[i];
-    drive_moment[i] = m;
-    total += m;
-    scale += std::fabs(x_arm * vertical[i]) + std::fabs(y_mid * seismic[i]) + std::fabs(y_top * water_thrust[i]);
-    const double dx = base_x[i] - xc;
-    const double dy = base_y[i] - yc;
-    shear_arm[i] = std::sqrt(dx * dx + dy * dy);
-  }
-  total_drive_moment = total;
-  drive_moment_scale = scale;
-}
-
-// As the circle's loop above, about the moment point (xc, yc) of a polyline: the base normal N and shear S of slice
-// i act at the base midpoint P. With r = P - O in the mirrored frame, t = (cos a, -sin a) the base direction of
-// sliding and n = (sin a, cos a) the base normal into the mass, N n has the moment N (r . t) (normal_arm) and the
-// resisting shear -S t the moment -S (-(r . n)) (shear_arm = -(r . n), the distance from O to the base line when
-// O lies above it). For a circle r = -R n: shear arm R, normal arm 0.
-void SliceTable::compute_polyline_arms() {
-  const double xc = circle.xc;
-  const double yc = circle.yc;
-  const double dir = direction >= 0 ? 1.0 : -1.0;
-  double total = 0.0, scale = 0.0;
-  for (int i = 0; i < count; ++i) {
-    cohesion_force[i] = cohesion[i] * base_length[i];
-    pore_force[i] = pore_pressure[i] * base_length[i];
-    vertical[i] = weight[i] + surcharge[i] + ponded[i];
-    horizontal[i] = seismic[i] + water_thrust[i];
-    const double x_arm = dir * (base_x[i] - xc);
-    const double y_mid = 0.5 * (base_y[i] + top_y[i]) - yc;
-    const double y_top = top_y[i] - yc;
-    const double m = -x_arm * vertical[i] - y_mid * seismic[i] - y_top * water_thrust[i];
-    drive_moment[i] = m;
-    total += m;
-    scale += std::fabs(x_arm * vertical[i]) + std::fabs(y_mid * seismic[i]) + std::fabs(y_top * water_thrust[i]);
-    const double rx = x_arm;
-    const double ry = base_y[i] - yc;
-    shear_arm[i] = -(rx * sin_a[i] + ry * cos_a[i]);
-    normal_arm[i] = rx * cos_a[i] - ry * sin_a[i];
-  }
-  total_drive_moment = total;
-  drive_moment_scale = scale;
-}
-
-// The thrust of a water-filled crack acts on the upslope face of the upslope slice: a horizontal load of that
-// slice (force equilibrium) with its own line of action (moment equilibrium).
-void SliceTable::add_crack_force() {
-  if (crack_force == 0.0 || count < 1) return;
-  const int i = direction > 0 ? 0 : count - 1;
-  horizontal[i] += crack_force;
-  const double m = -(crack_force_y - circle.yc) * crack_force;
-  drive_moment[i] += m;
-  total_drive_moment += m;
-  drive_moment_scale += std::fabs(m);
-}
-
 PreparedSection::PreparedSection(const Section& section) {
   x_min = section.x_min();
   x_max = section.x_max();
@@ -213,28 +124,20 @@ bool Slicer::shallow_gap(const Circle& circle, double x0, double x1) const {
   return true;
 }
 
-Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& table) {
-  const PreparedSection& ps = prepared_;
-  const double xc = circle.xc;
-  const double yc = circle.yc;
-  const double R = circle.radius;
-  if (!(R > 0.0) || !std::isfinite(R) || !std::isfinite(xc) || !std::isfinite(yc)) return Rejection::invalid_circle;
-  // Beyond this radius the arc and its crossings are computed from differences of numbers 1e8 times larger than
-  // the section, and Janbu's f0 and the slice geometry lose their accuracy (seen with vertical faces, where the
-  // force-equilibrium methods favour planes and the refinement drifts to radii of 1e8 m).
-  if (R > 1e4 * (ps.x_max - ps.x_min + ps.ground_y_max - ps.bottom_y)) return Rejection::radius_too_large;
-  const double R2 = R * R;
-  auto arc = [&](double x) {
-    const double d = x - xc;
-    return yc - std::sqrt(std::max(0.0, R2 - d * d));
-  };
+namespace {
 
-  // 1. The lower arc against the ground surface: find the single interval where there is soil above the arc.
-  //    Soil lies between the ground and the rigid base, so where the ground is on the base (a slope on a firm
-  //    stratum at toe level) there is none, and such ground vertices may end a mass like a crossing does.
-  const double x_lo = std::max(ps.x_min, xc - R);
-  const double x_hi = std::min(ps.x_max, xc + R);
-  if (!(x_hi > x_lo)) return Rejection::misses_ground;
+// The height of the circle's lower half at x [m].
+double lower_arc_y(const Circle& c, double x) {
+  const double d = x - c.xc;
+  return c.yc - std::sqrt(std::max(0.0, c.radius * c.radius - d * d));
+}
+
+}  // namespace
+
+// The points that split [x_lo, x_hi] where soil may begin or end above the arc: the arc's crossings of the ground
+// and the ground's contacts with the rigid base (roots_, sorted, with root_is_contact_ alongside).
+void Slicer::split_points(const Circle& circle, double x_lo, double x_hi) {
+  const PreparedSection& ps = prepared_;
   roots_.clear();
   ps.ground_line().lower_arc_crossings(circle, x_lo, x_hi, roots_);
   const std::size_t n_crossings = roots_.size();
@@ -253,15 +156,21 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
     std::sort(roots_.begin(), roots_.end());
     root_is_contact_.assign(roots_.size(), 0);
   }
+}
+
+// The single interval between split points where there is soil above the arc (gaps_ gets the stretches where the
+// arc only grazes a surveyed surface's roughness). Soil lies between the ground and the rigid base, so where the
+// ground is on the base (a slope on a firm stratum at toe level) there is none, and such ground vertices may end a
+// mass like a crossing does.
+Rejection Slicer::find_mass(const Circle& circle, double x_lo, double x_hi, MassEnds& m) {
+  const PreparedSection& ps = prepared_;
   // Intervals shorter than tol_x between split points are empty (coincident roots). The tolerance follows the
   // section's size, not the circle's: with a radius of 1e6 m or more (the search approaching a plane) a
   // radius-relative tolerance exceeded the 1 mm width of a "vertical" face and dropped the face crossing.
-  const double tol_x = 1e-10 * (ps.x_max - ps.x_min + 1.0) + 1e-14 * (R + std::fabs(xc));
-  const double tol_base = 1e-9 * (1.0 + R + std::fabs(ps.bottom_y));
-  double left = 0.0, right = 0.0;
+  const double tol_x = 1e-10 * (ps.x_max - ps.x_min + 1.0) + 1e-14 * (circle.radius + std::fabs(circle.xc));
+  const double tol_base = 1e-9 * (1.0 + circle.radius + std::fabs(ps.bottom_y));
   gaps_.clear();
-  bool open = false, found = false, left_is_root = false;
-  bool left_is_contact = false, right_is_contact = false;
+  bool open = false, found = false;
   int masses = 0;
   double a = x_lo;
   bool a_is_root = false, a_is_contact = false;
@@ -273,23 +182,23 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
     if (b - a > tol_x) {
       const double mid = 0.5 * (a + b);
       const double g = ps.ground_at(mid);
-      const bool positive = g > arc(mid) && g > ps.bottom_y + tol_base;
-      if (positive && !open && found && !right_is_contact && !a_is_contact && shallow_gap(circle, right, a)) {
+      const bool positive = g > lower_arc_y(circle, mid) && g > ps.bottom_y + tol_base;
+      if (positive && !open && found && !m.right_is_contact && !a_is_contact && shallow_gap(circle, m.right, a)) {
         // the arc rose above the ground only by a survey's roughness: one mass, the gap's slices empty
         open = true;
         found = false;
-        gaps_.push_back(right);
+        gaps_.push_back(m.right);
         gaps_.push_back(a);
       } else if (positive && !open) {  // a new positive stretch (adjacent positive stretches merge: tangent touch)
         open = true;
-        left = a;
-        left_is_root = a_is_root;
-        left_is_contact = a_is_contact;
+        m.left = a;
+        m.left_is_root = a_is_root;
+        m.left_is_contact = a_is_contact;
         ++masses;
       } else if (!positive && open) {
         open = false;
-        right = a;
-        right_is_contact = a_is_contact;
+        m.right = a;
+        m.right_is_contact = a_is_contact;
         found = true;
         if (!a_is_root) return Rejection::beyond_section;
       }
@@ -304,26 +213,31 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
   }
   if (masses == 0 || !found) return Rejection::misses_ground;
   if (masses > 1) return Rejection::several_masses;
-  if (!left_is_root) return (x_lo > ps.x_min + tol_x) ? Rejection::not_closed_lower_arc : Rejection::beyond_section;
-  const double xl = left;
-  const double xr = right;
-  const double span = xr - xl;
-  if (span < 1e-7 * (ps.x_max - ps.x_min)) return Rejection::too_small;
-  if (xc > xl && xc < xr && yc - R < ps.bottom_y - tol_base) return Rejection::below_base;
+  if (!m.left_is_root) return (x_lo > ps.x_min + tol_x) ? Rejection::not_closed_lower_arc : Rejection::beyond_section;
+  if (m.right - m.left < 1e-7 * (ps.x_max - ps.x_min)) return Rejection::too_small;
+  const double xc = circle.xc, yc = circle.yc, R = circle.radius;
+  if (xc > m.left && xc < m.right && yc - R < ps.bottom_y - tol_base) return Rejection::below_base;
   // a mass ending on the base must have its arc through that point, not below it
-  if ((left_is_contact && arc(xl) < ps.bottom_y - tol_base) || (right_is_contact && arc(xr) < ps.bottom_y - tol_base))
+  if ((m.left_is_contact && lower_arc_y(circle, m.left) < ps.bottom_y - tol_base) ||
+      (m.right_is_contact && lower_arc_y(circle, m.right) < ps.bottom_y - tol_base))
     return Rejection::below_base;
+  return Rejection::none;
+}
 
-  // 2. Direction of sliding: from the higher end to the lower end.
-  const double yl = ps.ground_at(xl);
-  const double yr = ps.ground_at(xr);
+// The sliding direction of the mass between xl and xr: from its higher end to its lower end (+1: toward +x).
+int Slicer::sliding_direction(double xl, double xr, double xc) const {
+  const double yl = prepared_.ground_at(xl);
+  const double yr = prepared_.ground_at(xr);
   const double tol_y = 1e-9 * (1.0 + std::fabs(yl) + std::fabs(yr));
-  int dir;
-  if (yl > yr + tol_y) dir = 1;
-  else if (yr > yl + tol_y) dir = -1;
-  else dir = 0.5 * (xl + xr) < xc ? 1 : -1;
+  if (yl > yr + tol_y) return 1;
+  if (yr > yl + tol_y) return -1;
+  return 0.5 * (xl + xr) < xc ? 1 : -1;
+}
 
-  // 3. Slice boundaries.
+// The boundaries the base must break at inside the mass (breaks_, sorted): surcharge ends and the edge of ponded
+// water, the grazing gaps, and where a layer line or the piezometric line crosses the arc.
+void Slicer::collect_breaks(const Circle& circle, double xl, double xr) {
+  const PreparedSection& ps = prepared_;
   breaks_.clear();
   for (auto it = std::upper_bound(ps.fixed_breaks.begin(), ps.fixed_breaks.end(), xl);
        it != ps.fixed_breaks.end() && *it < xr; ++it)
@@ -332,7 +246,33 @@ Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& tab
   for (std::size_t k = 1; k < ps.lines.size(); ++k) ps.lines[k].lower_arc_crossings(circle, xl, xr, breaks_);
   if (ps.has_water) ps.piezometric_line.lower_arc_crossings(circle, xl, xr, breaks_);
   std::sort(breaks_.begin(), breaks_.end());
-  if (place_bounds(xl, xr, target_slices) < 1) return Rejection::too_small;
+}
+
+Rejection Slicer::slice(const Circle& circle, int target_slices, SliceTable& table) {
+  const PreparedSection& ps = prepared_;
+  const double xc = circle.xc;
+  const double yc = circle.yc;
+  const double R = circle.radius;
+  if (!(R > 0.0) || !std::isfinite(R) || !std::isfinite(xc) || !std::isfinite(yc)) return Rejection::invalid_circle;
+  // Beyond this radius the arc and its crossings are computed from differences of numbers 1e8 times larger than
+  // the section, and Janbu's f0 and the slice geometry lose their accuracy (seen with vertical faces, where the
+  // force-equilibrium methods favour planes and the refinement drifts to radii of 1e8 m).
+  if (R > 1e4 * (ps.x_max - ps.x_min + ps.ground_y_max - ps.bottom_y)) return Rejection::radius_too_large;
+
+  // 1. The lower arc against the ground surface: the single interval where there is soil above the arc.
+  const double x_lo = std::max(ps.x_min, xc - R);
+  const double x_hi = std::min(ps.x_max, xc + R);
+  if (!(x_hi > x_lo)) return Rejection::misses_ground;
+  split_points(circle, x_lo, x_hi);
+  MassEnds mass;
+  if (const Rejection why = find_mass(circle, x_lo, x_hi, mass); why != Rejection::none) return why;
+
+  // 2. Direction of sliding: from the higher end to the lower end.
+  const int dir = sliding_direction(mass.left, mass.right, xc);
+
+  // 3. Slice boundaries.
+  collect_breaks(circle, mass.left, mass.right);
+  if (place_bounds(mass.left, mass.right, target_slices) < 1) return Rejection::too_small;
 
   fill_slices(circle, dir, table);
   return Rejection::none;
@@ -429,63 +369,76 @@ void Slicer::fill_from_bounds(int dir, SliceTable& table, const Circle* circle) 
     table.base_y[i] = ybm;
     table.top_y[i] = ytm;
 
-    // Layers from their mean heights over the slice: line k's material fills [Y(k+1), Y(k)], the last one down to
-    // bottom_y; the layer the chord lies in is cut at the chord. The chord crosses no line inside a slice (the
-    // crossings are boundaries), so these areas are exact. The base lies in the layer the chord lies in; a chord
-    // lying on a line (both its ends are crossings of that line) takes the side the arc's middle lies on, which the
-    // arc cannot leave within the slice.
-    line_y_[0] = ytm;
-    for (std::size_t k = 1; k < n_lines; ++k) line_y_[k] = std::min(ps.lines[k].mean(x0, x1), line_y_[k - 1]);
-    line_y_[n_lines] = std::min(ps.bottom_y, line_y_[n_lines - 1]);
-    double weight = 0.0;
-    std::size_t base_line = n_lines - 1;
-    const double on_line = 1e-9 * (1.0 + std::fabs(ybm));
-    for (std::size_t k = 0; k < n_lines; ++k) {
-      const double top = line_y_[k];
-      const double bottom = std::max(line_y_[k + 1], ybm);
-      if (top > bottom) weight += ps.line_unit_weight[k] * (top - bottom);
-      double y_base = ybm;
-      if (circle != nullptr && std::fabs(line_y_[k + 1] - ybm) <= on_line) {
-        const double d = xm - circle->xc;
-        y_base = circle->yc - std::sqrt(std::max(0.0, circle->radius * circle->radius - d * d));
-      }
-      if (line_y_[k + 1] < y_base) {
-        base_line = k;
-        break;
-      }
-    }
-    weight *= b;
-    table.weight[i] = weight;
-    table.material[i] = ps.line_material[base_line];
-    // A slice over a gap where the arc grazes above rough ground (shallow_gap) has no weight; its base keeps the
-    // strength of the soil beneath, as if the roughness were smoothed: with zero strength there the interslice
-    // force methods meet tension on these weightless slices and refuse the surface.
-    table.cohesion[i] = ps.line_cohesion[base_line];
-    table.tan_phi[i] = ps.line_tan_phi[base_line];
-
+    const double weight = slice_layers(i, circle, table);
     slice_water(i, sdir, table);
     table.seismic[i] = kh * weight;
 
-    double q = 0.0;
-    for (const Surcharge& s : ps.surcharges) {
-      const double overlap = std::min(s.to_x, x1) - std::max(s.from_x, x0);
-      if (overlap > 0.0) q += s.pressure * overlap;
-    }
-    table.surcharge[i] = q;
+    table.surcharge[i] = surcharge_load(x0, x1);
   }
   table.max_depth = max_depth;
+}
+
+// The strip loads on [x0, x1] [N/m].
+double Slicer::surcharge_load(double x0, double x1) const {
+  double q = 0.0;
+  for (const Surcharge& s : prepared_.surcharges) {
+    const double overlap = std::min(s.to_x, x1) - std::max(s.from_x, x0);
+    if (overlap > 0.0) q += s.pressure * overlap;
+  }
+  return q;
+}
+
+// Slice i's ends x0, x1, width, base midpoint and mean top height, as fill_from_bounds put them in the table.
+Slicer::SliceSpan Slicer::span_of(int i, const SliceTable& table) const {
+  const double x0 = bounds_[i];
+  const double x1 = bounds_[i + 1];
+  return {x0, x1, x1 - x0, table.base_x[i], table.base_y[i], table.top_y[i]};
+}
+
+// The weight of slice i (between bounds_[i] and bounds_[i + 1]; base and top heights already in the table) and the
+// soil its base lies in, written to the table; returns the weight [N/m].
+double Slicer::slice_layers(int i, const Circle* circle, SliceTable& table) {
+  const PreparedSection& ps = prepared_;
+  const std::size_t n_lines = ps.lines.size();
+  const auto [x0, x1, b, xm, ybm, ytm] = span_of(i, table);
+  // Layers from their mean heights over the slice: line k's material fills [Y(k+1), Y(k)], the last one down to
+  // bottom_y; the layer the chord lies in is cut at the chord. The chord crosses no line inside a slice (the
+  // crossings are boundaries), so these areas are exact. The base lies in the layer the chord lies in; a chord
+  // lying on a line (both its ends are crossings of that line) takes the side the arc's middle lies on, which the
+  // arc cannot leave within the slice.
+  line_y_[0] = ytm;
+  for (std::size_t k = 1; k < n_lines; ++k) line_y_[k] = std::min(ps.lines[k].mean(x0, x1), line_y_[k - 1]);
+  line_y_[n_lines] = std::min(ps.bottom_y, line_y_[n_lines - 1]);
+  double weight = 0.0;
+  std::size_t base_line = n_lines - 1;
+  const double on_line = 1e-9 * (1.0 + std::fabs(ybm));
+  for (std::size_t k = 0; k < n_lines; ++k) {
+    const double top = line_y_[k];
+    const double bottom = std::max(line_y_[k + 1], ybm);
+    if (top > bottom) weight += ps.line_unit_weight[k] * (top - bottom);
+    double y_base = ybm;
+    if (circle != nullptr && std::fabs(line_y_[k + 1] - ybm) <= on_line) y_base = lower_arc_y(*circle, xm);
+    if (line_y_[k + 1] < y_base) {
+      base_line = k;
+      break;
+    }
+  }
+  weight *= b;
+  table.weight[i] = weight;
+  table.material[i] = ps.line_material[base_line];
+  // A slice over a gap where the arc grazes above rough ground (shallow_gap) has no weight; its base keeps the
+  // strength of the soil beneath, as if the roughness were smoothed: with zero strength there the interslice
+  // force methods meet tension on these weightless slices and refuse the surface.
+  table.cohesion[i] = ps.line_cohesion[base_line];
+  table.tan_phi[i] = ps.line_tan_phi[base_line];
+  return weight;
 }
 
 // The water of slice i (between bounds_[i] and bounds_[i + 1], base and top heights already in the table): pore
 // pressure at the base midpoint, ponded water on the top and its horizontal thrust.
 void Slicer::slice_water(int i, double sdir, SliceTable& table) const {
   const PreparedSection& ps = prepared_;
-  const double x0 = bounds_[i];
-  const double x1 = bounds_[i + 1];
-  const double b = x1 - x0;
-  const double xm = table.base_x[i];
-  const double ybm = table.base_y[i];
-  const double ytm = table.top_y[i];
+  const auto [x0, x1, b, xm, ybm, ytm] = span_of(i, table);
   double u = 0.0, ponded = 0.0, thrust = 0.0;
   if (ps.has_water) {
     u = ps.water_unit_weight * std::max(0.0, ps.piezometric_line.y(xm) - ybm);
@@ -504,80 +457,6 @@ void Slicer::slice_water(int i, double sdir, SliceTable& table) const {
   table.pore_pressure[i] = u;
   table.ponded[i] = ponded;
   table.water_thrust[i] = thrust;
-}
-
-void table_to_mass(const SliceTable& t, SlipMass& mass) {
-  mass.circle = t.circle;
-  mass.surface = t.surface;
-  mass.moment_point = Point{t.circle.xc, t.circle.yc};
-  mass.crack_depth = t.crack_depth;
-  mass.crack_water_force = t.crack_force;
-  mass.crack_water_force_y = t.crack_force_y;
-  mass.entry = t.entry;
-  mass.exit = t.exit;
-  mass.direction = t.direction;
-  mass.slices.resize(static_cast<std::size_t>(t.count));
-  for (int i = 0; i < t.count; ++i) {
-    Slice& s = mass.slices[static_cast<std::size_t>(i)];
-    s.x_left = t.x_left[i];
-    s.x_right = t.x_right[i];
-    s.width = t.width[i];
-    s.base_angle = std::atan2(t.sin_a[i], t.cos_a[i]);
-    s.base_length = t.base_length[i];
-    s.base_x = t.base_x[i];
-    s.base_y = t.base_y[i];
-    s.top_y = t.top_y[i];
-    s.weight = t.weight[i];
-    s.surcharge_load = t.surcharge[i];
-    s.ponded_water_load = t.ponded[i];
-    s.cohesion = t.cohesion[i];
-    s.tan_friction = t.tan_phi[i];
-    s.pore_pressure = t.pore_pressure[i];
-    s.base_material = t.material[i];
-    s.seismic_force = t.seismic[i];
-    s.water_thrust = t.water_thrust[i];
-  }
-}
-
-void mass_to_table(const SlipMass& mass, SliceTable& t) {
-  const int n = static_cast<int>(mass.slices.size());
-  t.resize(n);
-  t.circle = mass.circle;
-  t.circular = mass.surface.empty();
-  t.surface = mass.surface;
-  t.chord_depth = t.circular ? 0.0 : chord_depth(mass.surface);
-  t.crack_depth = mass.crack_depth;
-  t.crack_force = mass.crack_water_force;
-  t.crack_force_y = mass.crack_water_force_y;
-  if (!t.circular) t.circle = Circle{mass.moment_point.x, mass.moment_point.y, 0.0};
-  t.entry = mass.entry;
-  t.exit = mass.exit;
-  t.direction = mass.direction >= 0 ? 1 : -1;
-  double max_depth = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const Slice& s = mass.slices[static_cast<std::size_t>(i)];
-    t.x_left[i] = s.x_left;
-    t.x_right[i] = s.x_right;
-    t.width[i] = s.width;
-    t.sin_a[i] = std::sin(s.base_angle);
-    t.cos_a[i] = std::cos(s.base_angle);
-    t.base_length[i] = s.base_length;
-    t.base_x[i] = s.base_x;
-    t.base_y[i] = s.base_y;
-    t.top_y[i] = s.top_y;
-    t.weight[i] = s.weight;
-    t.surcharge[i] = s.surcharge_load;
-    t.ponded[i] = s.ponded_water_load;
-    t.cohesion[i] = s.cohesion;
-    t.tan_phi[i] = s.tan_friction;
-    t.pore_pressure[i] = s.pore_pressure;
-    t.material[i] = s.base_material;
-    t.seismic[i] = s.seismic_force;
-    t.water_thrust[i] = s.water_thrust;
-    max_depth = std::max(max_depth, s.top_y - s.base_y);
-  }
-  t.max_depth = max_depth;
-  t.compute_loads();
 }
 
 }  // namespace slope::detail

@@ -94,10 +94,70 @@ CaseSetup slope_case(const Scene& scene) {
   return setup;
 }
 
-CaseSetup particle_case(const Scene& scene) {
-  const std::optional<std::vector<ParticleBody>>& bodies = scene.bodies;
+// The elastic-column reference of a rectangular body [x0, x1] x [y0, y0 + height] (setup's body filled in).
+CaseSetup elastic_column_case(CaseSetup setup, const Scene& scene, double x0, double x1, double y0, double height) {
   const WallBox* box = scene.walls ? &*scene.walls : nullptr;
   const std::optional<SphAnalysis>& analysis = scene.analyses.sph;
+  const double length = x1 - x0;
+  setup.kind = CaseKind::elastic_column;
+  setup.kind_key = "elastic_column";
+  if (!box || !box->sides.left || !box->sides.right || !box->sides.bottom ||
+      std::fabs(box->x_min - x0) > 1e-9 || std::fabs(box->x_max - x1) > 1e-9 || std::fabs(box->bottom_y - y0) > 1e-9)
+    throw SceneError({"study: walls: the elastic-column reference (closed-form stress of a laterally confined "
+                      "column) needs left, right and bottom walls touching the column (walls.x_range_m = [" +
+                      format_number(x0) + ", " + format_number(x1) + "], bottom_y_m = " + format_number(y0) + ")"});
+  if (analysis->settings.wall_slip != sph::WallSlip::free_slip)
+    throw SceneError({"study: analyses.sph.walls.slip: the elastic-column reference needs frictionless walls "
+                      "(\"free_slip\"); with no-slip walls the closed form does not hold"});
+  const double k0 = setup.poisson_ratio / (1.0 - setup.poisson_ratio);
+  const std::string source =
+      "closed form of a laterally confined (oedometric) elastic column under its own weight: sigma_yy = -rho g d, "
+      "sigma_xx = nu/(1 - nu) sigma_yy (d = initial depth below the top)";
+  const std::string rms =
+      "root-mean-square over the particles between 0.2 H and 0.8 H of depth of (SPH - closed form), divided by the "
+      "root-mean-square of the closed form";
+  setup.quantities = {
+      {"sigma_yy_error", "relative error of the vertical stress sigma_yy (-)", std::nullopt, source, "closed form", rms, 1.0},
+      {"sigma_xx_error", "relative error of the horizontal stress sigma_xx (-)", std::nullopt, source, "closed form", rms,
+       1.0},
+  };
+  setup.parameters = {{"column_height_m", height}, {"column_width_m", length}, {"density_kg_m3", setup.density},
+                      {"poisson_ratio", setup.poisson_ratio}, {"k0", k0},
+                      {"gravity_m_s2", std::hypot(analysis->settings.gravity_x, analysis->settings.gravity_y)}};
+  return setup;
+}
+
+// The column-collapse reference of a rectangular body [x0, x0 + length] x [y0, y0 + height] (setup's body filled
+// in).
+CaseSetup column_collapse_case(CaseSetup setup, const Scene& scene, double x0, double y0, double length, double height) {
+  const WallBox* box = scene.walls ? &*scene.walls : nullptr;
+  setup.kind = CaseKind::column_collapse;
+  setup.kind_key = "column_collapse";
+  if (!box || !box->sides.bottom || !box->sides.left || std::fabs(box->x_min - x0) > 1e-9 ||
+      std::fabs(box->bottom_y - y0) > 1e-9)
+    throw SceneError({"study: walls: the column-collapse reference needs a floor and a back wall at the column's "
+                      "left face (walls.x_range_m starting at " + format_number(x0) + ", bottom_y_m = " +
+                      format_number(y0) + ", sides left and bottom)"});
+  const double a = height / length;
+  const double final_height = a < 0.65 ? height : height / (1.42 * std::pow(a, 2.0 / 3.0));
+  const double runout_ratio = a < 1.5 ? 3.25 * std::pow(a, 0.96) : 3.80 * std::pow(a, 0.73);
+  const double final_length = length * (1.0 + runout_ratio);
+  const std::string extrapolated =
+      a < 0.65 ? " (a = " + format_number(a) + " is below the fitted range 0.65 < a < 1.5: the run-out law is "
+                 "extrapolated)" : "";
+  setup.quantities = {
+      {"final_length_m", "distance from the back wall to the front of the deposit, d (m)", final_length,
+       std::string(true_2d_collapse_source) + extrapolated, "true-2-D experiments (Nguyen et al. 2015)",
+       "|value - reference| / reference", final_length},
+      {"final_height_m", "final height of the deposit, h_f (m)", final_height, true_2d_collapse_source,
+       "true-2-D experiments (Nguyen et al. 2015)", "|value - reference| / reference", final_height},
+  };
+  setup.parameters = {{"initial_length_m", length}, {"initial_height_m", height}, {"aspect_ratio", a}};
+  return setup;
+}
+
+CaseSetup particle_case(const Scene& scene) {
+  const std::optional<std::vector<ParticleBody>>& bodies = scene.bodies;
   if (bodies->size() != 1)
     throw SceneError({"study: bodies: the column references need exactly one body (got " +
                       std::to_string(bodies->size()) + ")"});
@@ -123,58 +183,8 @@ CaseSetup particle_case(const Scene& scene) {
                       "rectangle; got a polygon of area " + format_number(area) + " m2 in a " +
                       format_number(length) + " x " + format_number(height) + " m box)"});
 
-  if (body.material.elastic) {
-    setup.kind = CaseKind::elastic_column;
-    setup.kind_key = "elastic_column";
-    if (!box || !box->sides.left || !box->sides.right || !box->sides.bottom ||
-        std::fabs(box->x_min - x0) > 1e-9 || std::fabs(box->x_max - x1) > 1e-9 || std::fabs(box->bottom_y - y0) > 1e-9)
-      throw SceneError({"study: walls: the elastic-column reference (closed-form stress of a laterally confined "
-                        "column) needs left, right and bottom walls touching the column (walls.x_range_m = [" +
-                        format_number(x0) + ", " + format_number(x1) + "], bottom_y_m = " + format_number(y0) + ")"});
-    if (analysis->settings.wall_slip != sph::WallSlip::free_slip)
-      throw SceneError({"study: analyses.sph.walls.slip: the elastic-column reference needs frictionless walls "
-                        "(\"free_slip\"); with no-slip walls the closed form does not hold"});
-    const double k0 = setup.poisson_ratio / (1.0 - setup.poisson_ratio);
-    const std::string source =
-        "closed form of a laterally confined (oedometric) elastic column under its own weight: sigma_yy = -rho g d, "
-        "sigma_xx = nu/(1 - nu) sigma_yy (d = initial depth below the top)";
-    const std::string rms =
-        "root-mean-square over the particles between 0.2 H and 0.8 H of depth of (SPH - closed form), divided by the "
-        "root-mean-square of the closed form";
-    setup.quantities = {
-        {"sigma_yy_error", "relative error of the vertical stress sigma_yy (-)", std::nullopt, source, "closed form", rms, 1.0},
-        {"sigma_xx_error", "relative error of the horizontal stress sigma_xx (-)", std::nullopt, source, "closed form", rms,
-         1.0},
-    };
-    setup.parameters = {{"column_height_m", height}, {"column_width_m", length}, {"density_kg_m3", setup.density},
-                        {"poisson_ratio", setup.poisson_ratio}, {"k0", k0},
-                        {"gravity_m_s2", std::hypot(analysis->settings.gravity_x, analysis->settings.gravity_y)}};
-    return setup;
-  }
-
-  setup.kind = CaseKind::column_collapse;
-  setup.kind_key = "column_collapse";
-  if (!box || !box->sides.bottom || !box->sides.left || std::fabs(box->x_min - x0) > 1e-9 ||
-      std::fabs(box->bottom_y - y0) > 1e-9)
-    throw SceneError({"study: walls: the column-collapse reference needs a floor and a back wall at the column's "
-                      "left face (walls.x_range_m starting at " + format_number(x0) + ", bottom_y_m = " +
-                      format_number(y0) + ", sides left and bottom)"});
-  const double a = height / length;
-  const double final_height = a < 0.65 ? height : height / (1.42 * std::pow(a, 2.0 / 3.0));
-  const double runout_ratio = a < 1.5 ? 3.25 * std::pow(a, 0.96) : 3.80 * std::pow(a, 0.73);
-  const double final_length = length * (1.0 + runout_ratio);
-  const std::string extrapolated =
-      a < 0.65 ? " (a = " + format_number(a) + " is below the fitted range 0.65 < a < 1.5: the run-out law is "
-                 "extrapolated)" : "";
-  setup.quantities = {
-      {"final_length_m", "distance from the back wall to the front of the deposit, d (m)", final_length,
-       std::string(true_2d_collapse_source) + extrapolated, "true-2-D experiments (Nguyen et al. 2015)",
-       "|value - reference| / reference", final_length},
-      {"final_height_m", "final height of the deposit, h_f (m)", final_height, true_2d_collapse_source,
-       "true-2-D experiments (Nguyen et al. 2015)", "|value - reference| / reference", final_height},
-  };
-  setup.parameters = {{"initial_length_m", length}, {"initial_height_m", height}, {"aspect_ratio", a}};
-  return setup;
+  if (body.material.elastic) return elastic_column_case(std::move(setup), scene, x0, x1, y0, height);
+  return column_collapse_case(std::move(setup), scene, x0, y0, length, height);
 }
 
 // Relative root-mean-square error of the closed-form stresses of a confined elastic column.

@@ -5,15 +5,13 @@
 #include <limits>
 #include <sstream>
 
-#include "pair_list.hpp"
-#include "sph/engine/cell_sort.hpp"
+#include "stepper_impl.hpp"
 #include "sph/engine/run_loop.hpp"
 #include "terms.hpp"
 
 namespace sph::fluid {
 
 namespace {
-using Index = std::int64_t;
 
 SolverChoice solver_choice(const Settings& st) {
   SolverChoice c;
@@ -28,29 +26,12 @@ SolverChoice solver_choice(const Settings& st) {
 // extrapolation (decision D22), so the looser of wall_pass_tolerance and the solver's tolerance.
 double wall_pass_tolerance(const Settings& st) { return std::max(st.wall_pass_tolerance, st.solver_tolerance); }
 
-constexpr std::uint8_t kFluid = static_cast<std::uint8_t>(ParticleKind::soil);
-// The candidates of a step reach this many spacings beyond the kernel support: complete at r* while no particle
-// moves more than half of it in the temporary move (V** dt, about cfl dx).
-constexpr double kSkinOverDx = 0.5;
 }  // namespace
 
-struct Step::Impl {
-  Impl(KernelType type, double h) : kernel(type, h) {}
-  FluidKernel kernel;
-  CellSortedSet sorted;
-  CandidateList candidates;  // pairs within the support plus the skin at r^n
-  PairList pairs;
-  PoissonSystem system;
-  PressureSolver solver;  // the iterative mode's matrix and preconditioner of the step
-  std::vector<double> ax, ay;  // viscous accelerations
-  // at r*: the inverse of each particle's kernel moment matrix M_i = -sum_j V_j F_ij x_ij x_ij^T (the identity
-  // for a full lattice support), 0 where M_i is too far from it (renormalisation refused)
-  std::vector<double> lxx, lxy, lyy;
-  std::vector<double> bx, by;  // b_i = sum_j B_ij x_ij (decision D14)
-  std::vector<double> source0;  // the density-invariance source before the consistency term
-  std::vector<std::uint8_t> dry;  // wall particles with no pressure (above the water): out of the moment matrices
-  double lattice_kernel_sum = 1;  // sum_j W_ij dx^2 over a full square lattice (the kernel sum of a particle at rest)
-};
+using detail::Index;
+using detail::kFluid;
+using detail::kSkinOverDx;
+
 
 Step::Step(Model& model)
     : model_(model), impl_(std::make_unique<Impl>(model.settings.kernel, model.settings.smoothing_length())) {
@@ -493,182 +474,6 @@ void Step::finish_positions(double dt) {
   }
   diag_.max_density_error = err_max;
   diag_.mean_density_error = nf > 0 ? err_sum / static_cast<double>(nf) : 0.0;
-}
-
-bool Step::is_body(std::size_t i) const {
-  const ParticleSet& p = model_.particles;
-  return p.kind[i] != kFluid && p.material[i] > 0 && p.material[i] <= model_.bodies.size();
-}
-
-// The fluid's pressure force on every rigid body at r* (decision D19): the reaction of the pair forces of the
-// symmetric gradient I9, m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_j W_ji summed over the body's particles j and their
-// fluid neighbours i; per particle in parallel, then summed in particle order (the same for any thread count).
-void Step::body_forces() {
-  const std::size_t nb = model_.bodies.size();
-  diag_.body_force_x.assign(nb, 0.0);
-  diag_.body_force_y.assign(nb, 0.0);
-  if (nb == 0) return;
-  const ParticleSet& p = model_.particles;
-  const ConstArrays a(model_.particles, model_.fields);
-  const PairList& pl = impl_->pairs;
-  const Index n = static_cast<Index>(p.size());
-  impl_->ax.assign(p.size(), 0.0);
-  impl_->ay.assign(p.size(), 0.0);
-#pragma omp parallel for schedule(static)
-  for (Index k = 0; k < n; ++k) {
-    const auto jb = static_cast<std::size_t>(k);
-    if (!is_body(jb)) continue;
-    double fx = 0, fy = 0;
-    for (std::uint32_t q = pl.start[jb]; q < pl.start[jb + 1]; ++q) {
-      const std::uint32_t i = pl.j[q];
-      if (p.kind[i] != kFluid) continue;
-      // pl.dx = x_j - x_i here: grad_j W_ji = F (x_j - x_i); the force on j is -m_j m_i (...) grad_j W_ji
-      const double f = -p.mass[jb] * terms::pressure_gradient_factor(p.mass[i], a.pressure[jb], a.provisional_density[jb],
-                                                                       a.pressure[i], a.provisional_density[i], pl.F[q]);
-      fx += f * pl.dx[q];
-      fy += f * pl.dy[q];
-    }
-    impl_->ax[jb] = fx;
-    impl_->ay[jb] = fy;
-  }
-  for (std::size_t j = 0; j < p.size(); ++j)
-    if (is_body(j)) {
-      diag_.body_force_x[p.material[j] - 1u] += impl_->ax[j];
-      diag_.body_force_y[p.material[j] - 1u] += impl_->ay[j];
-    }
-}
-
-// The rigid bodies to t + dt: the prescribed law, or gravity and the fluid's force along the direction (free,
-// frictionless, trapezoidal travel as the fluid's positions); held at stop_travel once reached (D19). Their
-// particles are placed at x0 + s e with the velocity v e.
-void Step::move_bodies(double dt) {
-  if (model_.bodies.empty()) return;
-  ParticleSet& p = model_.particles;
-  double* travel = p.field(model_.fields.body_travel).data();
-  double* speed = p.field(model_.fields.body_speed).data();
-  double* acceleration = p.field(model_.fields.body_acceleration).data();
-  const double t_end = model_.state.time + dt;
-  const double gx = gravity_x(), gy = gravity_y();
-  std::vector<double> s(model_.bodies.size(), 0.0), v(model_.bodies.size(), 0.0), acc(model_.bodies.size(), 0.0);
-  std::vector<char> seen(model_.bodies.size(), 0);
-  for (std::size_t i = 0; i < p.size() ; ++i) {  // the bodies' state at t (held by each of their particles)
-    if (!is_body(i) || seen[p.material[i] - 1u]) continue;
-    const std::size_t b = p.material[i] - 1u;
-    seen[b] = 1;
-    s[b] = travel[i];
-    v[b] = speed[i];
-  }
-  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
-    const RigidBody& body = model_.bodies[b];
-    const double s0 = s[b], v0 = v[b];
-    if (s0 >= body.stop_travel || t_end <= body.start_time) {
-      v[b] = acc[b] = 0.0;
-      continue;
-    }
-    if (body.motion == RigidBody::Motion::free) {
-      const double force = diag_.body_force_x[b] * body.direction_x + diag_.body_force_y[b] * body.direction_y;
-      acc[b] = gx * body.direction_x + gy * body.direction_y + force / body.mass();
-      v[b] = v0 + acc[b] * dt;
-      s[b] = s0 + 0.5 * dt * (v0 + v[b]);
-    } else {
-      body.prescribed(t_end, s[b], v[b]);
-      acc[b] = (v[b] - v0) / dt;
-    }
-    if (s[b] >= body.stop_travel) {  // the stop: abrupt, as the experiment's
-      s[b] = body.stop_travel;
-      v[b] = acc[b] = 0.0;
-    }
-  }
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (!is_body(i)) continue;
-    const std::size_t b = p.material[i] - 1u;
-    const RigidBody& body = model_.bodies[b];
-    travel[i] = s[b];
-    speed[i] = v[b];
-    acceleration[i] = acc[b];
-    p.x[i] = p.x0[i] + s[b] * body.direction_x;
-    p.y[i] = p.y0[i] + s[b] * body.direction_y;
-    p.vx[i] = v[b] * body.direction_x;
-    p.vy[i] = v[b] * body.direction_y;
-  }
-}
-
-// Decision D23: a fluid particle closer than the clearance to a wall or body particle at r^{n+1} is moved out along
-// the walls' normal there, n = the kernel-weighted sum of the unit vectors from its wall neighbours to it, by the
-// clearance less its distance to the nearest, and its velocity along -n (relative to that wall particle's) removed.
-// The tangential velocity is kept: the wall is frictionless to this correction (using each wall particle's line of
-// centres instead braked a thin sheet sliding along a floor: the Ritter front at 0.52 of its speed). Wall
-// neighbours in the candidates' order (the same for any thread count); only the fluid particle moves.
-void Step::keep_off_walls() {
-  ParticleSet& p = model_.particles;
-  diag_.wall_contacts = 0;
-  const double clear = model_.settings.wall_clearance * model_.settings.particle_spacing;
-  if (clear <= 0) return;
-  const CandidateList& c = impl_->candidates;
-  const FluidKernel& kernel = impl_->kernel;
-  const double support2 = kernel.support() * kernel.support();
-  std::size_t contacts = 0;
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static) reduction(+ : contacts)
-  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
-    const auto i = static_cast<std::size_t>(ii);
-    if (p.kind[i] != kFluid) continue;
-    double nearest2 = clear * clear;
-    std::size_t wall = p.size();
-    for (std::uint32_t k = c.start[i]; k < c.start[i + 1]; ++k) {  // the nearest wall particle within the clearance
-      const std::uint32_t j = c.j[k];
-      if (p.kind[j] == kFluid) continue;
-      const double rx = p.x[i] - p.x[j], ry = p.y[i] - p.y[j];
-      const double r2 = rx * rx + ry * ry;
-      if (r2 > 0 && r2 < nearest2) {
-        nearest2 = r2;
-        wall = j;
-      }
-    }
-    if (wall == p.size()) continue;  // the common case: no wall particle that close
-    double nx = 0, ny = 0;
-    for (std::uint32_t k = c.start[i]; k < c.start[i + 1]; ++k) {  // the walls' normal there
-      const std::uint32_t j = c.j[k];
-      if (p.kind[j] == kFluid) continue;
-      const double rx = p.x[i] - p.x[j], ry = p.y[i] - p.y[j];
-      const double r2 = rx * rx + ry * ry;
-      if (r2 <= 0 || r2 >= support2) continue;
-      const double r = std::sqrt(r2), w = kernel.value(r) / r;
-      nx += w * rx;
-      ny += w * ry;
-    }
-    const double norm = std::sqrt(nx * nx + ny * ny);
-    if (norm <= 0) continue;
-    nx /= norm;
-    ny /= norm;
-    const double push = clear - std::sqrt(nearest2);
-    p.x[i] += push * nx;
-    p.y[i] += push * ny;
-    const double vn = (p.vx[i] - p.vx[wall]) * nx + (p.vy[i] - p.vy[wall]) * ny;
-    if (vn < 0) {
-      p.vx[i] -= vn * nx;
-      p.vy[i] -= vn * ny;
-    }
-    ++contacts;
-  }
-  diag_.wall_contacts = contacts;
-}
-
-// Fluid particles outside the domain are removed (the seed paper deletes particles that leave; D11).
-void Step::remove_escaped() {
-  ParticleSet& p = model_.particles;
-  const Settings& st = model_.settings;
-  diag_.removed_particles = 0;
-  std::vector<std::uint8_t> drop(p.size(), 0);
-  bool any = false;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != kFluid) continue;
-    const bool out = !(p.x[i] >= st.domain_x_min && p.x[i] <= st.domain_x_max && p.y[i] >= st.domain_y_min &&
-                       p.y[i] <= st.domain_y_max);
-    drop[i] = out;
-    any = any || out;
-  }
-  if (any) diag_.removed_particles = p.remove(drop);
 }
 
 // The fluid's energies plus the rigid bodies' (M v^2/2 and -M g.x_c at their centroids, M = density x area): the
