@@ -1,5 +1,6 @@
 // Safety map of a circular search (slope/safety_map.hpp).
 #include "slope/safety_map.hpp"
+#include "sphslope/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,13 +10,12 @@ namespace slope {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Angle of p about the circle's centre in (-3 pi / 2, pi / 2]: the lowest point of the circle (-pi / 2) lies
 // strictly inside that range, so the slip arc between entry and exit is the angle interval between them.
 double arc_angle(const Circle& c, const Point& p) {
   double a = std::atan2(p.y - c.yc, p.x - c.xc);
-  if (a > 0.5 * kPi) a -= 2.0 * kPi;
+  if (a > 0.5 * sphslope::pi) a -= 2.0 * sphslope::pi;
   return a;
 }
 

@@ -10,14 +10,13 @@
 
 #include "coupling/output/report.hpp"
 #include "coupling/output/svg.hpp"
+#include "sphslope/units.hpp"
 
 namespace coupling {
 
 namespace {
 
 using nlohmann::json;
-
-constexpr double kPi = 3.14159265358979323846;
 
 const char* const kStyle = R"(<style>
 @page { size: A4 portrait; margin: 9mm; }
@@ -88,7 +87,7 @@ std::string materials_table(const slope::Section& s) {
   char row[256];
   for (const slope::Material& m : s.materials) {
     std::snprintf(row, sizeof row, "<td>%.2f</td><td>%.1f</td><td>%.1f</td></tr>\n", m.unit_weight / 1e3,
-                  m.cohesion / 1e3, m.friction_angle * 180.0 / kPi);
+                  m.cohesion / 1e3, sphslope::degrees(m.friction_angle));
     out << "<tr><td class=\"l\">" << esc(m.name) << "</td>" << row;
   }
   out << "</table>\n";

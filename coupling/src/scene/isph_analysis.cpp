@@ -17,7 +17,8 @@ void read_numerics(JsonReader& r, sph::fluid::Settings& s) {
   s.rest_density = r.number_or("rest_density_kg_m3", s.rest_density, Bounds::positive());
   s.viscosity = r.number_or("viscosity_Pa_s", s.viscosity, Bounds::non_negative());
   s.surface_beta = r.number_or("surface_beta", s.surface_beta, Bounds::open(0.0, 1.0));
-  s.wall_clearance = r.number_or("wall_clearance", s.wall_clearance, Bounds::half_open(0.0, 1.0));
+  s.wall_clearance =
+      r.number_or("wall_clearance", s.wall_clearance, Bounds::half_open(0.0, sph::fluid::Settings::max_wall_clearance));
   s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, sph::fluid::Settings::max_cfl, true});
   s.max_time_step = r.number_or("max_time_step_s", s.max_time_step, Bounds::non_negative());
   s.solver_tolerance = r.number_or("solver_tolerance", s.solver_tolerance, Bounds::open(0.0, 1.0));

@@ -40,7 +40,7 @@ void read_numerics(JsonReader& r, sph::mps::Settings& s) {
       r.number_or("surface_beta", s.surface_beta, Bounds::closed(Settings::min_surface_beta, Settings::max_surface_beta));
   s.viscosity_cap = r.number_or("viscosity_cap_Pa_s", s.viscosity_cap, Bounds::positive());
   s.pressure_split = r.number_or("pressure_split", s.pressure_split, Bounds::closed(0.0, 1.0));
-  s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, 1.0, true});
+  s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, sph::mps::Settings::max_cfl, true});
   s.output_interval = r.number_or("output_interval_s", s.output_interval, Bounds::non_negative());
   read_choice(r, "regularisation", "\"consistent\" or \"as_printed\"", sph::mps::regularisation_from, s.regularisation);
   read_choice(r, "effective_pressure", "\"smoothed\", \"hydrostatic\" or \"smoothed_thin_layer\"",

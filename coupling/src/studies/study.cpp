@@ -17,18 +17,16 @@
 #include "coupling/analyses/sph_stage.hpp"
 #include "study_cases.hpp"
 #include "coupling/output/json_text.hpp"
+#include "sphslope/wall_clock.hpp"
 
 namespace coupling {
 namespace {
 
 using namespace study_detail;
 using Clock = std::chrono::steady_clock;
+using sphslope::seconds_since;
 
 constexpr const char* study_format = "sphslope-study/1";
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 std::string spacing_folder(double spacing) {
   std::ostringstream name;

@@ -15,6 +15,7 @@
 
 #include "sph/engine/atomic_file.hpp"
 #include "sph/engine/vtk_output.hpp"
+#include "sphslope/wall_clock.hpp"
 
 namespace sph {
 
@@ -35,7 +36,7 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+using sphslope::seconds_since;
 
 std::string frame_name(std::uint64_t k) {
   char buf[64];

@@ -18,13 +18,8 @@ CheckpointFingerprint fingerprint(const Model& model) {
 }  // namespace
 
 RunSummary run(Model& model, const RunOptions& options, const RunCallbacks& callbacks, const StepWatcher& watcher) {
-  Step stepper(model);
-  RunTarget target = run_target(model.particles, model.state, stepper, model.settings);
-  target.write_checkpoint = [&model](const std::string& path) { write_checkpoint(path, model); };
-  RunCallbacks cb = callbacks;
-  WatchObserver<Step> watch(stepper, watcher);
-  if (watcher) cb.observers.insert(cb.observers.begin(), &watch);
-  return run_loop(target, options, cb);
+  return run_model<Step>(model, options, callbacks, watcher,
+                         [](const std::string& path, const Model& m) { write_checkpoint(path, m); });
 }
 
 void write_checkpoint(const std::string& path, const Model& model) {

@@ -58,7 +58,7 @@ void Settings::validate() const {
   need(solver_tolerance > 0 && solver_tolerance < 1, "solver_tolerance must be in (0, 1)");
   need(solver_max_iterations > 0, "solver_max_iterations must be > 0");
   need(wall_pass_tolerance > 0 && wall_pass_tolerance < 1, "wall_pass_tolerance must be in (0, 1)");
-  need(wall_clearance >= 0 && wall_clearance < 1, "wall_clearance must be in [0, 1) spacings");
+  need(wall_clearance >= 0 && wall_clearance < max_wall_clearance, "wall_clearance must be in [0, 1) spacings");
   need(wall_passes >= 1 && wall_passes <= 20, "wall_passes must be in [1, 20]");
   need(wall_layers >= static_cast<int>(std::ceil(2.0 * h_over_dx - 1e-9)),
        "wall_layers must cover the kernel support (at least ceil(2 h/dx))");

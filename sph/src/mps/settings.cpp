@@ -111,7 +111,7 @@ void Settings::validate() const {
        "outside the paper's range", "0.80 to 0.99 (default 0.92)");
   need(std::isfinite(viscosity_cap) && viscosity_cap > 0, "viscosity_cap", viscosity_cap, "not a positive viscosity",
        "> 0 Pa s (default 200)");
-  need(cfl <= 1.0, "cfl", cfl, "above the stability limit of eq. 30's C_r", "(0, 1] (default 0.2; seed 0.1-0.25)");
+  need(cfl <= max_cfl, "cfl", cfl, "above the stability limit of eq. 30's C_r", "(0, 1] (default 0.2; seed 0.1-0.25)");
   need(pressure_split >= 0 && pressure_split <= 1, "pressure_split", pressure_split, "out of range",
        "0 to 1 (default 0.5; 0: the pressure force of the old level only)");
   need(end_time > 0, "end_time", end_time, "not positive", "> 0 s");

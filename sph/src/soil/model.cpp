@@ -9,6 +9,7 @@
 #include "sph/engine/neighbour_search.hpp"
 #include "sph/engine/require.hpp"
 #include "sph/soil/soil_step.hpp"
+#include "terms.hpp"
 
 namespace sph {
 
@@ -90,7 +91,7 @@ double time_step_estimate(const Model& model) {
   for (const auto& m : model.materials) c_max = std::max(c_max, MaterialConstants::from(m).sound_speed);
   if (!(c_max > 0)) throw std::invalid_argument("model: no materials");
   const Settings& s = model.settings;
-  return s.cfl * s.smoothing_length() / (c_max * (1.0 + 1.2 * s.viscosity.alpha));
+  return soil_terms::courant_time_step(s.cfl, s.smoothing_length(), c_max, s.viscosity.alpha, s.viscosity.beta, 0.0);
 }
 
 std::size_t estimate_memory_bytes(std::size_t n) {

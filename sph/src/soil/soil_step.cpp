@@ -1,6 +1,7 @@
 #include "sph/soil/soil_step.hpp"
 
 #include "step_impl.hpp"
+#include "terms.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -191,8 +192,7 @@ double SoilStep::stable_time_step() const {
   }
   const Settings& st = model_.settings;
   const double vmax = std::sqrt(v2max);
-  const double dt_c =
-      st.cfl * h_ / (c_max_ * (1.0 + 1.2 * st.viscosity.alpha) + vmax * (1.0 + 2.4 * st.viscosity.beta));
+  const double dt_c = soil_terms::courant_time_step(st.cfl, h_, c_max_, st.viscosity.alpha, st.viscosity.beta, vmax);
   const double amax = std::sqrt(a2max);
   const double dt_a = amax > 0 ? st.acceleration_safety * std::sqrt(h_ / amax) : std::numeric_limits<double>::infinity();
   return std::min(dt_c, dt_a);

@@ -56,6 +56,13 @@ inline void momentum(double mj, double txx, double tyy, double txy, const PairGe
   ay += mj * (txy * g.gwx + tyy * g.gwy);
 }
 
+// [Δt] The Courant time step of the soil, cfl h / (c_max (1 + 1.2 alpha) + |v|max (1 + 2.4 beta)) (Monaghan's
+// bound with the artificial viscosity's share; |v|max = 0 for the model at rest). SoilStep::stable_time_step takes
+// the smaller of this and the acceleration bound; time_step_estimate plans runs with it.
+inline double courant_time_step(double cfl, double h, double c_max, double alpha, double beta, double v_max) {
+  return cfl * h / (c_max * (1.0 + 1.2 * alpha) + v_max * (1.0 + 2.4 * beta));
+}
+
 // [X] XSPH (Monaghan 1992): the pair's weight m_j / rho_bar W_ij in v_i += chi sum_j (m_j/rho_bar) (v_j - v_i) W_ij.
 inline double xsph_weight(double mj, double rho_bar, double w_r) { return mj / rho_bar * w_r; }
 

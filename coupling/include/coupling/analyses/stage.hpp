@@ -16,6 +16,7 @@
 #include "coupling/compare/comparison.hpp"
 #include "coupling/compare/failure_surface.hpp"
 #include "coupling/scene/scene.hpp"
+#include "sphslope/wall_clock.hpp"
 
 namespace coupling {
 
@@ -53,9 +54,7 @@ StageOutcome run_isph_stage(const Scene& scene, StageContext& context);  // isph
 StageOutcome run_mps_stage(const Scene& scene, StageContext& context);  // mps_stage.cpp
 
 // Wall-clock seconds for the report's timing_s block.
-using StageClock = std::chrono::steady_clock;
-inline double seconds_since(StageClock::time_point start) {
-  return std::chrono::duration<double>(StageClock::now() - start).count();
-}
+using StageClock = sphslope::WallClock;
+using sphslope::seconds_since;
 
 }  // namespace coupling

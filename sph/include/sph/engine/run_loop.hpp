@@ -120,4 +120,19 @@ class WatchObserver : public Observer {
   const Watcher& watcher_;
 };
 
+// The run of a tank physics' model (the fluid's, the MPS's: a Model with particles, state and settings, and its
+// Step) through the run loop, its checkpoints written by `write_checkpoint`, with a watcher of the stepper after
+// every step (when given).
+template <class Step, class Model, class WriteCheckpoint>
+RunSummary run_model(Model& model, const RunOptions& options, const RunCallbacks& callbacks,
+                     const typename WatchObserver<Step>::Watcher& watcher, WriteCheckpoint write_checkpoint) {
+  Step stepper(model);
+  RunTarget target = run_target(model.particles, model.state, stepper, model.settings);
+  target.write_checkpoint = [&model, &write_checkpoint](const std::string& path) { write_checkpoint(path, model); };
+  RunCallbacks cb = callbacks;
+  WatchObserver<Step> watch(stepper, watcher);
+  if (watcher) cb.observers.insert(cb.observers.begin(), &watch);
+  return run_loop(target, options, cb);
+}
+
 }  // namespace sph

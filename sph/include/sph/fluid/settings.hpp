@@ -66,6 +66,7 @@ struct Settings : EngineSettings {
   // (decision D23): closer at the end of a step, it is moved out along the walls' normal to this distance and its
   // velocity into the wall removed. 0 turns it off. At rest the fluid is one spacing from the walls' first row.
   double wall_clearance = 0.5;
+  static constexpr double max_wall_clearance = 1.0;  // [spacings], excluded
 
   int wall_layers = 3;
 

@@ -122,7 +122,8 @@ struct Settings : EngineSettings {
   double gate_lift_distance = 0.0;
   // How far the gate has risen at time t [m]: min(gate_lift_speed t, gate_lift_distance).
   double gate_rise(double t) const;
-  // The engine's `cfl` (default 0.2) is the C_r of eq. 30 (the seed: 0.1-0.25); allowed (0, 1] here.
+  // The engine's `cfl` (default 0.2) is the C_r of eq. 30 (the seed: 0.1-0.25); allowed (0, max_cfl] here.
+  static constexpr double max_cfl = 1.0;
 
   double effective_radius() const { return re_over_dx * particle_spacing; }  // r_e [m]
 
