@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/analyses/tank_run.hpp"
-#include "coupling/output/monitor_table.hpp"
+#include "coupling/analyses/monitor_table.hpp"
 #include "sph/fluid/reference_fronts.hpp"
 #include "test_support.hpp"
 

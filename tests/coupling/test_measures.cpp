@@ -13,7 +13,7 @@
 #include "coupling/analyses/isph_measures.hpp"
 #include "coupling/analyses/isph_waves.hpp"
 #include "coupling/analyses/tank_monitors.hpp"
-#include "coupling/output/monitor_table.hpp"
+#include "coupling/analyses/monitor_table.hpp"
 #include "sph/fluid/cases.hpp"
 #include "sph/fluid/reference_fronts.hpp"
 #include "sph/soil/benchmarks.hpp"

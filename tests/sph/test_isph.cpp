@@ -22,7 +22,6 @@
 namespace {
 
 using namespace sph::fluid;
-constexpr double kG = sphslope::standard_gravity;
 
 // A chain of n nodes, node 0 given (P = 0), B = -1 between neighbours; source from a manufactured solution.
 PoissonSystem chain_system(std::size_t n, std::vector<double>& exact) {

@@ -23,8 +23,7 @@
 
 namespace {
 
-constexpr double rho = test_column::density, g = 9.81, gamma_w = 9810.0, W = test_column::width,
-                 H = test_column::height;
+constexpr double rho = test_column::density, g = 9.81, gamma_w = 9810.0, H = test_column::height;
 
 using test_column::elastic_box;
 

@@ -29,7 +29,7 @@ double fluid_energy(const sph::fluid::Model& model) {
 }
 
 BodyTracker::BodyTracker(const IsphAnalysis& analysis, const sph::fluid::Model& model)
-    : analysis_(analysis), fluid_energy_start_(fluid_energy(model)) {
+    : fluid_energy_start_(fluid_energy(model)) {
   for (std::size_t b = 0; b < analysis.bodies.size(); ++b) {
     BodyRecord r;
     r.name = analysis.bodies[b].name;

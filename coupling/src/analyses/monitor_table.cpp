@@ -1,5 +1,5 @@
-// monitors.csv (coupling/output/monitor_table.hpp).
-#include "coupling/output/monitor_table.hpp"
+// monitors.csv (coupling/analyses/monitor_table.hpp).
+#include "coupling/analyses/monitor_table.hpp"
 
 #include <cstdio>
 #include <cstdlib>

@@ -32,7 +32,6 @@ class BodyTracker {
   double fluid_energy_start() const { return fluid_energy_start_; }
 
  private:
-  const IsphAnalysis& analysis_;
   std::vector<BodyRecord> bodies_;
   double fluid_energy_start_ = 0;
 };

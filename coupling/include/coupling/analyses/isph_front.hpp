@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "coupling/output/monitor_table.hpp"
+#include "coupling/analyses/monitor_table.hpp"
 #include "sph/fluid/reference_fronts.hpp"
 
 namespace coupling {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/output/monitor_table.hpp"
+#include "coupling/analyses/monitor_table.hpp"
 #include "coupling/scene/tank_scene.hpp"
 
 namespace coupling {

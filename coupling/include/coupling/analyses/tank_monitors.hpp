@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/output/monitor_table.hpp"
+#include "coupling/analyses/monitor_table.hpp"
 #include "coupling/scene/tank_scene.hpp"
 #include "sph/engine/run_loop.hpp"
 

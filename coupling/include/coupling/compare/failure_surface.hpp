@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/scene/analysis_options.hpp"
 #include "slope/slices.hpp"
 
 namespace coupling {
@@ -16,13 +17,6 @@ struct ParticleSnapshot {
   std::vector<double> plastic_strain;  // accumulated equivalent plastic strain (-)
   std::vector<double> stress_xx, stress_yy;  // Pa, tension positive (empty when not recorded)
   double spacing = 0.0;                // m, initial particle spacing
-};
-
-struct BandOptions {
-  double plastic_strain_threshold = 0.1;  // particles at or above it belong to the band
-  double bin_width = 0.0;                 // m; 0 means 2 x spacing
-  int min_particles_per_bin = 2;          // bins with fewer band particles are skipped
-  bool initial_configuration = true;      // read the band on the initial positions (where LEM surfaces live)
 };
 
 struct FailureSurface {

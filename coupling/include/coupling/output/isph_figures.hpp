@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "coupling/analyses/isph_measures.hpp"
-#include "coupling/output/monitor_table.hpp"
+#include "coupling/analyses/monitor_table.hpp"
 #include "coupling/scene/tank_scene.hpp"
 
 namespace coupling {

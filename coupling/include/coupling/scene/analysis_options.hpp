@@ -8,12 +8,19 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/compare/failure_surface.hpp"
 #include "coupling/scene/json_reader.hpp"
 
 namespace coupling {
 
 // ---- analyses.compare
+
+// How the SPH failure surface is read out of the plastic-strain field (compare/failure_surface.hpp).
+struct BandOptions {
+  double plastic_strain_threshold = 0.1;  // particles at or above it belong to the band
+  double bin_width = 0.0;                 // m; 0 means 2 x spacing
+  int min_particles_per_bin = 2;          // bins with fewer band particles are skipped
+  bool initial_configuration = true;      // read the band on the initial positions (where LEM surfaces live)
+};
 
 // A length limit in metres, or in particle spacings of the SPH run.
 struct LengthLimit {
