@@ -7,7 +7,7 @@
 // tests/golden/reports.txt keeps, for each run, a 64-bit FNV-1a hash of every block of report.json down to the
 // second level (so a change names the block that changed), of report.html and of each figure. What varies from run
 // to run is left out first: wall-clock times (keys timing_s, seconds, wall_s, *_seconds, *_per_second; in the HTML
-// every number of seconds) and the temporary folder's path.
+// every number of seconds), the temporary folder's path and the source tree's (CI builds in another folder).
 //
 // Regenerate with scripts/update-golden "[reports]" -- only when a run's output is MEANT to change.
 #include "test_paths.hpp"
@@ -69,7 +69,12 @@ std::string replace_all(std::string text, const std::string& from, const std::st
   return text;
 }
 
-// The report without wall-clock times, with the run folder's path as <dir>.
+// A text with the run folder's path as <dir> and the source tree's (where the cases are read from) as <source>.
+std::string without_paths(const std::string& text, const std::string& dir) {
+  return replace_all(replace_all(text, dir, "<dir>"), test_paths::source_dir(), "<source>");
+}
+
+// The report without wall-clock times, with the paths of the run folder and the source tree replaced.
 json normalised(const json& value, const std::string& dir) {
   if (value.is_object()) {
     json out = json::object();
@@ -82,7 +87,7 @@ json normalised(const json& value, const std::string& dir) {
     for (const json& item : value) out.push_back(normalised(item, dir));
     return out;
   }
-  if (value.is_string()) return replace_all(value.get<std::string>(), dir, "<dir>");
+  if (value.is_string()) return without_paths(value.get<std::string>(), dir);
   return value;
 }
 
@@ -102,7 +107,7 @@ std::vector<std::string> fingerprint(const std::string& name, const fs::path& ru
   }
   if (fs::exists(run / "report.html")) {
     static const std::regex seconds(R"([0-9]+(\.[0-9]+)? s\b)");
-    const std::string html = std::regex_replace(replace_all(read_text(run / "report.html"), root.string(), "<dir>"),
+    const std::string html = std::regex_replace(without_paths(read_text(run / "report.html"), root.string()),
                                                 seconds, "# s");
     lines.push_back(name + "/report.html " + hex(fnv1a(html)));
   }
@@ -112,7 +117,7 @@ std::vector<std::string> fingerprint(const std::string& name, const fs::path& ru
     std::sort(figures.begin(), figures.end());
     for (const fs::path& f : figures)
       lines.push_back(name + "/figures/" + f.filename().string() + " " +
-                      hex(fnv1a(replace_all(read_text(f), root.string(), "<dir>"))));
+                      hex(fnv1a(without_paths(read_text(f), root.string()))));
   }
   return lines;
 }
