@@ -27,7 +27,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/analyses/pipeline.hpp"
+#include "coupling/output/run_files.hpp"
 #include "coupling/studies/study.hpp"
 #include "test_support.hpp"
 

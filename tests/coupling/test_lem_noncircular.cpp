@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/analyses/pipeline.hpp"
+#include "coupling/output/run_files.hpp"
 #include "coupling/scene/scene.hpp"
 #include "slope/search.hpp"
 

@@ -69,13 +69,14 @@ TEST_CASE("report.html lists errors and warnings once each, marks a failed run, 
           "[report_html]") {
   const coupling::Scene scene = coupling::parse_scene(
       read_text(fs::path(test_paths::source_dir()) / "cases" / "griffiths_lane_1999.json"), "gl.json");
-  json report = {{"status", "failed"},
-                 {"analyses", {"lem", "sph"}},
-                 {"errors", {"sph: the run stopped: non-positive density"}},
-                 {"sph", {{"warnings", {"gravity applied suddenly", "gravity applied suddenly"}}}},
-                 {"figures", {"figures/missing.svg"}},
-                 {"timing_s", {{"total", 1.5}}}};
-  const std::string html = coupling::report_html(scene, report, fs::temp_directory_path() / "no_such_run_folder");
+  coupling::RunResults results;
+  results.analyses = {"lem", "sph"};
+  results.sph.emplace().result.emplace().warnings = {"gravity applied suddenly", "gravity applied suddenly"};
+  results.seconds["total"] = 1.5;
+  results.lem.emplace().error = "lem: the limit-equilibrium search failed: out of memory";
+  const coupling::RunPage page{"failed", {"sph: the run stopped: non-positive density"}, {"figures/missing.svg"}};
+  const std::string html =
+      coupling::report_html(scene, results, page, fs::temp_directory_path() / "no_such_run_folder");
   CHECK_THAT(html, Catch::Contains("class=\"status failed\""));
   CHECK_THAT(html, Catch::Contains("<li>sph: the run stopped: non-positive density</li>"));
   CHECK(count(html, "gravity applied suddenly") == 1);

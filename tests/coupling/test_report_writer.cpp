@@ -1,4 +1,4 @@
-// The JSON writer of the program's files (coupling/output/json_text.hpp): JSON has no NaN or infinity, and a
+// The JSON writer of the program's files (coupling/scene/json_text.hpp): JSON has no NaN or infinity, and a
 // number that is not finite must never reach a file as a silent null (docs/reliability.md, "No NaN or infinity in
 // a report").
 #include <catch2/catch.hpp>
@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/output/json_text.hpp"
+#include "coupling/scene/json_text.hpp"
 #include "coupling/output/report.hpp"
 
 using Catch::Matchers::Contains;

@@ -12,7 +12,7 @@
 
 #include "coupling/scene/scene.hpp"
 #include "coupling/analyses/strength_reduction.hpp"
-#include "coupling/analyses/pipeline.hpp"
+#include "coupling/output/run_files.hpp"
 
 using namespace coupling;
 

@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/analyses/pipeline.hpp"
+#include "coupling/output/run_files.hpp"
 
 // A fresh, empty temporary folder, removed when the test ends.
 struct TemporaryFolder {

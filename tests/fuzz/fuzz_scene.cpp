@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "coupling/scene/scene.hpp"
-#include "coupling/analyses/pipeline.hpp"
+#include "coupling/output/run_files.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "coupling/scene/json_reader.hpp"
 #include "sph/engine/kernel.hpp"
 
 namespace coupling {
@@ -122,6 +123,10 @@ std::optional<StillTankCheck> still_tank_check(const sph::fluid::Model& model, c
   c.floor_pressure = (sp - slope * sy) / n;  // the line at y = the floor
   c.gradient_ratio = -slope / rho_g;
   return c;
+}
+
+std::string snapshot_file_name(double requested_time) {
+  return "isph_snapshot_" + format_number(requested_time) + "s.svg";
 }
 
 }  // namespace coupling

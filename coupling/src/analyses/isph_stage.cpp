@@ -1,6 +1,6 @@
 // The "isph" stage: the explicit three-step ISPH fluid (analyses.isph, docs/isph.md) in a tank, with its monitors
-// (surface gauges, the surge front) written to monitors.csv, its figures (figures/isph_*.svg) and its block of
-// report.json; --resume continues it from the run folder's checkpoint.
+// (surface gauges, the surge front), snapshots and the measures taken at its end; --resume continues it from the run
+// folder's checkpoint. coupling/output/isph_report writes its monitors.csv, figures and report block.
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -16,8 +16,7 @@
 #include "coupling/analyses/stage.hpp"
 #include "coupling/analyses/tank_monitors.hpp"
 #include "coupling/analyses/tank_run.hpp"
-#include "coupling/output/isph_figures.hpp"
-#include "coupling/output/isph_report.hpp"
+#include "coupling/analyses/isph_stage.hpp"
 #include "sph/engine/atomic_file.hpp"
 #include "sph/fluid/cases.hpp"
 #include "sph/fluid/run.hpp"
@@ -55,34 +54,26 @@ void echo_settings(const IsphAnalysis& a, const sph::fluid::Model& model, IsphSt
   result.fluid_mass_start = fluid_mass(model.particles);
 }
 
-// Writes each snapshot's figure into the run folder's figures/ (nothing without a run folder).
-SnapshotObserver::Writer snapshot_writer(const WorkflowOptions& options, const std::string& title) {
-  if (!options.output_dir) return {};
-  const std::filesystem::path dir = *options.output_dir / "figures";
-  return [dir, title](double requested, const IsphSnapshot& snapshot) {
-    std::filesystem::create_directories(dir);
-    const std::string name = snapshot_file_name(requested);
-    sph::write_file_atomically(dir / name, isph_snapshot_svg(snapshot, title));
-    return "figures/" + name;
-  };
+// Draws each snapshot into the run folder (coupling/output's figure; nothing without a run folder).
+SnapshotObserver::Writer snapshot_writer(const WorkflowOptions& options) {
+  if (!options.output_dir || !options.draw_snapshot) return {};
+  return options.draw_snapshot;
 }
 
 // --resume: the model, the monitors' rows, the snapshots already drawn and the figures taken over the run so far.
 void resume_isph(const WorkflowOptions& options, sph::fluid::Model& model, TankMonitorObserver& monitors,
                  WallCrossingObserver& crossing, SnapshotObserver& snapshots, BodyTracker& bodies,
                  IsphStageResult& result) {
-  const nlohmann::json earlier = resume_tank_run(
+  const std::optional<ReportRecord> record = resume_tank_run(
       options, "isph", [&model](const std::string& path) { sph::fluid::read_checkpoint(path, model); }, model.state,
       monitors);
-  result.max_density_error = earlier.value("max_density_error", 0.0);
-  result.mean_density_error = earlier.value("mean_density_error", 0.0);
-  result.largest_time_step = earlier.value("largest_time_step_s", 0.0);
-  result.wall_contacts = earlier.value("wall_contacts", std::size_t{0});
-  const nlohmann::json energy = earlier.value("energy_J_per_m", nlohmann::json::object());
-  bodies.restore(bodies_from_report(earlier), energy.value("fluid_start", bodies.fluid_energy_start()), model);
-  const nlohmann::json past = earlier.value("fluid_past_walls", nlohmann::json::object());
-  crossing.restore(past.value("most", std::size_t{0}),
-                   past.contains("first_at_s") ? std::optional<double>(past["first_at_s"].get<double>()) : std::nullopt);
+  const IsphCarryOver earlier = record && record->isph ? *record->isph : IsphCarryOver{};
+  result.max_density_error = earlier.max_density_error;
+  result.mean_density_error = earlier.mean_density_error;
+  result.largest_time_step = earlier.largest_time_step;
+  result.wall_contacts = earlier.wall_contacts;
+  bodies.restore(earlier.bodies, earlier.fluid_energy_start.value_or(bodies.fluid_energy_start()), model);
+  crossing.restore(earlier.past_walls_most, earlier.past_walls_first_time);
   std::vector<std::string> drawn;
   for (const double t : snapshots.times())
     if (t <= model.state.time + 1e-12 && std::filesystem::exists(*options.output_dir / "figures" / snapshot_file_name(t)))
@@ -167,7 +158,7 @@ IsphStageResult run_isph(const Scene& scene, const WorkflowOptions& options) {
   monitors.sample(model.particles, 0.0);
   WallCrossingObserver crossing(a.tank, a.settings.particle_spacing);
   SnapshotObserver snapshots(a.outputs.snapshot_times, model.fields.pressure, a.settings.particle_spacing,
-                             snapshot_writer(options, scene.name));
+                             snapshot_writer(options));
   BodyTracker bodies(a, model);
   if (options.resume) resume_isph(options, model, monitors, crossing, snapshots, bodies, result);
   sph::RunOptions run_options;
@@ -195,57 +186,29 @@ IsphStageResult run_isph(const Scene& scene, const WorkflowOptions& options) {
   return result;
 }
 
-// figures/isph_gauges.svg (with gauges) and figures/isph_front.svg (with the front), appended to result.figures.
-void write_isph_figures(const Scene& scene, const std::filesystem::path& dir, IsphStageResult& result) {
-  const IsphAnalysis& a = *scene.analyses.isph;
-  std::filesystem::create_directories(dir / "figures");
-  if (!a.monitors.gauges.empty()) {
-    sph::write_file_atomically(dir / "figures" / "isph_gauges.svg",
-                               isph_gauges_svg(result.monitors, a.monitors.gauges, a.monitors.still_water, scene.name));
-    result.figures.push_back("figures/isph_gauges.svg");
-  }
-  if (!a.monitors.front) return;
-  FrontFigureReferences references;
-  references.far_wall_x = a.tank.x_max;
-  if (const std::optional<FrontReference>& ref = a.outputs.front_reference) {
-    if (!ref->data.empty()) {
-      references.points = martin_moyce_points({ref->column_width, gravity_of(a), a.tank.x_min});
-      references.points_label = "Martin & Moyce (1952), n^2 = 2, a = " + format_number(ref->column_width) + " m";
-    }
-    references.ritter_dam_x = ref->ritter_dam_x;
-    references.ritter_depth = ref->ritter_depth;
-    references.gravity = gravity_of(a);
-  }
-  sph::write_file_atomically(dir / "figures" / "isph_front.svg", isph_front_svg(result.monitors, references, scene.name));
-  result.figures.push_back("figures/isph_front.svg");
-}
-
 }  // namespace
 
 StageOutcome run_isph_stage(const Scene& scene, StageContext& context) {
   const WorkflowOptions& options = context.options;
-  WorkflowResult& out = context.out;
+  RunResults& results = context.results;
+  StageRecord<IsphStageResult>& record = results.isph.emplace();
   StageOutcome outcome;
   const StageClock::time_point start = StageClock::now();
   try {
     IsphStageResult result = run_isph(scene, options);
-    if (options.output_dir) {
-      sph::write_file_atomically(*options.output_dir / "monitors.csv", monitors_csv(result.monitors));
-      write_isph_figures(scene, *options.output_dir, result);
-    }
-    out.report["isph"] = isph_report(result);
     tank_run_outcome(result.summary, "isph", outcome);
     if (options.log) {
       *options.log << "isph: " << result.fluid_particles << " fluid particles, " << result.summary.total_steps
                    << " steps to t = " << result.summary.simulated_time << " s, front x = " << result.front_x << " m\n";
       for (const std::string& w : result.warnings) *options.log << "isph: warning: " << w << "\n";
     }
+    record.result = std::move(result);
   } catch (const std::exception& error) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back(std::string("isph: ") + error.what());
-    out.report["isph"] = isph_error_report(outcome.errors.back());
+    record.error = outcome.errors.back();
   }
-  out.report["timing_s"]["isph"] = seconds_since(start);
+  results.seconds["isph"] = seconds_since(start);
   return outcome;
 }
 

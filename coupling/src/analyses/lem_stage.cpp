@@ -4,7 +4,6 @@
 #include <cmath>
 #include <exception>
 
-#include "coupling/output/report.hpp"
 
 namespace coupling {
 
@@ -27,45 +26,44 @@ std::vector<GivenSurfaceResult> analyse_given_surfaces(const slope::Section& sec
 
 StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
   const LemAnalysis& analysis = *context.lem;
-  WorkflowResult& out = context.out;
+  RunResults& results = context.results;
+  StageRecord<LemStageResult>& record = results.lem.emplace();
   StageOutcome outcome;
   const StageClock::time_point start = StageClock::now();
   const slope::Section& section = scene.section->section;
-  slope::SearchResult result;
+  slope::SearchResult search;
   try {
-    result = slope::search_critical(section, analysis.methods, analysis.search);
+    search = slope::search_critical(section, analysis.methods, analysis.search);
   } catch (const std::exception& error) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back(std::string("lem: the limit-equilibrium search failed: ") + error.what());
-    out.report["lem"] = {{"error", outcome.errors.back()}};
-    out.report["timing_s"]["lem"] = seconds_since(start);
+    record.error = outcome.errors.back();
+    results.seconds["lem"] = seconds_since(start);
     return outcome;
   }
-  out.report["timing_s"]["lem"] = seconds_since(start);
+  results.seconds["lem"] = seconds_since(start);
 
-  if (!result.error.empty()) {
+  if (!search.error.empty()) {
     if (analysis.has_search_limits) {
       // The user's limits admit no slip circle: that is a fault of the input, reported at its JSON path.
       outcome.status = ExitStatus::invalid_input;
-      outcome.errors.push_back("analyses.lem.search: the search limits admit no valid slip circle (" + result.error +
+      outcome.errors.push_back("analyses.lem.search: the search limits admit no valid slip circle (" + search.error +
                                "); widen entry_x_m, exit_x_m, radius_m or centre_grid, or leave \"search\" out "
                                "for the automatic search");
       return outcome;
     }
     outcome.status = ExitStatus::failed;
-    outcome.errors.push_back("lem: the automatic search found no valid slip circle: " + result.error);
+    outcome.errors.push_back("lem: the automatic search found no valid slip circle: " + search.error);
   }
-  out.lem_surfaces = analyse_given_surfaces(section, analysis);
-  out.report["lem"] = lem_report(section, analysis, result, out.lem_surfaces);
-  if (analysis.noncircular && result.error.empty()) {
+  LemStageResult result{analysis, {}, analyse_given_surfaces(section, analysis), std::nullopt};
+  if (analysis.noncircular && search.error.empty()) {
     const StageClock::time_point noncircular_start = StageClock::now();
-    out.lem_noncircular = slope::search_noncircular(section, result, analysis.search, *analysis.noncircular);
-    out.report["lem"]["noncircular"] = noncircular_report(section, *analysis.noncircular, *out.lem_noncircular);
-    out.report["timing_s"]["lem_noncircular"] = seconds_since(noncircular_start);
+    result.noncircular = slope::search_noncircular(section, search, analysis.search, *analysis.noncircular);
+    results.seconds["lem_noncircular"] = seconds_since(noncircular_start);
   }
   if (outcome.status == ExitStatus::ok) {
     bool any = false;
-    for (const slope::CriticalSurface& critical : result.methods) {
+    for (const slope::CriticalSurface& critical : search.methods) {
       any = any || (critical.mass && critical.result.factor_of_safety && std::isfinite(*critical.result.factor_of_safety));
     }
     if (!any) {
@@ -73,7 +71,8 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
       outcome.errors.push_back("lem: no method converged on any slip surface (see lem.methods.*.error)");
     }
   }
-  out.lem = std::move(result);
+  result.search = std::move(search);
+  record.result = std::move(result);
   return outcome;
 }
 

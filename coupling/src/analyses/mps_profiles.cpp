@@ -9,7 +9,6 @@
 #include <utility>
 
 #include "coupling/analyses/tank_monitors.hpp"
-#include "coupling/output/svg.hpp"
 
 namespace coupling {
 
@@ -134,55 +133,6 @@ DamBreakFigures dam_break_figures(const Profile& start, const Profile& now, doub
   f.bed_at_dam = mean_near(now, now.bed, dam_x, 2.0 * dx);
   f.bed_at_dam_start = mean_near(start, start.bed, dam_x, 2.0 * dx);
   return f;
-}
-
-std::string profiles_csv(const std::vector<Profile>& profiles) {
-  std::ostringstream os;
-  os.precision(10);
-  os << "time_s,x_m,surface_m,bed_m\n";
-  for (const Profile& p : profiles)
-    for (std::size_t k = 0; k < p.x.size(); ++k)
-      os << p.time << ',' << p.x[k] << ',' << p.surface[k] << ',' << p.bed[k] << '\n';
-  return os.str();
-}
-
-std::string profiles_svg(const std::vector<Profile>& profiles, const Tank& tank, const std::string& title,
-                         std::optional<double> dam_x) {
-  double top = tank.y_min;
-  for (const Profile& p : profiles)
-    for (const double s : p.surface) top = std::max(top, s);
-  top = tank.y_min + 1.1 * (top - tank.y_min);
-  const double exaggeration = std::max(1.0, std::floor(0.35 * (tank.x_max - tank.x_min) / (top - tank.y_min)));
-  SvgCanvas canvas(tank.x_min, tank.x_max, tank.y_min, top, 900.0, exaggeration);
-  canvas.title(title);
-  std::ostringstream ylabel;
-  ylabel << "y (m), drawn " << exaggeration << "x";
-  canvas.axes("x (m)", ylabel.str());
-  if (dam_x) {
-    canvas.polyline({{*dam_x, tank.y_min}, {*dam_x, top}}, "#999", 1.0, "2,3");
-  }
-  std::vector<std::tuple<std::string, std::string, std::string>> legend;
-  for (std::size_t k = 0; k < profiles.size(); ++k) {
-    const Profile& p = profiles[k];
-    const double t = profiles.size() > 1 ? static_cast<double>(k) / static_cast<double>(profiles.size() - 1) : 0.0;
-    const std::string colour = to_hex(colour_map(0.85 * t));
-    std::vector<slope::Point> surface, bed;
-    for (std::size_t b = 0; b < p.x.size(); ++b) {
-      surface.push_back({p.x[b], p.surface[b]});
-      bed.push_back({p.x[b], p.bed[b]});
-    }
-    canvas.polyline(surface, colour, 1.6);
-    canvas.polyline(bed, colour, 1.6, "6,3");
-    std::ostringstream label;
-    label.precision(3);
-    label << "t = " << p.time << " s";
-    legend.emplace_back(colour, "", label.str());
-  }
-  legend.emplace_back("#444", "", "surface (solid)");
-  legend.emplace_back("#444", "6,3", "bed: top of the grains (dashed)");
-  if (dam_x) legend.emplace_back("#999", "2,3", "the dam at t = 0");
-  canvas.legend(legend);
-  return canvas.str();
 }
 
 }  // namespace coupling

@@ -1,5 +1,6 @@
 // The "mps" stage: the weakly compressible MPS (analyses.mps, docs/mps.md) in a tank, with its monitors (surface
-// gauges, the front, the height at the left wall) written to monitors.csv and its block of report.json.
+// gauges, the front, the height at the left wall) and profiles; coupling/output/mps_report writes its monitors.csv,
+// profiles and report block.
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -16,7 +17,7 @@
 #include "coupling/analyses/stage.hpp"
 #include "coupling/analyses/tank_monitors.hpp"
 #include "coupling/analyses/tank_run.hpp"
-#include "coupling/output/mps_report.hpp"
+#include "coupling/analyses/mps_stage.hpp"
 #include "sph/engine/atomic_file.hpp"
 #include "sph/mps/run.hpp"
 
@@ -83,10 +84,10 @@ std::vector<std::string> thin_block_warnings(const MpsAnalysis& a) {
 // --resume: the model continues from the run folder's checkpoint (the monitors keep their earlier rows); returns
 // the largest speed of the run before it, from the earlier report.json.
 double resume_mps(const WorkflowOptions& options, sph::mps::Model& model, TankMonitorObserver& monitors) {
-  const nlohmann::json earlier = resume_tank_run(
+  const std::optional<ReportRecord> earlier = resume_tank_run(
       options, "mps", [&model](const std::string& path) { sph::mps::read_checkpoint(path, model); }, model.state,
       monitors);
-  return earlier.value("max_speed_m_s", 0.0);
+  return earlier && earlier->mps ? earlier->mps->max_speed : 0.0;
 }
 
 // The settings the report echoes.
@@ -163,21 +164,12 @@ MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
 
 StageOutcome run_mps_stage(const Scene& scene, StageContext& context) {
   const WorkflowOptions& options = context.options;
-  WorkflowResult& out = context.out;
+  RunResults& results = context.results;
+  StageRecord<MpsStageResult>& record = results.mps.emplace();
   StageOutcome outcome;
   const StageClock::time_point start = StageClock::now();
   try {
-    const MpsStageResult result = run_mps(*scene.analyses.mps, options);
-    out.report["mps"] = mps_report(result);
-    if (options.output_dir) {
-      sph::write_file_atomically(*options.output_dir / "monitors.csv", monitors_csv(result.monitors));
-      if (!result.profiles.empty()) {
-        const MpsAnalysis& a = *scene.analyses.mps;
-        sph::write_file_atomically(*options.output_dir / "profiles.csv", profiles_csv(result.profiles));
-        sph::write_file_atomically(*options.output_dir / "profiles.svg",
-                                   profiles_svg(result.profiles, a.tank, scene.name, a.dam_x));
-      }
-    }
+    MpsStageResult result = run_mps(*scene.analyses.mps, options);
     tank_run_outcome(result.summary, "mps", outcome);
     if (options.log) {
       *options.log << "mps: " << result.moving_particles << " particles, " << result.summary.steps
@@ -185,12 +177,13 @@ StageOutcome run_mps_stage(const Scene& scene, StageContext& context) {
                    << " m, height at the left wall " << result.wall_height_end << " m\n";
       for (const std::string& w : result.warnings) *options.log << "mps: warning: " << w << "\n";
     }
+    record.result = std::move(result);
   } catch (const std::exception& error) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back(std::string("mps: ") + error.what());
-    out.report["mps"] = mps_error_report(outcome.errors.back());
+    record.error = outcome.errors.back();
   }
-  out.report["timing_s"]["mps"] = seconds_since(start);
+  results.seconds["mps"] = seconds_since(start);
   return outcome;
 }
 

@@ -13,7 +13,6 @@
 #include <cstdio>
 #include <ostream>
 
-#include "coupling/output/sph_report.hpp"
 #include "coupling/scene/json_reader.hpp"
 #include "coupling/analyses/sph_model.hpp"
 #include "sph/soil/checkpoint.hpp"
@@ -269,7 +268,8 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
 // The "sph" stage of the pipeline: runs the SPH analysis and hands its final particle state to the comparison.
 StageOutcome run_sph_analysis_stage(const Scene& scene, StageContext& context) {
   const WorkflowOptions& options = context.options;
-  WorkflowResult& out = context.out;
+  RunResults& results = context.results;
+  StageRecord<SphStageResult>& record = results.sph.emplace();
   StageOutcome outcome;
   const StageClock::time_point start = StageClock::now();
   SphStageOptions sph_options;
@@ -287,19 +287,19 @@ StageOutcome run_sph_analysis_stage(const Scene& scene, StageContext& context) {
   } catch (const std::exception& error) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back(std::string("sph: ") + error.what());
-    out.report["sph"] = sph_error_report(outcome.errors.back());
-    out.report["timing_s"]["sph"] = seconds_since(start);
+    record.error = outcome.errors.back();
+    results.seconds["sph"] = seconds_since(start);
     return outcome;
   }
-  out.report["sph"] = sph_report(result);
-  out.report["timing_s"]["sph"] = seconds_since(start);
+  results.seconds["sph"] = seconds_since(start);
   if (!result.ok) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back("sph: " + result.error);
   }
   // After a blow-up the particle state is the diverged one (non-finite or meaningless values): no comparison or
   // figure is drawn from it (the last good frame is in frames/).
-  if (result.summary.reason != sph::StopReason::blow_up) context.final_state = std::move(result.final_state);
+  if (result.summary.reason != sph::StopReason::blow_up) results.sph_final_state = std::move(result.final_state);
+  record.result = std::move(result);
   return outcome;
 }
 

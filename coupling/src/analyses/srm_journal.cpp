@@ -4,7 +4,7 @@
 #include <fstream>
 
 #include "sph/engine/atomic_file.hpp"
-#include "coupling/output/json_text.hpp"
+#include "coupling/scene/json_text.hpp"
 
 namespace coupling {
 

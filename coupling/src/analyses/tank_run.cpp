@@ -11,7 +11,7 @@
 
 namespace coupling {
 
-nlohmann::json resume_tank_run(const WorkflowOptions& options, const std::string& analysis,
+std::optional<ReportRecord> resume_tank_run(const WorkflowOptions& options, const std::string& analysis,
                                const std::function<void(const std::string& path)>& read_checkpoint,
                                const sph::RunState& state, TankMonitorObserver& monitors) {
   if (!options.output_dir) throw std::runtime_error("--resume needs the run folder (-o DIR) that holds checkpoint.bin");
@@ -21,13 +21,9 @@ nlohmann::json resume_tank_run(const WorkflowOptions& options, const std::string
   read_checkpoint(checkpoint.string());
   std::ifstream csv(*options.output_dir / "monitors.csv");
   monitors.restore(std::string(std::istreambuf_iterator<char>(csv), {}), state.time);
-  std::ifstream report(*options.output_dir / "report.json");
-  const nlohmann::json earlier = nlohmann::json::parse(report, nullptr, false);
   if (options.log)
     *options.log << analysis << ": resuming at t = " << state.time << " s (step " << state.step << ")\n";
-  if (earlier.is_discarded() || !earlier.contains(analysis) || !earlier[analysis].is_object())
-    return nlohmann::json::object();
-  return earlier[analysis];
+  return read_report_record(*options.output_dir / "report.json");
 }
 
 void tank_run_outcome(const sph::RunSummary& summary, const std::string& analysis, StageOutcome& outcome) {

@@ -20,9 +20,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/analyses/report_record.hpp"
 #include "coupling/output/batch_summary.hpp"
+#include "coupling/output/comparison_report.hpp"
 #include "sph/engine/atomic_file.hpp"
-#include "coupling/output/json_text.hpp"
+#include "coupling/scene/json_text.hpp"
 
 extern char** environ;
 
@@ -38,19 +40,11 @@ void on_batch_interrupt(int) { batch_interrupted = 1; }
 // What a scene's run folder says about it.
 enum class RunState { fresh, interrupted, finished };
 
-std::optional<nlohmann::json> read_report(const fs::path& folder) {
-  std::ifstream in(folder / "report.json");
-  if (!in) return std::nullopt;
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception&) {
-    return std::nullopt;  // never torn (atomic writes), but a foreign file is not a report
-  }
-}
+std::optional<ReportRecord> read_report(const fs::path& folder) { return read_report_record(folder / "report.json"); }
 
 RunState run_state(const fs::path& folder) {
   if (const auto report = read_report(folder)) {
-    const bool interrupted = report->contains("sph") && (*report)["sph"].value("stopped_because", "") == "interrupted";
+    const bool interrupted = report->sph_stopped_because == "interrupted";
     return interrupted && fs::exists(folder / "checkpoint.bin") ? RunState::interrupted : RunState::finished;
   }
   return fs::exists(folder / "checkpoint.bin") ? RunState::interrupted : RunState::fresh;
@@ -90,8 +84,8 @@ pid_t launch(const fs::path& program, Job& job, int threads) {
   return pid;
 }
 
-std::string status_of(const std::optional<nlohmann::json>& report, const std::optional<int>& exit_status) {
-  if (report) return report->value("status", "failed");
+std::string status_of(const std::optional<ReportRecord>& report, const std::optional<int>& exit_status) {
+  if (report) return report->status;
   if (exit_status && *exit_status == 2) return "invalid_input";
   return exit_status ? "failed" : "not_run";
 }
@@ -125,6 +119,11 @@ std::optional<int> last_exit_status(const Job& job) {
   return std::nullopt;
 }
 
+nlohmann::json optional_json(const std::optional<double>& value) { return value ? nlohmann::json(*value) : nlohmann::json(); }
+nlohmann::json optional_json(const std::optional<slope::Point>& p) {
+  return p ? nlohmann::json::array({p->x, p->y}) : nlohmann::json();
+}
+
 nlohmann::json summary_row(const Job& job, const fs::path& output_dir) {
   const auto report = read_report(job.folder);
   nlohmann::json row;
@@ -132,31 +131,26 @@ nlohmann::json summary_row(const Job& job, const fs::path& output_dir) {
   row["folder"] = fs::relative(job.folder, output_dir).string();
   row["status"] = status_of(report, last_exit_status(job));
   row["exit_status"] = exit_of(row["status"]);
-  row["seconds"] = report ? (*report)["timing_s"].value("total", 0.0) : job.seconds;
+  row["seconds"] = report ? report->total_seconds : job.seconds;
   nlohmann::json fs_by_method = nlohmann::json::object();
-  if (report && report->contains("lem"))
-    for (const auto& [key, method] : (*report)["lem"]["methods"].items())
-      fs_by_method[key] = method.contains("factor_of_safety") ? method["factor_of_safety"] : nlohmann::json();
+  if (report)
+    for (const auto& [key, fs] : report->lem_factors) fs_by_method[key] = optional_json(fs);
   row["factor_of_safety"] = fs_by_method;
-  if (report && report->contains("comparison") && (*report)["comparison"].contains("methods")) {
-    const auto& comparison = (*report)["comparison"];
-    const auto& methods = comparison["methods"];
-    const std::string key = methods.contains("bishop") ? "bishop" : methods.begin().key();
-    const auto& m = methods[key];
-    row["comparison"] = {{"method", key},
-                         {"entry_offset_m", m.value("entry_offset_m", nlohmann::json())},
-                         {"exit_offset_m", m.value("exit_offset_m", nlohmann::json())},
-                         {"mean_normal_distance_m", m.value("mean_normal_distance_m", nlohmann::json())},
-                         {"intersection_over_union", m.value("intersection_over_union", nlohmann::json())}};
-    if (comparison.contains("acceptance")) {
-      row["accepted"] = comparison["acceptance"]["accepted"];
-      row["criteria"] = comparison["acceptance"]["criteria"];
+  if (report && report->comparison) {
+    const ComparisonRecord& c = *report->comparison;
+    row["comparison"] = {{"method", c.method},
+                         {"entry_offset_m", optional_json(c.entry_offset)},
+                         {"exit_offset_m", optional_json(c.exit_offset)},
+                         {"mean_normal_distance_m", optional_json(c.mean_normal_distance)},
+                         {"intersection_over_union", optional_json(c.intersection_over_union)}};
+    if (c.acceptance) {
+      row["accepted"] = c.acceptance->accepted;
+      row["criteria"] = acceptance_json(*c.acceptance)["criteria"];
     }
   }
   if (row["exit_status"] == 1 || row["exit_status"] == 2) {
-    std::string reason = report && report->contains("errors") && !(*report)["errors"].empty()
-                             ? (*report)["errors"][0].get<std::string>()
-                             : log_tail(fs::path(job.folder.string() + ".log"));
+    std::string reason = report && !report->errors.empty() ? report->errors.front()
+                                                           : log_tail(fs::path(job.folder.string() + ".log"));
     row["reason"] = reason.empty() ? "the scene was not run" : reason;
   }
   return row;

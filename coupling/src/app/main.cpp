@@ -21,7 +21,7 @@
 #include "coupling/scene/scene.hpp"
 #include "coupling/analyses/sph_stage.hpp"
 #include "coupling/studies/study.hpp"
-#include "coupling/analyses/pipeline.hpp"
+#include "coupling/output/run_files.hpp"
 #include "coupling/output/tables.hpp"
 
 namespace {
@@ -52,21 +52,20 @@ bool cpu_runs_this_build() {
 }
 
 // The strength-reduction factor of safety next to the limit-equilibrium ones, on stdout.
-void print_srm(const nlohmann::json& srm) {
-  if (!srm.contains("factor_of_safety") || !srm["factor_of_safety"].is_number()) {
-    std::cout << "strength reduction (SPH): no factor of safety"
-              << (srm.contains("error") ? " (" + srm["error"].get<std::string>() + ")" : std::string()) << "\n";
+void print_srm(const coupling::StageRecord<coupling::SrmResult>& record) {
+  const coupling::SrmResult* srm = record.result ? &*record.result : nullptr;
+  if (!srm || !srm->bisection.bracketed) {
+    const std::string error = !srm ? record.error : srm->bisection.error.empty() ? "" : "srm: " + srm->bisection.error;
+    std::cout << "strength reduction (SPH): no factor of safety" << (error.empty() ? std::string() : " (" + error + ")")
+              << "\n";
     return;
   }
-  std::printf("strength reduction (SPH, dx = %g m): FS_SPH = %.3f in [%.3f, %.3f]\n",
-              srm.value("particle_spacing_m", 0.0), srm["factor_of_safety"].get<double>(),
-              srm["bracket"][0].get<double>(), srm["bracket"][1].get<double>());
-  if (srm.contains("lem_factor_of_safety"))
-    for (const auto& [method, fs] : srm["lem_factor_of_safety"].items())
-      if (fs.is_number()) std::printf("  limit equilibrium %-26s FS = %.3f\n", method.c_str(), fs.get<double>());
+  std::printf("strength reduction (SPH, dx = %g m): FS_SPH = %.3f in [%.3f, %.3f]\n", srm->particle_spacing_m,
+              srm->bisection.factor_of_safety, srm->bisection.lo, srm->bisection.hi);
+  for (const auto& [method, fs] : srm->lem_fs_by_method)
+    std::printf("  limit equilibrium %-26s FS = %.3f\n", method.c_str(), fs);
   std::fflush(stdout);
-  if (srm.contains("warnings"))
-    for (const auto& warning : srm["warnings"]) std::cerr << "srm: warning: " << warning.get<std::string>() << "\n";
+  for (const std::string& warning : srm->warnings) std::cerr << "srm: warning: " << warning << "\n";
 }
 
 int print_outcome(const std::filesystem::path& scene_file, const coupling::WorkflowResult& result,
@@ -90,15 +89,13 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
                 << load.name << ", limit equilibrium with it\n";
     return 0;
   }
-  if (result.lem && result.scene) {
-    const coupling::LemAnalysis analysis =
-        result.scene->analyses.lem ? *result.scene->analyses.lem : coupling::default_lem_analysis();
+  if (const coupling::LemStageResult* lem = result.results.lem_result(); lem && result.scene) {
     std::cout << "limit equilibrium: " << result.scene->name << " (" << scene_file.string() << ")\n"
-              << coupling::lem_table(analysis, *result.lem);
-    if (result.lem_noncircular) std::cout << coupling::noncircular_table(*result.lem_noncircular);
-    if (!result.lem_surfaces.empty()) std::cout << coupling::given_surfaces_table(result.lem_surfaces);
+              << coupling::lem_table(lem->analysis, lem->search);
+    if (lem->noncircular) std::cout << coupling::noncircular_table(*lem->noncircular);
+    if (!lem->surfaces.empty()) std::cout << coupling::given_surfaces_table(lem->surfaces);
   }
-  if (result.report.is_object() && result.report.contains("srm")) print_srm(result.report["srm"]);
+  if (result.results.srm) print_srm(*result.results.srm);
   for (const std::string& message : result.errors) std::cerr << "error: " << message << "\n";
   for (const std::string& line : result.rejections) std::cerr << "not accepted: " << line << "\n";
   if (result.report_file) {

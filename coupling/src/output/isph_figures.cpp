@@ -39,10 +39,6 @@ std::string colour_of(std::size_t k) { return kLineColours[k % std::size(kLineCo
 
 }  // namespace
 
-std::string snapshot_file_name(double requested_time) {
-  return "isph_snapshot_" + format_number(requested_time) + "s.svg";
-}
-
 std::string isph_snapshot_svg(const IsphSnapshot& s, const std::string& title) {
   double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0, p0 = 0.0, p1 = 0.0;
   for (std::size_t i = 0; i < s.x.size(); ++i) {

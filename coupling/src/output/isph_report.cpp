@@ -73,20 +73,6 @@ nlohmann::json bodies_json(const IsphStageResult& r) {
 
 }  // namespace
 
-std::vector<BodyRecord> bodies_from_report(const nlohmann::json& isph) {
-  std::vector<BodyRecord> out;
-  if (!isph.contains("bodies") || !isph["bodies"].is_array()) return out;
-  for (const nlohmann::json& j : isph["bodies"]) {
-    BodyRecord b;
-    b.name = j.value("name", "");
-    b.max_speed = j.value("max_speed_m_s", 0.0);
-    b.work_on_fluid = j.value("work_on_fluid_J_per_m", 0.0);
-    if (j.contains("stopped_at_s") && j["stopped_at_s"].is_number()) b.stopped_at = j["stopped_at_s"].get<double>();
-    out.push_back(b);
-  }
-  return out;
-}
-
 nlohmann::json isph_report(const IsphStageResult& r) {
   nlohmann::json j;
   j["status"] = r.summary.stopped_because == "end_time" ? "ok" : "failed";

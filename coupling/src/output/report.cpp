@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "coupling/output/json_text.hpp"
+#include "coupling/scene/json_text.hpp"
 #include "coupling/output/json_values.hpp"
 #include "sphslope/units.hpp"
 

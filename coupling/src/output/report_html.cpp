@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -15,8 +17,6 @@
 namespace coupling {
 
 namespace {
-
-using nlohmann::json;
 
 const char* const kStyle = R"(<style>
 @page { size: A4 portrait; margin: 9mm; }
@@ -42,38 +42,38 @@ ul { margin: 0.5mm 0; padding-left: 5mm; } .warn li { color: #8a4b00; }
 
 std::string esc(const std::string& s) { return xml_escape(s); }
 
-std::string fixed(const json& v, int digits = 3) {
-  if (!v.is_number()) return "&ndash;";
+// A number with `digits` decimals, or a dash when there is none (or it is not finite).
+std::string fixed(std::optional<double> v, int digits = 3) {
+  if (!v || !std::isfinite(*v)) return "&ndash;";
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.*f", digits, v.get<double>());
+  std::snprintf(buffer, sizeof buffer, "%.*f", digits, *v);
   return buffer;
 }
 
-const json& none() {
-  static const json value;
-  return value;
+std::optional<double> seconds_of(const RunResults& r, const char* key) {
+  const auto it = r.seconds.find(key);
+  return it == r.seconds.end() ? std::nullopt : std::optional<double>(it->second);
 }
 
-// The value at a path of keys, or null when any key is missing.
-const json& at(const json& j, std::initializer_list<const char*> path) {
-  const json* node = &j;
-  for (const char* key : path) {
-    if (!node->is_object() || !node->contains(key)) return none();
-    node = &(*node)[key];
-  }
-  return *node;
+// The factor of safety a report gives for a critical surface: its value when the method solved it.
+std::optional<double> solved_factor(const slope::CriticalSurface& critical) {
+  const auto& fs = critical.result.factor_of_safety;
+  if (critical.mass && fs && std::isfinite(*fs)) return *fs;
+  return std::nullopt;
 }
 
-std::string header(const Scene& scene, const json& report) {
-  const std::string status = report.value("status", "ok");
+template <class Record>
+auto result_of(const std::optional<Record>& record) -> decltype(&*record->result) {
+  return record && record->result ? &*record->result : nullptr;
+}
+
+std::string header(const Scene& scene, const RunResults& results, const RunPage& page) {
   std::ostringstream out;
   out << "<h1>" << esc(scene.name) << "</h1>\n<p class=\"meta\">Scene " << esc(scene.file.string())
       << " &middot; sphslope " << esc(std::string(program_version())) << " &middot; analyses: ";
-  const json& analyses = at(report, {"analyses"});
-  for (std::size_t k = 0; analyses.is_array() && k < analyses.size(); ++k)
-    out << (k ? ", " : "") << esc(analyses[k].get<std::string>());
-  out << " &middot; run time " << fixed(at(report, {"timing_s", "total"}), 1) << " s &middot; <span class=\"status "
-      << esc(status) << "\">" << esc(status) << "</span></p>\n";
+  for (std::size_t k = 0; k < results.analyses.size(); ++k) out << (k ? ", " : "") << esc(results.analyses[k]);
+  out << " &middot; run time " << fixed(seconds_of(results, "total"), 1) << " s &middot; <span class=\"status "
+      << esc(page.status) << "\">" << esc(page.status) << "</span></p>\n";
   if (!scene.source.empty()) out << "<p class=\"meta source\">Source: " << esc(scene.source) << "</p>\n";
   out << "<p class=\"meta\">Every number of the run is in report.json beside this page (units in every key); "
          "forces per metre of slope width.</p>\n";
@@ -120,108 +120,126 @@ std::string geometry_lines(const slope::Section& s) {
   return out;
 }
 
-std::string sph_lines(const json& report) {
+std::string sph_lines(const RunResults& results) {
   std::ostringstream out;
-  if (const json& sph = at(report, {"sph"}); sph.is_object() && sph.contains("particles")) {
-    out << "<p>SPH: spacing " << fixed(sph["particle_spacing_m"], 3) << " m, " << sph.value("soil_particles", 0)
-        << " soil particles, " << fixed(sph["simulated_time_s"], 2) << " s simulated in " << sph.value("steps", 0)
-        << " steps (" << fixed(sph["seconds"], 1) << " s wall); largest displacement "
-        << fixed(sph["max_displacement_m"], 3) << " m, energy ratio " << fixed(at(sph, {"energy_balance", "ratio"}), 3)
+  if (const SphStageResult* sph = result_of(results.sph)) {
+    out << "<p>SPH: spacing " << fixed(sph->model.particle_spacing_m, 3) << " m, " << sph->model.soil_particles
+        << " soil particles, " << fixed(sph->summary.simulated_time, 2) << " s simulated in "
+        << sph->summary.total_steps << " steps (" << fixed(sph->summary.wall_seconds, 1)
+        << " s wall); largest displacement " << fixed(sph->max_displacement_m, 3) << " m, energy ratio "
+        << fixed(sph->energy_balance ? std::optional<double>(sph->energy_balance->ratio) : std::nullopt, 3)
         << ".</p>\n";
   }
-  if (const json& isph = at(report, {"isph"}); isph.is_object() && isph.contains("steps")) {
-    out << "<p>ISPH (" << esc(isph.value("pressure", "")) << " pressure): spacing " << fixed(isph["particle_spacing_m"], 4)
-        << " m, " << at(isph, {"particles", "fluid"}).dump() << " fluid particles, " << fixed(isph["simulated_time_s"], 3)
-        << " s simulated in " << isph.value("steps", 0) << " steps; front at x = " << fixed(isph["front_x_m"], 3)
-        << " m; fluid mass " << fixed(at(isph, {"fluid_mass_kg_per_m", "start"}), 3) << " &rarr; "
-        << fixed(at(isph, {"fluid_mass_kg_per_m", "end"}), 3) << " kg/m; largest density error "
-        << fixed(isph["max_density_error"], 4) << ". Monitors: " << esc(at(isph, {"monitors", "file"}).dump())
-        << ".</p>\n";
+  if (const IsphStageResult* isph = result_of(results.isph)) {
+    out << "<p>ISPH (" << esc(isph->pressure_mode) << " pressure): spacing " << fixed(isph->particle_spacing, 4)
+        << " m, " << isph->fluid_particles << " fluid particles, " << fixed(isph->summary.simulated_time, 3)
+        << " s simulated in " << isph->summary.total_steps << " steps; front at x = " << fixed(isph->front_x, 3)
+        << " m; fluid mass " << fixed(isph->fluid_mass_start, 3) << " &rarr; " << fixed(isph->fluid_mass_end, 3)
+        << " kg/m; largest density error " << fixed(isph->max_density_error, 4) << ". Monitors: "
+        << esc("\"monitors.csv\"") << ".</p>\n";
   }
-  if (const json& mps = at(report, {"mps"}); mps.is_object() && mps.contains("steps")) {
-    out << "<p>WC-MPS: spacing " << fixed(mps["particle_spacing_m"], 4) << " m, " << at(mps, {"particles", "moving"}).dump()
-        << " particles, " << fixed(mps["simulated_time_s"], 3) << " s simulated in " << mps.value("steps", 0)
-        << " steps; deposit front x = " << fixed(at(mps, {"deposit", "front_x_m", "end"}), 3)
-        << " m, height at the left wall " << fixed(at(mps, {"deposit", "wall_height_m", "end"}), 3)
-        << " m, largest speed at the end " << fixed(at(mps, {"deposit", "max_speed_end_m_s"}), 4)
-        << " m/s. Monitors: " << esc(at(mps, {"monitors", "file"}).dump()) << ".</p>\n";
+  if (const MpsStageResult* mps = result_of(results.mps)) {
+    out << "<p>WC-MPS: spacing " << fixed(mps->particle_spacing, 4) << " m, " << mps->moving_particles
+        << " particles, " << fixed(mps->summary.simulated_time, 3) << " s simulated in " << mps->summary.total_steps
+        << " steps; deposit front x = " << fixed(mps->front_end, 3) << " m, height at the left wall "
+        << fixed(mps->wall_height_end, 3) << " m, largest speed at the end " << fixed(mps->max_speed_end, 4)
+        << " m/s. Monitors: " << esc("\"monitors.csv\"") << ".</p>\n";
   }
-  if (const json& srm = at(report, {"srm"}); srm.is_object() && srm.contains("factor_of_safety")) {
-    out << "<p>SPH strength reduction: FS = <b>" << fixed(srm["factor_of_safety"]) << "</b> (spacing "
-        << fixed(srm["particle_spacing_m"], 2) << " m; LE Bishop " << fixed(srm["lem_bishop"]) << ").</p>\n";
+  if (const SrmResult* srm = result_of(results.srm)) {
+    const BisectionResult& b = srm->bisection;
+    out << "<p>SPH strength reduction: FS = <b>"
+        << fixed(b.bracketed ? std::optional<double>(b.factor_of_safety) : std::nullopt) << "</b> (spacing "
+        << fixed(srm->particle_spacing_m, 2) << " m; LE Bishop " << fixed(srm->lem_bishop) << ").</p>\n";
   }
   return out.str();
 }
 
-std::string scene_summary(const Scene& scene, const json& report) {
+std::string scene_summary(const Scene& scene, const RunResults& results) {
   std::ostringstream out;
   out << "<h2>Scene</h2>\n";
   if (scene.section) {
-    out << geometry_lines(scene.section->section) << materials_table(scene.section->section) << sph_lines(report);
+    out << geometry_lines(scene.section->section) << materials_table(scene.section->section) << sph_lines(results);
   } else {
-    out << sph_lines(report);
+    out << sph_lines(results);
   }
   return out.str();
 }
 
-// One column of the factor-of-safety table: a heading and the factor per method key.
+// One column of the factor-of-safety table: a heading and the factor per method key (none: not computed).
 struct FsColumn {
   std::string heading;
-  std::function<const json&(const std::string&)> factor;
+  std::function<std::optional<double>(const std::string&)> factor;
 };
 
-std::vector<FsColumn> fs_columns(const json& report) {
+// The last entry of `list` whose method key is `key` (as the report's objects keep the last one).
+template <class List, class KeyOf>
+auto last_of(const List& list, const std::string& key, KeyOf key_of) -> decltype(&*list.begin()) {
+  decltype(&*list.begin()) found = nullptr;
+  for (const auto& item : list)
+    if (key_of(item) == key) found = &item;
+  return found;
+}
+
+std::string method_key_of(const slope::CriticalSurface& c) { return std::string(slope::method_key(c.method)); }
+
+std::vector<FsColumn> fs_columns(const LemStageResult& lem, const ComparisonResult* comparison) {
   std::vector<FsColumn> columns;
-  columns.push_back({"critical circle", [&report](const std::string& k) -> const json& {
-                       return at(report, {"lem", "methods", k.c_str(), "factor_of_safety"});
+  columns.push_back({"critical circle", [&lem](const std::string& k) -> std::optional<double> {
+                       const slope::CriticalSurface* c = last_of(lem.search.methods, k, method_key_of);
+                       return c ? solved_factor(*c) : std::nullopt;
                      }});
-  if (at(report, {"lem", "noncircular"}).is_object())
-    columns.push_back({"non-circular search", [&report](const std::string& k) -> const json& {
+  if (lem.noncircular)
+    columns.push_back({"non-circular search", [&lem](const std::string& k) -> std::optional<double> {
                          // a method the search leaves alone (Ordinary, defined for circles) has no entry here
-                         if (at(report, {"lem", "noncircular", "methods", k.c_str(), "searched"}) == false)
-                           return none();
-                         return at(report, {"lem", "noncircular", "methods", k.c_str(), "factor_of_safety"});
+                         const slope::NonCircularSurface* s =
+                             last_of(lem.noncircular->methods, k, [](const slope::NonCircularSurface& n) {
+                               return std::string(slope::method_key(n.method));
+                             });
+                         if (!s || !s->searched) return std::nullopt;
+                         return solved_factor(slope::CriticalSurface{s->method, s->mass, s->result});
                        }});
-  if (at(report, {"comparison", "methods"}).is_object())
-    columns.push_back({"on the SPH surface", [&report](const std::string& k) -> const json& {
-                         return at(report, {"comparison", "methods", k.c_str(), "factor_of_safety_on_sph_surface"});
+  if (comparison)
+    columns.push_back({"on the SPH surface", [comparison](const std::string& k) -> std::optional<double> {
+                         const MethodComparison* m =
+                             last_of(comparison->methods, k, [](const MethodComparison& c) { return c.method; });
+                         return m ? m->factor_of_safety_on_sph_surface : std::nullopt;
                        }});
-  const json& surfaces = at(report, {"lem", "surfaces"});
-  for (std::size_t i = 0; surfaces.is_array() && i < surfaces.size() && i < 3; ++i)
-    columns.push_back({"surface &ldquo;" + esc(surfaces[i].value("name", "")) + "&rdquo;",
-                       [&surfaces, i](const std::string& k) -> const json& {
-                         return at(surfaces[i], {"methods", k.c_str(), "factor_of_safety"});
+  for (std::size_t i = 0; i < lem.surfaces.size() && i < 3; ++i)
+    columns.push_back({"surface &ldquo;" + esc(lem.surfaces[i].name) + "&rdquo;",
+                       [&lem, i](const std::string& k) -> std::optional<double> {
+                         const slope::CriticalSurface* c = last_of(lem.surfaces[i].methods, k, method_key_of);
+                         return c ? solved_factor(*c) : std::nullopt;
                        }});
   return columns;
 }
 
-std::string fs_table(const json& report) {
-  const json& keys = at(report, {"lem", "settings", "methods"});
-  if (!keys.is_array() || keys.empty()) return "";
-  const std::vector<FsColumn> columns = fs_columns(report);
+std::string fs_table(const RunResults& results) {
+  const LemStageResult* lem = results.lem_result();
+  if (!lem || lem->analysis.methods.empty()) return "";
+  std::vector<std::string> keys;
+  for (slope::Method m : lem->analysis.methods) keys.emplace_back(slope::method_key(m));
+  const std::vector<FsColumn> columns = fs_columns(*lem, results.comparison_result());
   std::vector<double> lowest(columns.size(), INFINITY);
-  for (const json& key : keys)
+  for (const std::string& key : keys)
     for (std::size_t c = 0; c < columns.size(); ++c)
-      if (const json& f = columns[c].factor(key.get<std::string>()); f.is_number())
-        lowest[c] = std::min(lowest[c], f.get<double>());
+      if (const std::optional<double> f = columns[c].factor(key)) lowest[c] = std::min(lowest[c], *f);
   std::ostringstream out;
   out << "<h2>Limit equilibrium: factor of safety</h2>\n<table><tr><th class=\"l\">method</th>";
   for (const FsColumn& c : columns) out << "<th>" << c.heading << "</th>";
   out << "</tr>\n";
-  for (const json& key : keys) {
-    const std::string k = key.get<std::string>();
+  for (const std::string& k : keys) {
     out << "<tr><td class=\"l\">" << esc(k) << "</td>";
     for (std::size_t c = 0; c < columns.size(); ++c) {
-      const json& f = columns[c].factor(k);
-      const bool low = f.is_number() && f.get<double>() == lowest[c];
+      const std::optional<double> f = columns[c].factor(k);
+      const bool low = f && *f == lowest[c];
       out << "<td" << (low ? " class=\"low\"" : "") << ">" << fixed(f) << "</td>";
     }
     out << "</tr>\n";
   }
   out << "</table>\n<p class=\"meta\">Lowest factor in each column in bold; &ndash;: not computed (see the "
          "warnings; Ordinary is defined for circles and is not searched off them). Search: "
-      << fixed(at(report, {"lem", "search", "trial_surfaces"}), 0) << " trial circles in "
-      << fixed(at(report, {"lem", "search", "seconds"}), 2) << " s.</p>\n";
+      << fixed(static_cast<double>(lem->search.trial_surfaces), 0) << " trial circles in "
+      << fixed(lem->search.seconds, 2) << " s.</p>\n";
   return out.str();
 }
 
@@ -235,13 +253,11 @@ std::string read_svg(const std::filesystem::path& file) {
   return svg;
 }
 
-std::string figures(const json& report, const std::filesystem::path& dir) {
-  const json& list = at(report, {"figures"});
-  if (!list.is_array() || list.empty()) return "";
+std::string figures(const std::vector<std::string>& list, const std::filesystem::path& dir) {
+  if (list.empty()) return "";
   std::ostringstream out;
   out << "<h2>Figures</h2>\n";
-  for (const json& name : list) {
-    const std::string file = name.get<std::string>();
+  for (const std::string& file : list) {
     if (file.size() < 4 || file.substr(file.size() - 4) != ".svg") continue;
     const std::string svg = read_svg(dir / file);
     out << "<figure>" << (svg.empty() ? "<p>(" + esc(file) + " could not be read)</p>" : svg) << "<figcaption>"
@@ -250,29 +266,40 @@ std::string figures(const json& report, const std::filesystem::path& dir) {
   return out.str();
 }
 
-std::string comparison(const json& report) {
-  const json& verdict = at(report, {"comparison", "verdict"});
-  if (!verdict.is_string()) return "";
-  return "<h2>SPH against limit equilibrium</h2>\n<p>" + esc(verdict.get<std::string>()) + "</p>\n";
+std::string comparison(const RunResults& results) {
+  const ComparisonResult* c = results.comparison_result();
+  if (!c) return "";
+  return "<h2>SPH against limit equilibrium</h2>\n<p>" + esc(c->verdict) + "</p>\n";
 }
 
-void add_strings(const json& list, std::vector<std::string>& out) {
-  for (std::size_t k = 0; list.is_array() && k < list.size(); ++k)
-    if (list[k].is_string()) out.push_back(list[k].get<std::string>());
-}
-
-std::vector<std::string> warnings(const json& report) {
-  std::vector<std::string> all;
-  add_strings(at(report, {"errors"}), all);
-  add_strings(at(report, {"sph", "warnings"}), all);
-  add_strings(at(report, {"srm", "warnings"}), all);
-  for (const auto& path : {std::initializer_list<const char*>{"lem", "search", "error"},
-                           std::initializer_list<const char*>{"comparison", "sph_surface", "as_lem_surface", "error"},
-                           std::initializer_list<const char*>{"srm", "error"}})
-    if (const json& e = at(report, path); e.is_string()) all.push_back(e.get<std::string>());
-  if (const json& methods = at(report, {"lem", "methods"}); methods.is_object())
-    for (const auto& [key, m] : methods.items())
-      if (m.contains("error") && m["error"].is_string()) all.push_back(key + ": " + m["error"].get<std::string>());
+// Every warning and error of the run, each once: the run's errors, the SPH and strength reduction's warnings, the
+// LE search's and the comparison's errors, and each LE method's error (by method key, in key order).
+std::vector<std::string> warnings(const RunResults& results, const RunPage& page) {
+  std::vector<std::string> all = page.errors;
+  if (const SphStageResult* sph = result_of(results.sph)) all.insert(all.end(), sph->warnings.begin(), sph->warnings.end());
+  const SrmResult* srm = result_of(results.srm);
+  if (srm) all.insert(all.end(), srm->warnings.begin(), srm->warnings.end());
+  const LemStageResult* lem = results.lem_result();
+  if (lem && !lem->search.error.empty()) all.push_back(lem->search.error);
+  if (const ComparisonResult* c = results.comparison_result(); c && !c->sph_surface_mass)
+    all.push_back(c->sph_surface_for_lem_error);
+  if (srm && !srm->bisection.error.empty()) all.push_back("srm: " + srm->bisection.error);
+  if (results.srm && !results.srm->result) all.push_back(results.srm->error);
+  if (lem) {
+    std::map<std::string, std::string> errors;  // the report's lem.methods, in key order
+    for (slope::Method method : lem->analysis.methods) {
+      const std::string key(slope::method_key(method));
+      const slope::CriticalSurface* c = last_of(lem->search.methods, key, method_key_of);
+      if (!c)
+        errors[key] = lem->search.error.empty() ? "the search returned no result for this method" : lem->search.error;
+      else if (!solved_factor(*c))
+        errors[key] = !c->result.error.empty() ? c->result.error
+                                               : std::string("no admissible slip surface converged for this method");
+      else
+        errors.erase(key);
+    }
+    for (const auto& [key, error] : errors) all.push_back(key + ": " + error);
+  }
   std::vector<std::string> unique;
   std::set<std::string> seen;
   for (std::string& w : all)
@@ -280,8 +307,8 @@ std::vector<std::string> warnings(const json& report) {
   return unique;
 }
 
-std::string warnings_block(const json& report) {
-  const std::vector<std::string> list = warnings(report);
+std::string warnings_block(const RunResults& results, const RunPage& page) {
+  const std::vector<std::string> list = warnings(results, page);
   std::ostringstream out;
   out << "<h2>Warnings and errors</h2>\n";
   if (list.empty()) return out.str() + "<p>None.</p>\n";
@@ -293,14 +320,15 @@ std::string warnings_block(const json& report) {
 
 }  // namespace
 
-std::string report_html(const Scene& scene, const json& report, const std::filesystem::path& dir) {
+std::string report_html(const Scene& scene, const RunResults& results, const RunPage& page,
+                        const std::filesystem::path& dir) {
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << esc(scene.name)
       << " - sphslope report</title>\n"
       << kStyle << "</head><body>\n"
-      << header(scene, report) << "<div class=\"cols\"><div>" << scene_summary(scene, report) << "</div><div>"
-      << fs_table(report) << "</div></div>\n"
-      << figures(report, dir) << comparison(report) << warnings_block(report) << "</body></html>\n";
+      << header(scene, results, page) << "<div class=\"cols\"><div>" << scene_summary(scene, results)
+      << "</div><div>" << fs_table(results) << "</div></div>\n"
+      << figures(page.figures, dir) << comparison(results) << warnings_block(results, page) << "</body></html>\n";
   return out.str();
 }
 

@@ -12,26 +12,26 @@ namespace coupling {
 namespace {
 
 // The safety map of the search for the scene's map method, with that method's critical surfaces.
-FsMapFigureData fs_map_data(const LemAnalysis& analysis, const WorkflowResult& out, const slope::Section& section) {
+FsMapFigureData fs_map_data(const LemAnalysis& analysis, const LemStageResult& lem, const slope::Section& section) {
   FsMapFigureData data;
   data.section = &section;
-  data.trials = &out.lem->fs_map;
+  data.trials = &lem.search.fs_map;
   data.scale_max = analysis.fs_map_scale_max;
   const slope::Method method = analysis.search.fs_map_method.value_or(slope::Method::bishop);
   const std::string key(slope::method_key(method));
   char label[128];
-  for (const auto& critical : out.lem->methods)
+  for (const auto& critical : lem.search.methods)
     if (critical.method == method && critical.mass && critical.result.factor_of_safety) {
       std::snprintf(label, sizeof label, "critical circle, FS = %.3f", *critical.result.factor_of_safety);
       data.critical_circle = NamedSurface{label, lem_surface_polyline(*critical.mass)};
     }
-  if (out.lem_noncircular)
-    for (const auto& s : out.lem_noncircular->methods)
+  if (lem.noncircular)
+    for (const auto& s : lem.noncircular->methods)
       if (s.method == method && s.searched && !s.from_circle && s.mass && s.result.factor_of_safety) {
         std::snprintf(label, sizeof label, "critical non-circular surface, FS = %.3f", *s.result.factor_of_safety);
         data.critical_noncircular = NamedSurface{label, s.mass->surface};
       }
-  data.title = "Safety map of the search (" + key + "): lowest FS of the " + std::to_string(out.lem->fs_map.size()) +
+  data.title = "Safety map of the search (" + key + "): lowest FS of the " + std::to_string(lem.search.fs_map.size()) +
                " trial circles through each point";
   return data;
 }
@@ -39,21 +39,23 @@ FsMapFigureData fs_map_data(const LemAnalysis& analysis, const WorkflowResult& o
 }  // namespace
 
 // figures/section.svg (and figures/fs_map.svg after a limit-equilibrium search) in the output folder.
-void write_figures(const Scene& scene, const WorkflowResult& out, const std::optional<ParticleSnapshot>& final_state,
-                   const std::optional<SphFailure>& failure, const std::filesystem::path& dir,
-                   nlohmann::json& report) {
+std::optional<std::vector<std::string>> write_figures(const Scene& scene, const RunResults& results,
+                                                      const std::filesystem::path& dir) {
+  const std::optional<ParticleSnapshot>& final_state = results.sph_final_state;
+  const std::optional<SphFailure>& failure = results.sph_failure;
+  const LemStageResult* lem = results.lem_result();
   const slope::Section* section = scene.section ? &scene.section->section : nullptr;
-  if (!section && !final_state) return;
+  if (!section && !final_state) return std::nullopt;
   const std::filesystem::path figures = dir / "figures";
   std::filesystem::create_directories(figures);
-  nlohmann::json written = nlohmann::json::array();
+  std::vector<std::string> written;
 
   SectionFigureData data;
   data.title = scene.name;
   data.section = section;
   if (final_state && !final_state->x.empty()) data.particles = &*final_state;
-  if (out.lem) {
-    for (const auto& critical : out.lem->methods) {
+  if (lem) {
+    for (const auto& critical : lem->search.methods) {
       if (!critical.mass || !critical.result.factor_of_safety) continue;
       char label[96];
       std::snprintf(label, sizeof label, "%s FS = %.3f", std::string(slope::method_key(critical.method)).c_str(),
@@ -61,8 +63,8 @@ void write_figures(const Scene& scene, const WorkflowResult& out, const std::opt
       data.lem_surfaces.push_back({label, lem_surface_polyline(*critical.mass)});
     }
   }
-  if (out.lem_noncircular) {
-    for (const auto& s : out.lem_noncircular->methods) {
+  if (lem && lem->noncircular) {
+    for (const auto& s : lem->noncircular->methods) {
       if (!s.mass || !s.result.factor_of_safety || s.from_circle || !s.searched) continue;
       char label[96];
       std::snprintf(label, sizeof label, "%s non-circular FS = %.3f", std::string(slope::method_key(s.method)).c_str(),
@@ -85,11 +87,11 @@ void write_figures(const Scene& scene, const WorkflowResult& out, const std::opt
   sph::write_file_atomically(figures / "section.svg", section_figure_svg(data));
   written.push_back("figures/section.svg");
 
-  if (out.lem && section && !out.lem->fs_map.empty() && scene.analyses.lem) {
-    sph::write_file_atomically(figures / "fs_map.svg", fs_map_svg(fs_map_data(*scene.analyses.lem, out, *section)));
+  if (lem && section && !lem->search.fs_map.empty() && scene.analyses.lem) {
+    sph::write_file_atomically(figures / "fs_map.svg", fs_map_svg(fs_map_data(*scene.analyses.lem, *lem, *section)));
     written.push_back("figures/fs_map.svg");
   }
-  report["figures"] = written;
+  return written;
 }
 
 }  // namespace coupling

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "coupling/studies/study.hpp"
+#include "coupling/output/study_figure.hpp"
 #include "coupling/output/svg.hpp"
 
 namespace coupling {

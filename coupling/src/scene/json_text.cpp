@@ -1,4 +1,4 @@
-#include "coupling/output/json_text.hpp"
+#include "coupling/scene/json_text.hpp"
 
 #include <cmath>
 

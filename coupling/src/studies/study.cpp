@@ -16,8 +16,9 @@
 #include "coupling/output/report.hpp"
 #include "coupling/analyses/sph_stage.hpp"
 #include "study_cases.hpp"
-#include "coupling/output/json_text.hpp"
+#include "coupling/scene/json_text.hpp"
 #include "sphslope/wall_clock.hpp"
+#include "coupling/output/run_files.hpp"
 
 namespace coupling {
 namespace {
@@ -132,6 +133,41 @@ RunRecord record_from_json(const nlohmann::json& entry, std::size_t n_quantities
   return r;
 }
 
+// The study.json "runs" element's facts of a run: particles, steps, simulated time, why it stopped and the wall time
+// of the particle run (sph, mps or isph, whichever the scene has).
+template <class Result>
+void describe_tank_run(const std::optional<StageRecord<Result>>& record, const char* seconds_key, std::size_t particles,
+                       nlohmann::json& entry) {
+  if (!record || !record->result) return;
+  const sph::RunSummary& summary = record->result->summary;
+  entry["particles"] = particles;
+  entry["steps"] = summary.total_steps;
+  entry["simulated_time_s"] = summary.simulated_time;
+  entry["stopped_because"] = summary.stopped_because;
+  entry[seconds_key] = summary.wall_seconds;
+}
+
+void describe_run(const RunResults& results, nlohmann::json& entry) {
+  if (results.sph) {
+    if (const SphStageResult* sph = results.sph->result ? &*results.sph->result : nullptr) {
+      entry["soil_particles"] = sph->model.soil_particles;
+      entry["particles"] = sph->model.particles;
+      entry["steps"] = sph->summary.total_steps;
+      entry["simulated_time_s"] = sph->summary.simulated_time;
+      entry["stopped_because"] = sph->summary.stopped_because;
+      entry["sph_seconds"] = sph->summary.wall_seconds;
+    } else {
+      entry["stopped_because"] = "error";
+    }
+  }
+  if (results.mps)
+    describe_tank_run(results.mps, "mps_seconds",
+                      results.mps->result ? results.mps->result->moving_particles : 0, entry);
+  if (results.isph)
+    describe_tank_run(results.isph, "isph_seconds",
+                      results.isph->result ? results.isph->result->fluid_particles : 0, entry);
+}
+
 RunRecord run_one_spacing(const Scene& scene, const nlohmann::json& document, const CaseSetup& setup, double spacing,
                           const std::filesystem::path& folder, const StudyOptions& options) {
   RunRecord record;
@@ -163,20 +199,9 @@ RunRecord run_one_spacing(const Scene& scene, const nlohmann::json& document, co
   entry["status"] = run.status == ExitStatus::ok ? "ok" : run.status == ExitStatus::failed ? "failed" : "refused";
   entry["errors"] = run.errors;
   entry["wall_seconds"] = record.seconds;
-  for (const char* analysis : {"sph", "mps", "isph"}) {
-    if (!run.report.is_object() || !run.report.contains(analysis)) continue;
-    const nlohmann::json& block = run.report[analysis];
-    for (const char* key : {"soil_particles", "particles", "steps", "simulated_time_s", "stopped_because"})
-      if (block.contains(key)) entry[key] = block[key];
-    if (block.contains("particles") && block["particles"].is_object()) {  // mps {moving, wall}, isph {fluid, wall}
-      const nlohmann::json& p = block["particles"];
-      entry["particles"] = p.contains("moving") ? p["moving"] : p.value("fluid", nlohmann::json());
-    }
-    if (block.contains("seconds")) entry["sph_seconds"] = block["seconds"];
-    if (block.contains("wall_s")) entry[std::string(analysis) + "_seconds"] = block["wall_s"];
-  }
+  describe_run(run.results, entry);
   // A run that did not finish (interrupted, blown up) measures nothing: its state is not the case's result.
-  record.values = record.ok ? read_values(setup, run)
+  record.values = record.ok ? read_values(setup, run.results, folder)
                             : std::vector<std::optional<double>>(setup.quantities.size());
   entry["values"] = nlohmann::json::array();
   for (const auto& v : record.values) entry["values"].push_back(optional_number(v));

@@ -281,22 +281,18 @@ nlohmann::json scene_at_spacing(const Scene& scene, nlohmann::json document, dou
   return document;
 }
 
-std::vector<std::optional<double>> read_values(const CaseSetup& setup, const WorkflowResult& run) {
+std::vector<std::optional<double>> read_values(const CaseSetup& setup, const RunResults& run,
+                                               const std::filesystem::path& folder) {
   std::vector<std::optional<double>> values(setup.quantities.size());
-  const nlohmann::json& report = run.report;
   switch (setup.kind) {
     case CaseKind::slope_failure_surface: {
-      if (!report.contains("comparison")) break;
-      const nlohmann::json& c = report["comparison"];
-      const nlohmann::json& surface = c.value("sph_surface", nlohmann::json::object());
-      if (surface.contains("entry_m") && surface["entry_m"].is_array()) values[0] = surface["entry_m"][0].get<double>();
-      if (surface.contains("exit_m") && surface["exit_m"].is_array()) values[1] = surface["exit_m"][0].get<double>();
-      if (surface.contains("points_m") && surface["points_m"].is_array() && !surface["points_m"].empty()) {
-        Polyline points;
-        for (const auto& p : surface["points_m"]) points.push_back({p[0].get<double>(), p[1].get<double>()});
-        values[2] = finite(max_depth_below(setup.ground, points));
-      }
-      values[3] = number_at(c, {"methods", "bishop", "intersection_over_union"});
+      const ComparisonResult* c = run.comparison_result();
+      if (!c) break;
+      if (c->sph.entry) values[0] = c->sph.entry->x;
+      if (c->sph.exit) values[1] = c->sph.exit->x;
+      if (!c->sph.band.points.empty()) values[2] = finite(max_depth_below(setup.ground, c->sph.band.points));
+      if (const MethodComparison* bishop = c->find("bishop"); bishop && bishop->has_geometry)
+        values[3] = finite(bishop->intersection_over_union);
       break;
     }
     case CaseKind::elastic_column: {
@@ -308,17 +304,19 @@ std::vector<std::optional<double>> read_values(const CaseSetup& setup, const Wor
       break;
     }
     case CaseKind::column_collapse:
-      values[0] = number_at(report, {"sph", "deposit", "final_length_m"});
-      values[1] = number_at(report, {"sph", "deposit", "final_height_m"});
+      if (run.sph && run.sph->result && run.sph->result->deposit) {
+        values[0] = run.sph->result->deposit->final_length_m;
+        values[1] = run.sph->result->deposit->final_height_m;
+      }
       break;
-    case CaseKind::mps_dry_collapse: {
-      const auto front = number_at(report, {"mps", "deposit", "front_x_m", "end"});
-      if (front) values[0] = *front - setup.parameters["wall_x_m"].get<double>();
-      values[1] = number_at(report, {"mps", "deposit", "wall_height_m", "end"});
+    case CaseKind::mps_dry_collapse:
+      if (run.mps && run.mps->result) {
+        values[0] = run.mps->result->front_end - setup.parameters["wall_x_m"].get<double>();
+        values[1] = run.mps->result->wall_height_end;
+      }
       break;
-    }
     case CaseKind::isph_dam_break:
-      return isph_dam_break_values(setup, run);
+      return isph_dam_break_values(setup, folder);
   }
   return values;
 }

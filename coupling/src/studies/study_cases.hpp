@@ -1,6 +1,7 @@
 #pragma once
 // The references of `sphslope study` (internal to coupling): which quantities a case monitors, their cited
 // reference values, and how each is read out of a finished run.
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,12 +49,14 @@ CaseSetup setup_case(const Scene& scene);
 nlohmann::json scene_at_spacing(const Scene& scene, nlohmann::json document, double spacing);
 
 // The monitored values of one finished run, in the order of setup.quantities (null where not available).
-std::vector<std::optional<double>> read_values(const CaseSetup& setup, const WorkflowResult& run);
+// `folder`: the run's folder (the ISPH dam break reads its front from the folder's monitors.csv).
+std::vector<std::optional<double>> read_values(const CaseSetup& setup, const RunResults& run,
+                                               const std::filesystem::path& folder);
 
 // The ISPH dam break against Martin & Moyce's table (study_isph_case.cpp): the case, and its values from the run's
 // monitors.csv (the front's RMS error without and with a time shift).
 CaseSetup isph_dam_break_case(const Scene& scene);
-std::vector<std::optional<double>> isph_dam_break_values(const CaseSetup& setup, const WorkflowResult& run);
+std::vector<std::optional<double>> isph_dam_break_values(const CaseSetup& setup, const std::filesystem::path& folder);
 
 // Relative error of a value, per its quantity's definition.
 double relative_error(const Quantity& quantity, double value);

@@ -59,10 +59,9 @@ CaseSetup isph_dam_break_case(const Scene& scene) {
   return setup;
 }
 
-std::vector<std::optional<double>> isph_dam_break_values(const CaseSetup& setup, const WorkflowResult& run) {
+std::vector<std::optional<double>> isph_dam_break_values(const CaseSetup& setup, const std::filesystem::path& folder) {
   std::vector<std::optional<double>> values(setup.quantities.size());
-  if (!run.report_file) return values;
-  std::ifstream in(run.report_file->parent_path() / "monitors.csv");
+  std::ifstream in(folder / "monitors.csv");
   const MonitorTable monitors = parse_monitors_csv(std::string(std::istreambuf_iterator<char>(in), {}));
   if (const std::optional<FrontErrors> e = martin_moyce_front_errors(monitors, column_of(setup))) {
     values[0] = e->rms;

@@ -45,6 +45,9 @@ struct IsphSnapshot {
 };
 IsphSnapshot take_snapshot(const sph::ParticleSet& p, sph::FieldId pressure, double time, double dx);
 
+// "isph_snapshot_<t>s.svg": the figure of the snapshot asked for at t [s], in the run folder's figures/.
+std::string snapshot_file_name(double requested_time);
+
 // Snapshots at the first step at or after each requested time; each is handed to `write` with its requested
 // time (it writes the figure and returns the file's name, kept in files()).
 class SnapshotObserver : public sph::Observer {

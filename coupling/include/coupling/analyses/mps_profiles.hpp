@@ -66,10 +66,5 @@ struct DamBreakFigures {
 };
 DamBreakFigures dam_break_figures(const Profile& start, const Profile& now, double dam_x, double dx, double g);
 
-// profiles.csv: time_s, x_m, surface_m, bed_m, one row per bin and time.
-std::string profiles_csv(const std::vector<Profile>& profiles);
-// profiles.svg: the surface (solid) and the bed (dashed) at each time over the tank, y exaggerated.
-std::string profiles_svg(const std::vector<Profile>& profiles, const Tank& tank, const std::string& title,
-                         std::optional<double> dam_x);
 
 }  // namespace coupling

@@ -1,10 +1,12 @@
 #pragma once
-// The workflow behind the sphslope program: scene -> analyses -> report.json. main.cpp only parses the command
-// line and prints; tests call these functions directly.
+// The analyses of a scene, stage after stage (coupling/analyses/stage.hpp), into typed results
+// (coupling/analyses/run_results.hpp). The run folder's report.json, report.html, monitors and figures are written
+// by coupling/output/run_files.hpp (run_scene, run_scene_file), which the command line and the tests call.
 //
 // Exit statuses (SCENE.md): 0 when every requested analysis ran; 2 for invalid input (nothing written; the
 // messages name the JSON path of the fault); 1 for a run that failed (report written with the reason).
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -12,9 +14,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "coupling/compare/failure_surface.hpp"
+#include "coupling/analyses/isph_measures.hpp"
+#include "coupling/analyses/run_results.hpp"
 #include "coupling/scene/scene.hpp"
-#include "slope/search.hpp"
 
 namespace coupling {
 
@@ -27,40 +29,35 @@ enum class Mode {
   run,    // every analysis the scene asks for
 };
 
+// Draws an isph snapshot into the run folder while the run goes and returns the figure's file name relative to the
+// folder (coupling/output sets it: the analyses draw nothing themselves).
+using SnapshotFigure = std::function<std::string(double requested_time, const IsphSnapshot& snapshot)>;
+
 struct WorkflowOptions {
   Mode mode = Mode::run;
-  std::optional<std::filesystem::path> output_dir;  // report.json goes here; none: nothing is written
-  std::ostream* log = nullptr;                      // progress and notes (stderr in the program); may be null
-  bool resume = false;                              // SPH: continue from output_dir/checkpoint.bin
+  // The run folder: the runs keep their frames, checkpoints and journals there, and coupling/output writes the
+  // report and figures there. None: nothing is written.
+  std::optional<std::filesystem::path> output_dir;
+  std::ostream* log = nullptr;  // progress and notes (stderr in the program); may be null
+  bool resume = false;          // continue from output_dir/checkpoint.bin
+  SnapshotFigure draw_snapshot;  // isph snapshots (analyses.isph.snapshots_s); none: not drawn
 };
-
-// A slip surface given in the scene (analyses.lem.surfaces), analysed with every method asked for.
-struct GivenSurfaceResult {
-  std::string name;
-  std::vector<slope::CriticalSurface> methods;  // in the order asked for, each with the mass and its forces
-};
-
-// Slices each surface of analysis.surfaces and solves it with every method of the analysis.
-std::vector<GivenSurfaceResult> analyse_given_surfaces(const slope::Section& section, const LemAnalysis& analysis);
 
 struct WorkflowResult {
   ExitStatus status = ExitStatus::ok;
-  std::optional<Scene> scene;                     // set once the scene is valid
-  std::vector<std::string> errors;                // invalid input: "<json path>: ..."; failed run: the reasons
-  std::vector<std::string> rejections;            // not accepted: one line per failed acceptance criterion
-  nlohmann::json report;                          // null when the input was invalid or in check mode
-  std::optional<slope::SearchResult> lem;         // the limit-equilibrium result, for the table
-  std::optional<slope::NonCircularResult> lem_noncircular;  // analyses.lem.noncircular_search, when asked for
-  std::vector<GivenSurfaceResult> lem_surfaces;   // the given slip surfaces (analyses.lem.surfaces), for the table
-  std::optional<std::filesystem::path> report_file;  // where report.json was written
-  std::optional<ParticleSnapshot> sph_final_state;   // soil particles at the end of the SPH analysis
+  std::optional<Scene> scene;              // set once the scene is valid
+  std::vector<std::string> errors;         // invalid input: "<json path>: ..."; failed run: the reasons
+  std::vector<std::string> rejections;     // not accepted: one line per failed acceptance criterion
+  RunResults results;                      // what each stage found
+  // Filled by coupling/output's run_scene: report.json's content (null when the input was invalid or in check
+  // mode) and where it was written.
+  nlohmann::json report;
+  std::optional<std::filesystem::path> report_file;
 };
 
-// Loads and validates the scene file, then runs what `options.mode` asks for.
-WorkflowResult run_scene_file(const std::filesystem::path& scene_file, const WorkflowOptions& options);
-
-// Runs an already validated scene.
-WorkflowResult run_scene(const Scene& scene, const WorkflowOptions& options);
+// Runs the stages a validated scene asks for (options.mode): typed results, no report. In check mode it only
+// states whether the SPH run would be refused.
+WorkflowResult run_analyses(const Scene& scene, const WorkflowOptions& options);
 
 // Default output folder of "sphslope run": runs/<scene file stem> (relative to the working directory).
 std::filesystem::path default_output_dir(const std::filesystem::path& scene_file);

@@ -3,8 +3,8 @@
 // pipeline (run_scene) runs the stages the scene asks for in the order of the table pipeline_stages(). Adding an
 // analysis is one stage file (its run function) and one row of that table.
 //
-// A stage reads its typed settings from the Scene, hands results to later stages through the StageContext, and
-// writes its block of report.json (and its timing) into context.out.report.
+// A stage reads its typed settings from the Scene and writes its typed result (and its wall time) into
+// context.results, where later stages find what they need; coupling/output turns the results into files.
 #include <chrono>
 #include <optional>
 #include <span>
@@ -29,10 +29,8 @@ struct StageOutcome {
 // What the stages of one run share.
 struct StageContext {
   const WorkflowOptions& options;
-  WorkflowResult& out;                          // the report being built; the LE result (out.lem) for later stages
-  std::optional<LemAnalysis> lem;               // analyses.lem, or its defaults for "sphslope lem"
-  std::optional<ParticleSnapshot> final_state;  // soil particles after the SPH stage (none after a blow-up)
-  std::optional<SphFailure> failure;            // the SPH failure surface, once the comparison stage read it
+  RunResults& results;            // each stage's typed result; the LE result and the SPH state for later stages
+  std::optional<LemAnalysis> lem;  // analyses.lem, or its defaults for "sphslope lem"
 };
 
 struct Stage {

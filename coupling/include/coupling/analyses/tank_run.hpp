@@ -4,8 +4,9 @@
 #include <functional>
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <optional>
 
+#include "coupling/analyses/report_record.hpp"
 #include "coupling/analyses/stage.hpp"
 #include "coupling/analyses/tank_monitors.hpp"
 #include "sph/engine/run_loop.hpp"
@@ -14,10 +15,10 @@ namespace coupling {
 
 // --resume: `read_checkpoint` reads options.output_dir/checkpoint.bin into the model (whose RunState is `state`),
 // the monitors keep the rows of the folder's monitors.csv up to the checkpoint's time, and "<analysis>: resuming at
-// t = ... s (step ...)" goes to the log. Returns the block `analysis` of the folder's earlier report.json (an empty
-// object when there is none), for the figures a run carries over its whole length. Throws std::runtime_error without
-// a run folder or a checkpoint in it.
-nlohmann::json resume_tank_run(const WorkflowOptions& options, const std::string& analysis,
+// t = ... s (step ...)" goes to the log. Returns the record of the folder's earlier report.json (none when there is
+// none), for the figures a run carries over its whole length. Throws std::runtime_error without a run folder or a
+// checkpoint in it.
+std::optional<ReportRecord> resume_tank_run(const WorkflowOptions& options, const std::string& analysis,
                                const std::function<void(const std::string& path)>& read_checkpoint,
                                const sph::RunState& state, TankMonitorObserver& monitors);
 

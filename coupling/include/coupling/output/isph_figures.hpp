@@ -13,9 +13,6 @@
 
 namespace coupling {
 
-// "isph_snapshot_<t>s.svg" for the snapshot asked for at t [s].
-std::string snapshot_file_name(double requested_time);
-
 // Every particle at the snapshot's time: the fluid coloured by pressure (kPa, colour bar), the walls grey; equal
 // scales on both axes.
 std::string isph_snapshot_svg(const IsphSnapshot& snapshot, const std::string& title);

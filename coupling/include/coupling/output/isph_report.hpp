@@ -11,9 +11,6 @@
 
 namespace coupling {
 
-// report.json's isph.bodies read back (for --resume).
-std::vector<BodyRecord> bodies_from_report(const nlohmann::json& isph);
-
 nlohmann::json isph_report(const IsphStageResult& result);
 nlohmann::json isph_error_report(const std::string& error);
 

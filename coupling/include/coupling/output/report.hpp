@@ -36,7 +36,7 @@ nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& anal
 nlohmann::json noncircular_report(const slope::Section& section, const slope::NonCircularOptions& options,
                                   const slope::NonCircularResult& result);
 
-// Pretty-printed JSON text of a report, ending in a newline; throws NonFiniteNumber (coupling/output/json_text.hpp),
+// Pretty-printed JSON text of a report, ending in a newline; throws NonFiniteNumber (coupling/scene/json_text.hpp),
 // naming the keys, when a number in it is NaN or infinite.
 std::string report_text(const nlohmann::json& report);
 

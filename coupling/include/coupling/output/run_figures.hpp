@@ -3,19 +3,18 @@
 #include <filesystem>
 #include <optional>
 
-#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
-#include "coupling/analyses/pipeline.hpp"
-#include "coupling/compare/comparison.hpp"
-#include "coupling/compare/failure_surface.hpp"
+#include "coupling/analyses/run_results.hpp"
 #include "coupling/scene/scene.hpp"
 
 namespace coupling {
 
 // figures/section.svg (the section, the LE critical circles, the SPH particles and failure surface) and
-// figures/fs_map.svg (after a limit-equilibrium search) in `dir`; their names go to report["figures"].
-void write_figures(const Scene& scene, const WorkflowResult& out, const std::optional<ParticleSnapshot>& final_state,
-                   const std::optional<SphFailure>& failure, const std::filesystem::path& dir,
-                   nlohmann::json& report);
+// figures/fs_map.svg (after a limit-equilibrium search of the scene's analyses.lem) in `dir`; returns their names
+// relative to `dir` (none when there is nothing to draw: no section and no particles).
+std::optional<std::vector<std::string>> write_figures(const Scene& scene, const RunResults& results,
+                                                      const std::filesystem::path& dir);
 
 }  // namespace coupling

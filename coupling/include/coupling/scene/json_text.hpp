@@ -1,6 +1,6 @@
 #pragma once
 // The one writer of JSON text for the files the program writes (report.json, study.json, summary.json, the
-// strength-reduction journal). JSON has no NaN or infinity, and nlohmann's dump would print such a number as null
+// strength-reduction journal), beside the reader of scene files (json_reader.hpp) at the bottom layer of coupling/. JSON has no NaN or infinity, and nlohmann's dump would print such a number as null
 // without a word: here it is refused, with the path of every key that holds one. A value that may be missing is
 // written as an explicit null by the code that knows why (next to an "error", or documented in
 // docs/scene-format.md), never left for the dump to turn into one.

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/analyses/pipeline.hpp"
+#include "coupling/output/study_figure.hpp"
 
 namespace coupling {
 
@@ -35,15 +36,5 @@ struct StudyResult {
 //   analyses.mps, one granular block       -> the dry collapse of Lajeunesse et al. (2005) (2-D scaling laws)
 //   analyses.isph with front_reference     -> the dam break of Martin & Moyce (1952) (their tabulated front)
 StudyResult run_study(const std::filesystem::path& scene_file, const StudyOptions& options);
-
-// One line of the error-against-run-time figure.
-struct StudySeries {
-  std::string label;
-  std::vector<double> seconds;            // wall time of each point (s)
-  std::vector<double> errors;             // relative error of each point (-)
-  std::vector<std::string> point_labels;  // e.g. "dx 0.2 m"
-};
-// Log-log plot of error against wall time; errors below 1e-6 (e.g. exactly 0) are drawn at 1e-6 as hollow marks.
-std::string error_vs_runtime_svg(const std::string& title, const std::vector<StudySeries>& series);
 
 }  // namespace coupling

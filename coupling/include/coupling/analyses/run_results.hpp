@@ -1,0 +1,67 @@
+#pragma once
+// What one run found, stage by stage, as typed results. The stages (coupling/analyses) fill it; coupling/output alone
+// turns it into report.json, report.html, monitors.csv, profiles and figures; the command line prints its tables
+// from it. Nothing here is JSON.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coupling/analyses/isph_stage.hpp"
+#include "coupling/analyses/mps_stage.hpp"
+#include "coupling/analyses/sph_stage.hpp"
+#include "coupling/analyses/strength_reduction.hpp"
+#include "coupling/compare/comparison.hpp"
+#include "coupling/compare/failure_surface.hpp"
+#include "coupling/scene/scene.hpp"
+#include "slope/search.hpp"
+
+namespace coupling {
+
+// A slip surface given in the scene (analyses.lem.surfaces), analysed with every method asked for.
+struct GivenSurfaceResult {
+  std::string name;
+  std::vector<slope::CriticalSurface> methods;  // in the order asked for, each with the mass and its forces
+};
+
+// The limit-equilibrium stage's result: the settings it ran with (the scene's, or the defaults for "sphslope lem"),
+// the critical circle of every method, the given surfaces and, when asked for, the non-circular search.
+struct LemStageResult {
+  LemAnalysis analysis;
+  slope::SearchResult search;
+  std::vector<GivenSurfaceResult> surfaces;
+  std::optional<slope::NonCircularResult> noncircular;
+};
+
+// One stage of a run: its typed result, or the error that stopped it before it had one.
+template <class Result>
+struct StageRecord {
+  std::optional<Result> result;
+  std::string error;  // "<stage>: why", when there is no result
+};
+
+struct RunResults {
+  std::vector<std::string> analyses;  // the stages asked for, in pipeline order
+  std::optional<StageRecord<LemStageResult>> lem;
+  std::optional<StageRecord<SphStageResult>> sph;
+  std::optional<StageRecord<ComparisonResult>> comparison;
+  std::optional<StageRecord<SrmResult>> srm;
+  std::optional<StageRecord<IsphStageResult>> isph;
+  std::optional<StageRecord<MpsStageResult>> mps;
+  // Wall-clock seconds: each stage by its key, "lem_noncircular", and "load" and "total" for the whole run.
+  std::map<std::string, double> seconds;
+  std::optional<ParticleSnapshot> sph_final_state;  // the soil particles at the end (none after a blow-up)
+  std::optional<SphFailure> sph_failure;            // the SPH failure surface, once the comparison read it
+  std::vector<std::string> failures;                // why the run failed, one line each (the report's "errors")
+
+  const LemStageResult* lem_result() const { return lem && lem->result ? &*lem->result : nullptr; }
+  const SrmResult* srm_result() const { return srm && srm->result ? &*srm->result : nullptr; }
+  const ComparisonResult* comparison_result() const {
+    return comparison && comparison->result ? &*comparison->result : nullptr;
+  }
+};
+
+// Slices each surface of analysis.surfaces and solves it with every method of the analysis.
+std::vector<GivenSurfaceResult> analyse_given_surfaces(const slope::Section& section, const LemAnalysis& analysis);
+
+}  // namespace coupling
