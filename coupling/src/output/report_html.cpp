@@ -135,15 +135,14 @@ std::string sph_lines(const RunResults& results) {
         << " m, " << isph->fluid_particles << " fluid particles, " << fixed(isph->summary.simulated_time, 3)
         << " s simulated in " << isph->summary.total_steps << " steps; front at x = " << fixed(isph->front_x, 3)
         << " m; fluid mass " << fixed(isph->fluid_mass_start, 3) << " &rarr; " << fixed(isph->fluid_mass_end, 3)
-        << " kg/m; largest density error " << fixed(isph->max_density_error, 4) << ". Monitors: "
-        << esc("\"monitors.csv\"") << ".</p>\n";
+        << " kg/m; largest density error " << fixed(isph->max_density_error, 4) << ". Monitors: monitors.csv.</p>\n";
   }
   if (const MpsStageResult* mps = result_of(results.mps)) {
     out << "<p>WC-MPS: spacing " << fixed(mps->particle_spacing, 4) << " m, " << mps->moving_particles
         << " particles, " << fixed(mps->summary.simulated_time, 3) << " s simulated in " << mps->summary.total_steps
         << " steps; deposit front x = " << fixed(mps->front_end, 3) << " m, height at the left wall "
         << fixed(mps->wall_height_end, 3) << " m, largest speed at the end " << fixed(mps->max_speed_end, 4)
-        << " m/s. Monitors: " << esc("\"monitors.csv\"") << ".</p>\n";
+        << " m/s. Monitors: monitors.csv.</p>\n";
   }
   if (const SrmResult* srm = result_of(results.srm)) {
     const BisectionResult& b = srm->bisection;
