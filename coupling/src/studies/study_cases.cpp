@@ -208,16 +208,6 @@ std::pair<double, double> column_stress_errors(const CaseSetup& setup, const Par
   return {std::sqrt(e_yy / n_yy), n_xx > 0 ? std::sqrt(e_xx / n_xx) : nan};
 }
 
-std::optional<double> number_at(const nlohmann::json& j, std::initializer_list<const char*> path) {
-  const nlohmann::json* at = &j;
-  for (const char* key : path) {
-    if (!at->is_object() || !at->contains(key)) return std::nullopt;
-    at = &(*at)[key];
-  }
-  if (!at->is_number()) return std::nullopt;
-  return at->get<double>();
-}
-
 std::optional<double> finite(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
 
 // The WC-MPS dry collapse: one granular block against the tank's left wall, on its floor.
