@@ -6,7 +6,7 @@ final run-out and height predicted by the 2-D scaling laws. Prints a table of bo
 Usage: scripts/side_by_side_figure.py SPACING_M MPS_RUN_DIR SPH_RUN_DIR OUT.svg [L0_M H0_M]
 
 The scaling-law band: (L_inf - l0)/l0 = lambda a with lambda = 1.2 to 1.8 and a = h0/l0 (Lube et al. 2005 and
-Lajeunesse et al. 2005 as quoted in shared/references/fluids-granular.md section 4, whose quotes disagree), and the
+Lajeunesse et al. 2005 as quoted second-hand, whose quotes disagree), and the
 height at the wall staying h0 for a below about 0.7.
 """
 import os

@@ -41,7 +41,7 @@ json run_case(const TemporaryFolder& folder, const std::string& stem, const json
 }  // namespace
 
 // The seed's dam break (cases/isph_dam_break_ritter.json) at dx = 12.5 mm (8 particles deep) to 0.6 s. Reference:
-// Ritter's (1892) dry-bed solution, with the bounds of shared/references/fluids-granular.md section 7 item 2: the
+// Ritter's (1892) dry-bed solution, with these bounds: the
 // front's mean speed over the later half of the run between 0.6 and 1.0 times Ritter's 2 sqrt(g h0) (friction at
 // the bed and at the tip slow a real front; faster would be a defect), and the depth at the dam within 10 % of
 // 4 h0/9 for T >= 2; the front's position follows X = 2T closely in shape (r > 0.99).
@@ -106,9 +106,9 @@ void check_landslide(const json& r, double stop_travel, double lo, double hi) {
 }  // namespace
 
 // The submarine case (d = 1 m, block top 1 cm below the water). No measured series is openly available (seed A14,
-// A16; shared/references/fluids-granular.md section 3), so the test checks the physics that can be checked: the
-// block's stop, the energy budget and the leading crest's celerity against sqrt(g d) = 3.13 m/s (fluids-granular.md
-// section 7 item 5 suggests 10 %; the crest's height a adds about a/2d, 1-2 % here, and 15 % allows the coarse
+// A16), so the test checks the physics that can be checked: the
+// block's stop, the energy budget and the leading crest's celerity against sqrt(g d) = 3.13 m/s (linear long-wave
+// theory: 10 % would be usual; the crest's height a adds about a/2d, 1-2 % here, and 15 % allows the coarse
 // spacing's dispersion).
 TEST_CASE("ISPH submarine landslide (Heinrich 1992 geometry, coarse): stop, energy budget, wave celerity",
           "[cli][isph][validation]") {

@@ -97,7 +97,7 @@ TEST_CASE("agreement statistics of a series against itself, and against a known 
 
 // The table is data: pinned here against its source, J.C. Martin and W.J. Moyce (1952), Phil. Trans. R. Soc. A
 // 244:312-324, Tables 2 and 6, as the arrays mmTvec and mmZvec of TormodLandet/Ocellaris scripts/plot_dam_break.py
-// (commit 44fd559f), read again for this test (shared/references/fluids-granular.md section 1b).
+// (commit 44fd559f), read again for this test.
 TEST_CASE("Martin & Moyce (1952) n^2 = 2 table: the values of the source", "[measures][isph]") {
   const std::array<double, 15> T{0.41, 0.84, 1.19, 1.43, 1.63, 1.83, 1.98, 2.20, 2.32, 2.51, 2.65,
                                  2.83, 2.98, 3.11, 3.33};

@@ -75,7 +75,7 @@ pid_t spawn_program(std::vector<std::string> args) {
 TEST_CASE("thesis slope 2, coarse: the SPH failure surface runs from behind the crest to the toe, close to the LEM "
           "circle",
           "[sph][compare][cli]") {
-  // Source: shared/seeds/seed-002 section 4.2 (thesis slope 2, 45 deg, H = 10 m, c = 11 kPa, phi = 20 deg); the
+  // Source: the soil-slope SPH thesis, section 5-5-2 (thesis slope 2, 45 deg, H = 10 m, c = 11 kPa, phi = 20 deg); the
   // thesis finds (Fig. 5-24 b) that its SPH surface and the Geo-Studio critical surface start and end at the same
   // points. Here at dx = 0.5 m (20 particles over the height) and 3 s of collapse.
   const fs::path dir = fresh_dir("slope2");
@@ -307,7 +307,7 @@ TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted
 #include "coupling/analyses/sph_model.hpp"
 
 TEST_CASE("the thesis slopes fill with the thesis's particle counts", "[sph][fill]") {
-  // Source: shared/seeds/seed-002 section 4 (Tables 5-1, 5-3, 5-5): 3200, 3725 and 7100 soil particles at
+  // Source: the soil-slope SPH thesis, section 5-5 (Tables 5-1, 5-3, 5-5): 3200, 3725 and 7100 soil particles at
   // 0.025, 0.2 and 0.25 m. A regression test, not a validation: the geometry of the three slopes was chosen to give
   // these counts (see the cases' notes), so it guards the lattice fill and the cases, not the thesis.
   const std::pair<const char*, std::size_t> cases[] = {

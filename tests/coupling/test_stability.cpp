@@ -423,7 +423,7 @@ TEST_CASE("stability: columns of a = 1 (2.5 mm) and a = 2 (5 mm) slide down a no
           "and match the true-2-D laws",
           "[stability][sph][collapse][cli][long]") {
   // Both blew up before the continuity equation used the walls' own velocity (non-positive density next to the back
-  // wall near the free surface; shared/references/sph-collapse-blowup.md). Measured: a = 1: d 0.408 m (law 0.425),
+  // wall near the free surface; the stability scenes' table of docs/stability.md). Measured: a = 1: d 0.408 m (law 0.425),
   // h_f 0.0671 m (0.0704); a = 2: d 0.682 m (law 0.730), h_f 0.0887 m (0.0887).
   TemporaryFolder folder("stability-collapse");
   for (const char* stem : {"sph_collapse_a1_noslip_wall", "sph_collapse_a2_noslip_wall"})

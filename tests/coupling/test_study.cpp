@@ -143,7 +143,7 @@ TEST_CASE("study: elastic column converges to the closed-form stress", "[study][
 }
 
 TEST_CASE("study: the WC-MPS dry collapse is measured against the 2-D scaling laws", "[study][mps]") {
-  // Lube et al. / Lajeunesse et al. (2005), shared/references/fluids-granular.md section 4: L = l0 (1 + 1.5 a) =
+  // Lube et al. / Lajeunesse et al. (2005), 2-D scaling laws as quoted second-hand: L = l0 (1 + 1.5 a) =
   // 0.1 (1 + 1.5 x 0.6) = 0.19 m; the height at the wall stays h0 = 0.06 m for a < 0.7.
   const fs::path dir = fresh_dir("mps");
   StudyOptions options;

@@ -208,7 +208,7 @@ double front_slope(const FrontSeries& run, double t0, double t1) {
 }  // namespace
 
 // Martin & Moyce (1952), n^2 = 2, a = 2.25 in, water (mu = 1e-3 Pa s), dx = a/20 (800 fluid particles), iterative
-// pressure. Criteria (docs/isph.md section 4, after shared/references/fluids-granular.md section 7):
+// pressure. Criteria (docs/isph.md section 4):
 //  * RMS relative error of Z over the tabulated points with 0.84 <= T <= 3.33, allowing one time shift
 //    dT in [-0.3, 0] (the experiment's gate takes a finite time to open; a computation starts with the column
 //    free): <= 5 %. Without a shift: <= 15 %, a bound against gross failure only (a front at Ritter's speed,

@@ -21,10 +21,10 @@ constexpr const char* true_2d_collapse_source =
     "(d - d_0)/d_0 = 3.25 a^0.96 for 0.65 < a < 1.5 and 3.80 a^0.73 for a > 1.5";
 
 // The dry collapse of the WC-MPS (issue 12): the 2-D scaling laws of Lube et al. (2005) and Lajeunesse et al.
-// (2005) as quoted in shared/references/fluids-granular.md section 4 (the quotes disagree: lambda 1.2 to 1.8).
+// (2005) as quoted second-hand (the quotes disagree: lambda 1.2 to 1.8).
 constexpr const char* slump_law_source =
     "Lube et al. (2005) and Lajeunesse, Monnier & Homsy (2005, Phys. Fluids 17:103302), 2-D scaling laws as quoted "
-    "in shared/references/fluids-granular.md section 4: (L - l0)/l0 = lambda a for small a, lambda 1.2 to 1.8 "
+    "second-hand: (L - l0)/l0 = lambda a for small a, lambda 1.2 to 1.8 "
     "(the quotes disagree; the reference takes the middle, 1.5; the band 1.2-1.8 is L = 0.172-0.208 m for the "
     "seed's column, a = 0.6, l0 = 0.1 m); the column's top corner "
     "stays in place, so the height at the wall is h0, for a below about 0.7";

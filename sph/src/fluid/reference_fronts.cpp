@@ -12,8 +12,7 @@ namespace {
 // Phil. Trans. R. Soc. Lond. A 244:312-324: surge-front positions of the n^2 = 2 column (width a = 2.25 in =
 // 0.05715 m, height 2a), the paper's tabulated points (Tables 2 and 6).
 // Provenance: the paper itself was not readable here; these are the arrays of TormodLandet/Ocellaris,
-// scripts/plot_dam_break.py (commit 44fd559f), copied as numbers, as compiled with their provenance in
-// shared/references/fluids-granular.md section 1b. The Z values sit on 0.25-inch steps (1/9 of a), the signature
+// scripts/plot_dam_break.py (commit 44fd559f), copied as numbers. The Z values sit on 0.25-inch steps (1/9 of a), the signature
 // of readings at fixed stations. DualSPHysics' 01_DamBreak "Koshizuka & Oka 1996" file is the same data rescaled.
 // Variables: T = n t sqrt(g/a) (n = sqrt(2)), Z = x_front / a with x measured from the back wall (Z(0) = 1).
 constexpr std::array<FrontPoint, 15> martin_moyce_n2_2{{{0.41, 1.11},

@@ -1,6 +1,6 @@
 #pragma once
 // The ISPH fluid's equations, one small inline function each, named after what it computes. The comment of each
-// gives the seed paper's equation number (shared/seeds/seed-000-isph-landslide.md) and, in brackets, the row of
+// gives the seed paper's equation number (Hosseini Mobarra & Ghobadian 2020) and, in brackets, the row of
 // the equation table in docs/isph.md. The loops that gather them over neighbours are in stepper.cpp and
 // pressure.cpp. Notation: x_ij = x_i - x_j, r = |x_ij|, grad_i W_ij = F(r) x_ij with F = W'(r)/r < 0,
 // so x_ij . grad_i W_ij = F r^2 <= 0.

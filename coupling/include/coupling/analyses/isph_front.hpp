@@ -12,7 +12,7 @@
 
 namespace coupling {
 
-// The reference points compared: 0.84 <= T <= 3.33 (shared/references/fluids-granular.md section 7), and the time
+// The reference points compared: 0.84 <= T <= 3.33 (Martin & Moyce's tabulated points after the first), and the time
 // shifts tried, dT in [-0.3, 0] in steps of 0.01 (the experiment's gate opened in a finite time).
 inline constexpr double front_error_T_min = 0.84, front_error_T_max = 3.33;
 inline constexpr double front_error_min_shift = -0.3, front_error_shift_step = 0.01;

@@ -3,7 +3,7 @@
 // (coupling/analyses/run_results.hpp). The run folder's report.json, report.html, monitors and figures are written
 // by coupling/output/run_files.hpp (run_scene, run_scene_file), which the command line and the tests call.
 //
-// Exit statuses (SCENE.md): 0 when every requested analysis ran; 2 for invalid input (nothing written; the
+// Exit statuses (docs/pipelines.md): 0 when every requested analysis ran; 2 for invalid input (nothing written; the
 // messages name the JSON path of the fault); 1 for a run that failed (report written with the reason).
 #include <filesystem>
 #include <functional>

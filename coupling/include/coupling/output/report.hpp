@@ -1,6 +1,6 @@
 #pragma once
-// report.json ("format": "sphslope-report/1"): the contract is /work/shared/SCENE.md; every key is documented in
-// docs/scene-format.md. Units are in every key; forces are per metre of slope width (plane strain), in kN/m.
+// report.json ("format": "sphslope-report/1"): every key is documented in docs/scene-format.md. Units are in every
+// key; forces are per metre of slope width (plane strain), in kN/m.
 #include <string>
 #include <string_view>
 

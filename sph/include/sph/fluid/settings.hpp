@@ -1,6 +1,6 @@
 #pragma once
 // Settings of the explicit three-step incompressible SPH (ISPH) fluid (Hosseini, Manzari & Hannani 2007, as used
-// by the seed paper, shared/seeds/seed-000-isph-landslide.md). SI units, 2-D. What every physics shares (kernel,
+// by the seed paper, Hosseini Mobarra & Ghobadian 2020). SI units, 2-D. What every physics shares (kernel,
 // dx, h/dx and its range, gravity and its ramp, CFL factor, end time, output and checkpoint cadence, blow-up guard)
 // comes from sph::EngineSettings; this struct adds the fluid's options and its own defaults for two engine
 // settings (h = 1.5 dx and CFL 0.1, the seed's values; the Wendland C2 kernel, decision D16). docs/isph.md lists the

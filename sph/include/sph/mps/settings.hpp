@@ -1,6 +1,6 @@
 #pragma once
 // Settings of the weakly compressible MPS method for granular flows (WC-MPS; Jafari Nodoushan, Shakibaeinia &
-// Hosseini 2016, shared/seeds/seed-001-wcmps-granular.md; issue 12). SI units, 2-D. What every physics shares
+// Hosseini 2016; issue 12). SI units, 2-D. What every physics shares
 // (dx, gravity, CFL factor, end time, output and checkpoint cadence, blow-up guard) comes from sph::EngineSettings.
 // The MPS does not use the engine's SPH kernel or h: its weight w = (1 - r/r_e)^3 has its own radius r_e
 // (re_over_dx below), and its neighbour search uses cells of side r_e. docs/mps.md lists the equations, the

@@ -1,6 +1,6 @@
 #pragma once
 // The WC-MPS equations, one small inline function each, named after what it computes. The comment of each gives
-// the seed's equation number (shared/seeds/seed-001-wcmps-granular.md) and, in brackets, its row in the equation
+// the seed's equation number (Jafari Nodoushan, Shakibaeinia & Hosseini 2016) and, in brackets, its row in the equation
 // table of docs/mps.md. The loops that gather the pair terms over neighbours are in sph/src/mps/operators.cpp.
 // Notation (MPS, the paper's): x_ij = x_j - x_i, y_ij = y_j - y_i, r = |r_ij|, phi_ij = phi_j - phi_i. The engine's
 // neighbour iteration hands over x_i - x_j: the loops negate it. 2-D (d = 2). SI units.
