@@ -85,6 +85,10 @@ std::string section_error(const Section& section) {
           << "') needs a positive unit weight, cohesion >= 0 and 0 <= friction angle < 90 degrees";
       return out.str();
     }
+    if (!(material.pore_pressure_ratio >= 0.0) || !(material.pore_pressure_ratio < 1.0)) {
+      out << "material " << m << " ('" << material.name << "') needs a pore-pressure ratio r_u with 0 <= r_u < 1";
+      return out.str();
+    }
   }
   if (section.water) {
     const auto& line = section.water->piezometric_line;

@@ -80,6 +80,7 @@ struct PreparedSection {
   std::vector<IndexedPolyline> lines;
   std::vector<double> line_unit_weight, line_cohesion, line_tan_phi;
   std::vector<std::size_t> line_material;
+  std::vector<double> material_ru;  // r_u of each material of the section (by its index), 0 when none
   bool has_water = false;
   IndexedPolyline piezometric_line;
   double water_unit_weight = 0.0;

@@ -73,6 +73,7 @@ PreparedSection::PreparedSection(const Section& section) {
     line_material.push_back(line.material);
   }
   lines = std::move(ordered);
+  for (const Material& m : section.materials) material_ru.push_back(m.pore_pressure_ratio);
 
   if (section.water) {
     has_water = true;
@@ -434,14 +435,17 @@ double Slicer::slice_layers(int i, const Circle* circle, SliceTable& table) {
   return weight;
 }
 
-// The water of slice i (between bounds_[i] and bounds_[i + 1], base and top heights already in the table): pore
-// pressure at the base midpoint, ponded water on the top and its horizontal thrust.
+// The water of slice i (between bounds_[i] and bounds_[i + 1]; base and top heights, weight and base material
+// already in the table): pore pressure at the base midpoint (r_u times the soil's overburden W / b where the base's
+// material has a pore-pressure ratio, else from the piezometric line), ponded water on the top and its thrust.
 void Slicer::slice_water(int i, double sdir, SliceTable& table) const {
   const PreparedSection& ps = prepared_;
   const auto [x0, x1, b, xm, ybm, ytm] = span_of(i, table);
   double u = 0.0, ponded = 0.0, thrust = 0.0;
+  const double ru = ps.material_ru[table.material[i]];
+  if (ru > 0.0) u = ru * table.weight[i] / b;
   if (ps.has_water) {
-    u = ps.water_unit_weight * std::max(0.0, ps.piezometric_line.y(xm) - ybm);
+    if (!(ru > 0.0)) u = ps.water_unit_weight * std::max(0.0, ps.piezometric_line.y(xm) - ybm);
     // The piezometric line does not cross the ground inside a slice (the crossings are boundaries).
     const double depth = ps.piezometric_line.mean(x0, x1) - ytm;
     if (depth > 0.0) {

@@ -27,12 +27,12 @@ namespace {
 
 constexpr double degree = std::numbers::pi / 180.0;
 
-// The example of SCENE.md, complete.
+// The scene format's full example (docs/scene-format.md), complete.
 json example_scene() {
   return json::parse(R"({
     "format": "sphslope-scene/1",
     "name": "Homogeneous 2:1 slope",
-    "source": "SCENE.md example",
+    "source": "the scene format's full example",
     "notes": {"anything": ["goes", 1, null]},
     "section": {
       "bottom_y_m": 0.0,
@@ -96,7 +96,7 @@ TEST_CASE("scene: units are converted to SI once", "[scene]") {
   REQUIRE(scene.section);
   const slope::Section& s = scene.section->section;
   CHECK(scene.name == "Homogeneous 2:1 slope");
-  CHECK(scene.source == "SCENE.md example");
+  CHECK(scene.source == "the scene format's full example");
   CHECK(s.bottom_y == 0.0);
   REQUIRE(s.materials.size() == 2);
   CHECK(s.materials[0].name == "upper");
@@ -279,7 +279,7 @@ TEST_CASE("scene: every fault is reported at once, each with its JSON path", "[s
 }
 
 TEST_CASE("scene: geometry faults", "[scene]") {
-  SECTION("the lower line of SCENE.md's example, taken literally, rises above the ground surface") {
+  SECTION("the lower line of the format's full example, taken literally, rises above the ground surface") {
     const auto errors = errors_of(example_scene());
     INFO(all(errors));
     REQUIRE(errors.size() == 1);
@@ -326,6 +326,15 @@ TEST_CASE("scene: SPH carries the section loads, and ignore_loads leaves one out
   REQUIRE(left_out.size() == 2);
   CHECK(left_out[0].path == "section.water");
   CHECK(left_out[1].path == "section.seismic");
+  // a material's r_u has no SPH counterpart: always left out, named by its path, without being listed
+  scene["section"]["materials"][1]["pore_pressure_ratio"] = 0.2;
+  const auto with_ru = coupling::loads_sph_leaves_out(parse_scene(scene.dump()));
+  REQUIRE(with_ru.size() == 3);
+  CHECK(with_ru[2].path == "section.materials[1].pore_pressure_ratio");
+  CHECK_THAT(with_ru[2].name, Catch::Contains("r_u = 0.2"));
+  CHECK_THAT(with_ru[2].why, Catch::Contains("piezometric line only"));
+  CHECK(parse_scene(scene.dump()).section->section.materials[1].pore_pressure_ratio == 0.2);
+  scene["section"]["materials"][1].erase("pore_pressure_ratio");
   scene["analyses"]["sph"]["ignore_loads"] = {"water", "surcharge"};
   CHECK_THROWS_WITH(parse_scene(scene.dump()), Catch::Contains("analyses.sph.ignore_loads[1]"));
   scene["section"].erase("water");

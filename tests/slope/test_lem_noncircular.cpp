@@ -134,19 +134,34 @@ TEST_CASE("ACADS 3(a) weak layer: the non-circular search runs along the weak la
 TEST_CASE("Fredlund & Krahn weak layer: the composite surface's published factors of safety, and a lower one found",
           "[lem][noncircular]") {
   // Fredlund & Krahn (1977), Can. Geotech. J. 14(3):429-439, weak-layer example (dry), on the circle cut off by
-  // the base: Ordinary 1.288, Bishop 1.377, Spencer 1.373, Morgenstern-Price f = 1 1.370 (Slide2 verification
-  // problem 22: 1.300, 1.382, 1.382, 1.372).
+  // the base: Ordinary 1.288, Bishop 1.377, Spencer 1.373, Morgenstern-Price f = 1 1.378 (their table of results,
+  // case 2, as reproduced on the MacSlope verification page; Slide2 verification problem 22: 1.300, 1.382, 1.382,
+  // 1.372).
   const slope::Section s = fredlund_krahn_weak_layer();
   const slope::SlipPolyline composite = fredlund_krahn_composite(80);
   CHECK(fs_on(s, composite, slope::Method::ordinary) == Approx(1.288).epsilon(0.01));
   CHECK(fs_on(s, composite, slope::Method::bishop) == Approx(1.377).epsilon(0.01));
   CHECK(fs_on(s, composite, slope::Method::spencer) == Approx(1.373).epsilon(0.01));
-  CHECK(fs_on(s, composite, slope::Method::morgenstern_price_constant) == Approx(1.370).epsilon(0.01));
+  CHECK(fs_on(s, composite, slope::Method::morgenstern_price_constant) == Approx(1.378).epsilon(0.01));
   const std::vector<slope::Method> methods{slope::Method::spencer};
   const slope::SearchResult c = circular(s, methods);
   const slope::NonCircularResult r = slope::search_noncircular(s, c, slope::SearchOptions{});
   CHECK(non_circular_fs(r, slope::Method::spencer) < fs_on(s, composite, slope::Method::spencer));
   CHECK_FALSE(r.methods[0].from_circle);
+}
+
+TEST_CASE("Fredlund & Krahn weak layer with r_u = 0.25 in both materials (their case 4), on the composite surface",
+          "[lem][noncircular][ru]") {
+  // Fredlund & Krahn (1977), table of results, case 4 (case 2 with r_u = 0.25 for both materials), as reproduced on
+  // the MacSlope verification page: Ordinary 1.029, Bishop 1.124, Spencer 1.118, Morgenstern-Price f = 1 1.124
+  // (Slide2 verification problem 22: Bishop 1.124). Tolerance 1 %, as for case 2 above.
+  slope::Section s = fredlund_krahn_weak_layer();
+  for (slope::Material& m : s.materials) m.pore_pressure_ratio = 0.25;
+  const slope::SlipPolyline composite = fredlund_krahn_composite(80);
+  CHECK(fs_on(s, composite, slope::Method::ordinary) == Approx(1.029).epsilon(0.01));
+  CHECK(fs_on(s, composite, slope::Method::bishop) == Approx(1.124).epsilon(0.01));
+  CHECK(fs_on(s, composite, slope::Method::spencer) == Approx(1.118).epsilon(0.01));
+  CHECK(fs_on(s, composite, slope::Method::morgenstern_price_constant) == Approx(1.124).epsilon(0.01));
 }
 
 TEST_CASE("non-circular search on a homogeneous slope: close to the circle, never above it, and fast",

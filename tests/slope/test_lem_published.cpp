@@ -80,6 +80,68 @@ TEST_CASE("Fredlund & Krahn (1977) specified circle, case 1 (dry) and case 5 (pi
   }
 }
 
+TEST_CASE("Fredlund & Krahn (1977) specified circle, case 3: pore-pressure ratio r_u = 0.25",
+          "[slope][published][validation][ru]") {
+  // Published factors of safety (Fredlund & Krahn 1977, table of results, case 3 = case 1 with r_u = 0.25, as
+  // reproduced on the MacSlope verification page "Fredlund and Krahn Example Problem"): Ordinary 1.607, Bishop
+  // 1.766, Janbu corrected 1.735, Spencer 1.761 (lambda 0.255), Morgenstern-Price f = 1 1.765 (lambda 0.244).
+  // Tolerances as for cases 1 and 5. F&K's r_u: u = r_u gamma h, h the height of soil above the base's middle.
+  slope::Section s = fredlund_krahn(false);
+  s.materials[0].pore_pressure_ratio = 0.25;
+  const auto mass = slope::slice_circle(s, slope::Circle{120.0, 90.0, 80.0}, {});
+  REQUIRE(mass);
+  for (const slope::Slice& slice : mass->slices)
+    CHECK(slice.pore_pressure == Approx(0.25 * slice.weight / slice.width).epsilon(1e-12));
+  CHECK(fs_on(*mass, slope::Method::ordinary) == Approx(1.607).epsilon(0.005));
+  CHECK(fs_on(*mass, slope::Method::bishop) == Approx(1.766).epsilon(0.005));
+  CHECK(fs_on(*mass, slope::Method::janbu_corrected) == Approx(1.735).epsilon(0.015));
+  double lambda = 0.0;
+  CHECK(fs_on(*mass, slope::Method::spencer, &lambda) == Approx(1.761).epsilon(0.005));
+  CHECK(lambda == Approx(0.255).margin(0.03));
+  CHECK(fs_on(*mass, slope::Method::morgenstern_price_constant, &lambda) == Approx(1.765).epsilon(0.005));
+  CHECK(lambda == Approx(0.244).margin(0.03));
+  // r_u takes the place of a piezometric line on the bases in its material: with case 5's line as well, every base
+  // still carries r_u times its overburden (the line only adds slice boundaries where it crosses the circle)
+  slope::Section both = fredlund_krahn(true);
+  both.materials[0].pore_pressure_ratio = 0.25;
+  const auto mass_both = slope::slice_circle(both, slope::Circle{120.0, 90.0, 80.0}, {});
+  REQUIRE(mass_both);
+  for (const slope::Slice& slice : mass_both->slices)
+    CHECK(slice.pore_pressure == Approx(0.25 * slice.weight / slice.width).epsilon(1e-12));
+  CHECK(fs_on(*mass_both, slope::Method::bishop) == Approx(fs_on(*mass, slope::Method::bishop)).epsilon(1e-3));
+}
+
+TEST_CASE("r_u on an infinite slope: F = (1 - r_u sec^2 beta) tan phi' / tan beta", "[slope][closed_form][ru]") {
+  // Closed form of an infinite slope with c' = 0 and u = r_u gamma z (z the vertical depth of the slip plane):
+  // F = (1 - r_u sec^2 beta) tan phi' / tan beta; cot beta = 3, phi' = 30 deg, r_u = 0.3 give 1.1547 (dry 1.7321).
+  // The slope: 1:3, 400 m high; the slip surface runs 2 m (vertically) below the face from x = 10 to 1200 m, enters
+  // at the crest's edge and leaves 6 m beyond the toe: the ends carry about 1 % of the weight. (Steeper ends fail:
+  // with r_u = 0.3 a base steeper than 57 deg has W cos^2 alpha < u b, a negative effective normal force.)
+  slope::Section s;
+  s.bottom_y = -50.0;
+  s.materials.push_back(slope::Material{"sand", 20e3, 0.0, radians(30.0), 0.3});
+  s.profile_lines.push_back(slope::ProfileLine{0, {{-50, 400}, {0, 400}, {1200, 0}, {1250, 0}}});
+  slope::SlipPolyline plane;
+  plane.points = {{0, 400}, {10, 400 - 10.0 / 3 - 2}, {1200, -2}, {1206, 0}};
+  const auto mass = slope::slice_polyline(s, plane, slope::SliceOptions{});
+  REQUIRE(mass);
+  const double beta = std::atan(1.0 / 3.0), phi = radians(30.0);
+  const double closed = (1.0 - 0.3 / (std::cos(beta) * std::cos(beta))) * std::tan(phi) / std::tan(beta);
+  CHECK(closed == Approx(1.1547).epsilon(1e-4));
+  // Ordinary: each slice of the uniform part gives the closed form exactly (measured 0.3 % above, from the ends)
+  CHECK(fs_on(*mass, slope::Method::ordinary) == Approx(closed).epsilon(0.005));
+  // Spencer: the passive wedge at the toe adds 0.6-0.8 % with or without water; the ratio wet / dry, where the ends
+  // largely cancel, is the closed form's 1 - r_u sec^2 beta (measured within 0.15 %)
+  const double spencer = fs_on(*mass, slope::Method::spencer);
+  CHECK(spencer == Approx(closed).epsilon(0.01));
+  s.materials[0].pore_pressure_ratio = 0.0;
+  const auto dry = slope::slice_polyline(s, plane, slope::SliceOptions{});
+  REQUIRE(dry);
+  const double spencer_dry = fs_on(*dry, slope::Method::spencer);
+  CHECK(spencer_dry == Approx(std::tan(phi) / std::tan(beta)).epsilon(0.01));
+  CHECK(spencer / spencer_dry == Approx(1.0 - 0.3 / (std::cos(beta) * std::cos(beta))).epsilon(0.003));
+}
+
 TEST_CASE("ACADS EX1(a): homogeneous slope, critical circle search", "[slope][published][validation]") {
   // Giam & Donald (1989), ACADS slope stability programs review, problem 1(a): referee F = 1.00; the mean of the
   // Bishop results of 18 programs 0.993. 2:1 slope from (30, 25) up to (50, 35) facing left, base at y = 20,

@@ -176,9 +176,9 @@ void check_energies(const Scene& scene, const sph::Model& model, SphStageResult&
   // viscous losses are >= 0; with ramped gravity the work of gravity is smaller still). More means the scheme
   // created energy. Not applicable with a K0 initial stress, whose stored elastic energy is released as well.
   const double released = model.state.initial_potential_energy - summary.potential_energy;
-  for (const SectionLoad& load : loads_sph_leaves_out(scene))  // only those the user listed get this far
-    result.warnings.push_back(load.path + " is not carried by the SPH model (analyses.sph.ignore_loads): this SPH "
-                              "result is for the slope without " + load.name + ", unlike the limit-equilibrium result");
+  for (const SectionLoad& load : loads_sph_leaves_out(scene))
+    result.warnings.push_back(load.path + " is not carried by the SPH model (" + load.why + "): this SPH result is "
+                              "for the slope without " + load.name + ", unlike the limit-equilibrium result");
   if (result.energies_finite && released > 0.0) {
     const double work = summary.kinetic_energy + summary.plastic_dissipation;
     const double ratio = work / released;

@@ -294,11 +294,11 @@ nlohmann::json journal_fingerprint(const sph::Model& pristine, const SrmPlan& pl
           {"strengths", std::move(strengths)}};
 }
 
-// The loads SPH left out (only those listed in analyses.sph.ignore_loads).
+// What SPH leaves out of the section (loads listed in analyses.sph.ignore_loads, a material's r_u).
 std::vector<std::string> left_out_load_warnings(const Scene& scene) {
   std::vector<std::string> warnings;
   for (const SectionLoad& load : loads_sph_leaves_out(scene))
-    warnings.push_back(load.path + " is not carried by the SPH model (analyses.sph.ignore_loads): FS_SPH is for "
+    warnings.push_back(load.path + " is not carried by the SPH model (" + load.why + "): FS_SPH is for "
                        "the slope without " + load.name + ", the limit-equilibrium factors of safety are with it");
   return warnings;
 }

@@ -84,8 +84,8 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
     std::cout << "ok: " << scene_file.string() << ": " << coupling::summarize(*result.scene) << "\n";
     for (const coupling::SectionLoad& load : coupling::loads_sph_leaves_out(*result.scene))
       std::cerr << "warning: " << scene_file.string() << ": " << load.path
-                << " is left out of the SPH model (analyses.sph.ignore_loads): SPH, strength reduction and the "
-                   "comparison will analyse the slope without "
+                << " is left out of the SPH model (" << load.why
+                << "): SPH, strength reduction and the comparison will analyse the slope without "
                 << load.name << ", limit equilibrium with it\n";
     return 0;
   }

@@ -108,6 +108,11 @@ std::string geometry_lines(const slope::Section& s) {
   std::string out = line;
   std::string loads;
   if (s.water) loads += "piezometric line (" + std::to_string(s.water->piezometric_line.size()) + " points); ";
+  for (const slope::Material& m : s.materials) {
+    if (!(m.pore_pressure_ratio > 0.0)) continue;
+    std::snprintf(line, sizeof line, "r<sub>u</sub> = %.3g in ", m.pore_pressure_ratio);
+    loads += line + esc(m.name) + "; ";
+  }
   for (const slope::Surcharge& q : s.surcharges) {
     std::snprintf(line, sizeof line, "surcharge %.1f kPa on x = %.2f to %.2f m; ", q.pressure / 1e3, q.from_x, q.to_x);
     loads += line;

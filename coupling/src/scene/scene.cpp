@@ -414,6 +414,8 @@ std::string summarize(const Scene& scene) {
         << s.profile_lines.size() << " profile line" << (s.profile_lines.size() == 1 ? "" : "s") << ", "
         << s.materials.size() << " material" << (s.materials.size() == 1 ? "" : "s");
     if (s.water) out << ", water table";
+    for (const slope::Material& m : s.materials)
+      if (m.pore_pressure_ratio > 0.0) out << ", r_u " << format_number(m.pore_pressure_ratio) << " in " << m.name;
     if (!s.surcharges.empty())
       out << ", " << s.surcharges.size() << " surcharge" << (s.surcharges.size() == 1 ? "" : "s");
     if (s.seismic_coefficient > 0) out << ", seismic kh = " << format_number(s.seismic_coefficient);

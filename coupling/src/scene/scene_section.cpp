@@ -281,6 +281,7 @@ std::optional<SoilMaterial> read_material(JsonReader& m) {
   const auto youngs = m.number("youngs_modulus_MPa", Need::optional, Bounds::positive());
   const auto poisson = m.number("poisson_ratio", Need::optional, Bounds::open(-1.0, 0.5));
   const auto model = m.string("constitutive_model", Need::optional);
+  const auto ru = m.number("pore_pressure_ratio", Need::optional, Bounds::half_open(0.0, 1.0));
   m.finish();
   if (model && *model != "drucker_prager" && *model != "elastic") {
     m.diagnostics().error(m.path_of("constitutive_model"),
@@ -297,6 +298,7 @@ std::optional<SoilMaterial> read_material(JsonReader& m) {
   if (m.has("dilatancy_angle_deg") && !dilatancy) return std::nullopt;
   if (m.has("youngs_modulus_MPa") && !youngs) return std::nullopt;
   if (m.has("poisson_ratio") && !poisson) return std::nullopt;
+  if (m.has("pore_pressure_ratio") && !ru) return std::nullopt;
   material.name = *name;
   material.unit_weight = *unit_weight * kilo;
   material.cohesion = *cohesion * kilo;
@@ -305,6 +307,7 @@ std::optional<SoilMaterial> read_material(JsonReader& m) {
   if (youngs) material.youngs_modulus = *youngs * mega;
   material.poisson_ratio = poisson;
   material.elastic = model && *model == "elastic";
+  if (ru) material.pore_pressure_ratio = *ru;
   return material;
 }
 
@@ -504,7 +507,8 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
 
   result.section.bottom_y = *bottom_y;
   for (const SoilMaterial& m : result.materials) {
-    result.section.materials.push_back(slope::Material{m.name, m.unit_weight, m.cohesion, m.friction_angle});
+    result.section.materials.push_back(
+        slope::Material{m.name, m.unit_weight, m.cohesion, m.friction_angle, m.pore_pressure_ratio});
   }
   for (const LineRead& line : lines) {
     result.section.profile_lines.push_back(slope::ProfileLine{*line.material, *line.points});

@@ -109,9 +109,18 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
   const slope::Section& section = scene.section->section;
   const auto& ignored = scene.analyses.sph->ignored_loads;
   auto listed = [&](const char* name) { return std::find(ignored.begin(), ignored.end(), name) != ignored.end(); };
-  if (section.water && listed("water")) loads.push_back({"water", "section.water"});
-  if (!section.surcharges.empty() && listed("surcharges")) loads.push_back({"surcharges", "section.surcharges"});
-  if (section.seismic_coefficient != 0.0 && listed("seismic")) loads.push_back({"seismic", "section.seismic"});
+  const std::string why = "listed in analyses.sph.ignore_loads";
+  if (section.water && listed("water")) loads.push_back({"water", "section.water", why});
+  if (!section.surcharges.empty() && listed("surcharges"))
+    loads.push_back({"surcharges", "section.surcharges", why});
+  if (section.seismic_coefficient != 0.0 && listed("seismic")) loads.push_back({"seismic", "section.seismic", why});
+  const auto& materials = scene.section->materials;
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].pore_pressure_ratio > 0.0)
+      loads.push_back({"the pore-pressure ratio r_u = " + format_number(materials[i].pore_pressure_ratio) +
+                           " of material \"" + materials[i].name + "\"",
+                       index_path("section.materials", i) + ".pore_pressure_ratio",
+                       "the SPH soil model takes pore pressure from the piezometric line only"});
   return loads;
 }
 

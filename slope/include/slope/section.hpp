@@ -18,6 +18,10 @@ struct Material {
   double unit_weight = 0.0;     // N/m^3 (total unit weight)
   double cohesion = 0.0;        // Pa (effective cohesion c')
   double friction_angle = 0.0;  // rad (effective friction angle phi')
+  // r_u (-): when > 0, the pore pressure on a slice base in this material is r_u times the vertical overburden of
+  // soil above the base's midpoint (the slice's soil weight / its width), in place of the piezometric line's;
+  // 0: the piezometric line (if any) gives it. 0 <= r_u < 1.
+  double pore_pressure_ratio = 0.0;
 };
 
 // A profile line is the top of its material; the material extends down to the next line below it
@@ -27,7 +31,9 @@ struct ProfileLine {
   std::vector<Point> points;  // m
 };
 
-// Pore pressure at a point below the piezometric line: u = unit_weight * (height of the line above the point).
+// Pore pressure at a point below the piezometric line: u = unit_weight * (height of the line above the point), on the
+// bases of materials without a pore-pressure ratio (Material::pore_pressure_ratio); the water above the ground
+// (ponded) acts on every slice top.
 struct Water {
   std::vector<Point> piezometric_line;  // m, x strictly increasing, spans the section
   double unit_weight = 9810.0;          // N/m^3

@@ -1,7 +1,7 @@
 #pragma once
 // Scene files ("format": "sphslope-scene/1"): loading, validation and conversion to SI.
 //
-// The contract is /work/shared/SCENE.md; every key, unit and default is documented in docs/scene-format.md.
+// Every key, unit and default is documented in docs/scene-format.md.
 // load_scene() either returns a fully validated Scene in SI units (m, N/m^3, Pa, rad) or throws SceneError
 // holding every fault found, each naming its JSON path:
 //
@@ -113,9 +113,12 @@ std::vector<std::string> lem_method_keys(const Scene& scene);
 // The loads of a slope section that the SPH model leaves out because analyses.sph.ignore_loads lists them, each with
 // the JSON path that defines it: {"water", "section.water"}, {"surcharges", "section.surcharges"},
 // {"seismic", "section.seismic"}. Empty without a section or an SPH analysis.
+// What the section carries into limit equilibrium that the SPH model leaves out: the loads the user listed in
+// analyses.sph.ignore_loads, and what the SPH soil model cannot represent (a material's pore-pressure ratio r_u).
 struct SectionLoad {
-  std::string name;
-  std::string path;
+  std::string name;  // e.g. "water", "the pore-pressure ratio r_u = 0.25 of material \"clay\""
+  std::string path;  // its JSON path
+  std::string why;   // why SPH leaves it out, e.g. "listed in analyses.sph.ignore_loads"
 };
 std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene);
 

@@ -20,6 +20,7 @@ struct SoilMaterial {
   std::optional<double> youngs_modulus;    // Pa; needed by SPH only
   std::optional<double> poisson_ratio;     // -; needed by SPH only
   bool elastic = false;                    // SPH: linear elastic, no yield (constitutive_model "elastic")
+  double pore_pressure_ratio = 0.0;        // r_u (-), limit equilibrium only: u = r_u x the soil's overburden
 
   double density() const { return unit_weight / standard_gravity; }  // kg/m^3
 };
