@@ -86,12 +86,17 @@ TEST_CASE("Fredlund & Krahn (1977) specified circle, case 3: pore-pressure ratio
   // reproduced on the MacSlope verification page "Fredlund and Krahn Example Problem"): Ordinary 1.607, Bishop
   // 1.766, Janbu corrected 1.735, Spencer 1.761 (lambda 0.255), Morgenstern-Price f = 1 1.765 (lambda 0.244).
   // Tolerances as for cases 1 and 5. F&K's r_u: u = r_u gamma h, h the height of soil above the base's middle.
-  slope::Section s = fredlund_krahn(false);
-  s.materials[0].pore_pressure_ratio = 0.25;
-  const auto mass = slope::slice_circle(s, slope::Circle{120.0, 90.0, 80.0}, {});
-  REQUIRE(mass);
-  for (const slope::Slice& slice : mass->slices)
-    CHECK(slice.pore_pressure == Approx(0.25 * slice.weight / slice.width).epsilon(1e-12));
+  // F&K's circle on their section with r_u = 0.25; every base carries r_u times its overburden W / b
+  auto sliced_with_ru = [](bool piezometric_line) {
+    slope::Section s = fredlund_krahn(piezometric_line);
+    s.materials[0].pore_pressure_ratio = 0.25;
+    auto mass = slope::slice_circle(s, slope::Circle{120.0, 90.0, 80.0}, {});
+    REQUIRE(mass);
+    for (const slope::Slice& slice : mass->slices)
+      CHECK(slice.pore_pressure == Approx(0.25 * slice.weight / slice.width).epsilon(1e-12));
+    return mass;
+  };
+  const auto mass = sliced_with_ru(false);
   CHECK(fs_on(*mass, slope::Method::ordinary) == Approx(1.607).epsilon(0.005));
   CHECK(fs_on(*mass, slope::Method::bishop) == Approx(1.766).epsilon(0.005));
   CHECK(fs_on(*mass, slope::Method::janbu_corrected) == Approx(1.735).epsilon(0.015));
@@ -102,12 +107,7 @@ TEST_CASE("Fredlund & Krahn (1977) specified circle, case 3: pore-pressure ratio
   CHECK(lambda == Approx(0.244).margin(0.03));
   // r_u takes the place of a piezometric line on the bases in its material: with case 5's line as well, every base
   // still carries r_u times its overburden (the line only adds slice boundaries where it crosses the circle)
-  slope::Section both = fredlund_krahn(true);
-  both.materials[0].pore_pressure_ratio = 0.25;
-  const auto mass_both = slope::slice_circle(both, slope::Circle{120.0, 90.0, 80.0}, {});
-  REQUIRE(mass_both);
-  for (const slope::Slice& slice : mass_both->slices)
-    CHECK(slice.pore_pressure == Approx(0.25 * slice.weight / slice.width).epsilon(1e-12));
+  const auto mass_both = sliced_with_ru(true);
   CHECK(fs_on(*mass_both, slope::Method::bishop) == Approx(fs_on(*mass, slope::Method::bishop)).epsilon(1e-3));
 }
 
