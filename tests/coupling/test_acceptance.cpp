@@ -14,6 +14,8 @@
 #include "coupling/output/comparison_report.hpp"
 #include "test_support.hpp"
 
+namespace test_acceptance {
+
 namespace fs = std::filesystem;
 using coupling::AcceptanceCriteria;
 using coupling::Diagnostics;
@@ -147,3 +149,5 @@ TEST_CASE("acceptance through the program: accepted gives 0, rejected gives 3 wi
   const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
   CHECK(text.find("not accepted: bishop overlap:") != std::string::npos);
 }
+
+}  // namespace test_acceptance

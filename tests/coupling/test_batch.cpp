@@ -19,6 +19,8 @@
 
 extern char** environ;
 
+namespace test_batch {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -164,3 +166,5 @@ TEST_CASE("batch: Ctrl-C stops the runs with checkpoints, says how to continue, 
   CHECK(report["sph"]["stopped_because"] == "end_time");
   CHECK(report["sph"]["steps_this_session"].get<long>() < report["sph"]["steps"].get<long>());
 }
+
+}  // namespace test_batch

@@ -13,6 +13,8 @@
 #include "coupling/scene/scene.hpp"
 #include "test_support.hpp"
 
+namespace test_fs_map_figure {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -86,3 +88,5 @@ TEST_CASE("analyses.lem.fs_map: method defaults to Bishop, refused when not anal
   CHECK_THAT(svg, Catch::Contains(circle) && Catch::Contains(polyline));
   CHECK_THAT(svg, Catch::Contains("&gt; 2<"));  // the scale stops at the given 2.0
 }
+
+}  // namespace test_fs_map_figure

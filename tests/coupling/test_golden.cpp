@@ -36,6 +36,8 @@
 #include "sph/soil/run.hpp"
 #include "test_support.hpp"
 
+namespace test_golden {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -545,3 +547,5 @@ TEST_CASE("golden: LE critical factors of safety of every slope scene in cases/"
       check_lem_row(row, g->second);
   }
 }
+
+}  // namespace test_golden

@@ -31,6 +31,8 @@
 #include "coupling/studies/study.hpp"
 #include "test_support.hpp"
 
+namespace test_golden_reports {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -215,3 +217,5 @@ TEST_CASE("golden: report.json, report.html and the figures of representative ru
     }
   }
 }
+
+}  // namespace test_golden_reports

@@ -16,6 +16,8 @@
 #include "coupling/scene/scene.hpp"
 #include "test_support.hpp"
 
+namespace test_hostile_input {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -182,3 +184,5 @@ TEST_CASE("hostile input: a scene with a thousand faults prints the first 200 an
                                  " are shown)");
   }
 }
+
+}  // namespace test_hostile_input

@@ -13,6 +13,8 @@
 
 #include "test_support.hpp"
 
+namespace test_isph_cases {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -125,3 +127,5 @@ TEST_CASE("ISPH aerial landslide (Heinrich 1992 geometry, coarse): stop, energy 
   const json r = run_case(folder, "aerial", coarse_heinrich("isph_heinrich_aerial.json", 3.5));
   check_landslide(r, 0.565685, 0.85, 1.3);  // stop_after_m of the case (0.4 m √2)
 }
+
+}  // namespace test_isph_cases

@@ -18,6 +18,8 @@
 #include "sph/fluid/reference_fronts.hpp"
 #include "test_support.hpp"
 
+namespace test_isph_run {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -222,3 +224,5 @@ TEST_CASE("the still tank keeps the hydrostatic floor pressure and stays at rest
   REQUIRE(run_into(write_scene(folder.path, "dam.json", dam), folder.path / "dam").status == 0);
   CHECK_FALSE(read_json(folder.path / "dam" / "report.json")["isph"].contains("still_tank"));
 }
+
+}  // namespace test_isph_run

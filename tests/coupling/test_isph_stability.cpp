@@ -14,6 +14,8 @@
 
 #include "test_support.hpp"
 
+namespace test_isph_stability {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -156,3 +158,5 @@ TEST_CASE("stability: a splash against the far wall finishes and reports the par
   CHECK(o.isph["fluid_past_walls"]["most"] == 0);
   CHECK(o.isph["wall_contacts"].get<int>() > 0);
 }
+
+}  // namespace test_isph_stability

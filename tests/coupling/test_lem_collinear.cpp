@@ -11,6 +11,8 @@
 #include "coupling/scene/scene.hpp"
 #include "slope/search.hpp"
 
+namespace test_lem_collinear {
+
 namespace {
 
 // Every segment of `line` split into `pieces` collinear segments.
@@ -106,3 +108,5 @@ TEST_CASE("a circle grazing a layer line: the slice between the two crossings ta
     CHECK(on_line == 1);
   }
 }
+
+}  // namespace test_lem_collinear

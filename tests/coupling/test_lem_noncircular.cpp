@@ -12,6 +12,8 @@
 #include "coupling/scene/scene.hpp"
 #include "slope/search.hpp"
 
+namespace test_lem_noncircular {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -105,3 +107,5 @@ TEST_CASE("analyses.lem.noncircular_search: read, refused when wrong, reported",
   CHECK(nc["methods"]["ordinary"]["surface"]["type"] == "circle");
   CHECK(out.report["timing_s"].contains("lem_noncircular"));
 }
+
+}  // namespace test_lem_noncircular

@@ -8,6 +8,8 @@
 #include "coupling/output/report.hpp"
 #include "coupling/scene/scene.hpp"
 
+namespace test_lem_surfaces {
+
 using coupling::parse_scene;
 using coupling::SceneError;
 using nlohmann::json;
@@ -124,3 +126,5 @@ TEST_CASE("scene: faults in given slip surfaces are reported at their JSON paths
   CHECK(mentions(errors, "analyses.lem.surfaces[7].circle: not an admissible slip circle: the circle does not cut"));
   CHECK(errors.size() == 8);
 }
+
+}  // namespace test_lem_surfaces

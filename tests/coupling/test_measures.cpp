@@ -18,6 +18,8 @@
 #include "sph/fluid/reference_fronts.hpp"
 #include "sph/soil/benchmarks.hpp"
 
+namespace test_measures {
+
 namespace {
 
 constexpr double g = 9.81;  // [m/s^2]
@@ -316,3 +318,5 @@ TEST_CASE("deposit measure: run-out and height of a heap, stray particles left o
   const sph::DepositShape shifted = sph::measure_deposit(model, -dx, 2 * dx);
   CHECK(shifted.height == Approx((n + 1) * dx).epsilon(1e-12));
 }
+
+}  // namespace test_measures

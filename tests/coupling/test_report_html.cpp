@@ -15,6 +15,8 @@
 #include "slope/methods.hpp"
 #include "test_support.hpp"
 
+namespace test_report_html {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -84,3 +86,5 @@ TEST_CASE("report.html lists errors and warnings once each, marks a failed run, 
   CHECK_THAT(html, !Catch::Contains("Limit equilibrium: factor of safety"));  // no lem block, no table
   CHECK_THAT(html, Catch::Contains("<td class=\"l\">soil</td><td>20.00</td><td>10.0</td><td>20.0</td>"));
 }
+
+}  // namespace test_report_html

@@ -11,6 +11,8 @@
 #include "coupling/scene/json_text.hpp"
 #include "coupling/output/report.hpp"
 
+namespace test_report_writer {
+
 using Catch::Matchers::Contains;
 
 namespace {
@@ -62,3 +64,5 @@ TEST_CASE("report writer: the run's non-finite numbers become nulls named in the
   for (int i = 0; i < 13; ++i) many.push_back(std::numeric_limits<double>::quiet_NaN());
   CHECK_THROWS_WITH(coupling::json_text(many), Contains("[9]") && Contains("and 3 more") && !Contains("[10]"));
 }
+
+}  // namespace test_report_writer

@@ -20,6 +20,8 @@
 
 #include "test_support.hpp"
 
+namespace test_scene_cli {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -657,3 +659,5 @@ TEST_CASE("sphslope run on the erodible dam break writes profiles and the dam-br
     CHECK(f["scour_m"].get<double>() > 0.01);
   }
 }
+
+}  // namespace test_scene_cli

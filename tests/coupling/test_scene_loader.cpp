@@ -17,6 +17,8 @@
 #include "coupling/scene/scene.hpp"
 #include "coupling/analyses/pipeline.hpp"
 
+namespace test_scene_loader {
+
 namespace fs = std::filesystem;
 using coupling::parse_scene;
 using coupling::Scene;
@@ -443,3 +445,5 @@ TEST_CASE("report: a critical surface in report units", "[report]") {
     CHECK_FALSE(f.contains("lambda"));
   }
 }
+
+}  // namespace test_scene_loader

@@ -6,6 +6,8 @@
 #include "coupling/compare/sph_surface_lem.hpp"
 #include "slope/methods.hpp"
 
+namespace test_sph_surface_lem {
+
 namespace {
 
 constexpr double degree = M_PI / 180.0;
@@ -111,3 +113,5 @@ TEST_CASE("the SPH band as an LE surface: a spike of the band that turns it back
   REQUIRE(kept.mass.has_value());
   CHECK(kept.dropped_vertices == 0);
 }
+
+}  // namespace test_sph_surface_lem

@@ -27,6 +27,8 @@
 
 extern char** environ;
 
+namespace test_sph_workflow {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -303,9 +305,6 @@ TEST_CASE("Ctrl-C stops an SPH run: status 1, a report saying it was interrupted
   fs::remove_all(dir);
 }
 
-#include "coupling/scene/scene.hpp"
-#include "coupling/analyses/sph_model.hpp"
-
 TEST_CASE("the thesis slopes fill with the thesis's particle counts", "[sph][fill]") {
   // Source: the soil-slope SPH thesis, section 5-5 (Tables 5-1, 5-3, 5-5): 3200, 3725 and 7100 soil particles at
   // 0.025, 0.2 and 0.25 m. A regression test, not a validation: the geometry of the three slopes was chosen to give
@@ -348,3 +347,5 @@ TEST_CASE("the demo with water: two_layer_water_sph at 1 m runs end to end, SPH 
   CHECK(0.5 * (lo + hi) <= 1.15 * bishop);
   fs::remove_all(dir);
 }
+
+}  // namespace test_sph_workflow

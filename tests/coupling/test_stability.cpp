@@ -29,6 +29,8 @@
 
 extern char** environ;
 
+namespace test_stability {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -698,3 +700,5 @@ TEST_CASE("stability: a particle body with fewer than 4 particles across is refu
   scene["analyses"]["sph"]["particle_spacing_m"] = 0.025;  // exactly 4 across: accepted
   CHECK_NOTHROW(coupling::parse_scene(scene.dump(), "column.json"));
 }
+
+}  // namespace test_stability

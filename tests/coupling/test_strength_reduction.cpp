@@ -14,6 +14,8 @@
 #include "coupling/analyses/strength_reduction.hpp"
 #include "coupling/output/run_files.hpp"
 
+namespace test_strength_reduction {
+
 using namespace coupling;
 
 namespace {
@@ -230,3 +232,5 @@ TEST_CASE("srm: Griffiths & Lane example 5, slow drawdown to L/H = 0 and 0.7, at
   }
   CHECK(submerged.lo > drawn_down.hi);  // the reservoir's support, as LE and FE say
 }
+
+}  // namespace test_strength_reduction

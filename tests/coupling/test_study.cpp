@@ -19,6 +19,8 @@
 #include "coupling/studies/study.hpp"
 #include "sph/fluid/reference_fronts.hpp"
 
+namespace test_study {
+
 namespace fs = std::filesystem;
 using namespace coupling;
 
@@ -293,3 +295,5 @@ TEST_CASE("study: refusals name what is wrong", "[study]") {
   CHECK_FALSE(fs::exists(options.output_dir));  // nothing written for invalid input
   fs::remove_all(dir);
 }
+
+}  // namespace test_study

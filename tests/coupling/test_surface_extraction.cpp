@@ -4,7 +4,10 @@
 #include <cmath>
 
 #include "coupling/compare/failure_surface.hpp"
+#include "coupling/compare/sliding_mass.hpp"
 #include "coupling/compare/surface_comparison.hpp"
+
+namespace test_surface_extraction {
 
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
@@ -101,7 +104,6 @@ TEST_CASE("circle arcs: concentric arcs are the radius difference apart", "[comp
   CHECK_THAT(d.max_normal_distance, WithinAbs(1.0, 2e-3));
 }
 
-#include "coupling/compare/sliding_mass.hpp"
 
 TEST_CASE("sliding-mass polygons and their overlap: squares and a half-disc", "[comparison]") {
   // Two unit squares offset by half a side: intersection 0.5, union 1.5, IoU 1/3 (closed form).
@@ -148,3 +150,5 @@ TEST_CASE("the extracted band line is a graph y(x): x increases along it", "[ext
   REQUIRE(surface.points.size() > 10);
   for (std::size_t k = 1; k < surface.points.size(); ++k) CHECK(surface.points[k].x > surface.points[k - 1].x);
 }
+
+}  // namespace test_surface_extraction

@@ -16,6 +16,8 @@
 
 #include "test_support.hpp"
 
+namespace test_surveyed_profile {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -94,3 +96,5 @@ TEST_CASE("surveyed profile: LE on 2427 LiDAR vertices agrees with the profile r
     CHECK(fs_full == Approx(fs_simple).margin(0.05));
   }
 }
+
+}  // namespace test_surveyed_profile

@@ -7,6 +7,8 @@
 #include "slope/methods.hpp"
 #include "slope/slices.hpp"
 
+namespace test_lem_methods {
+
 using Catch::Matchers::Contains;
 using namespace lem_test;
 
@@ -322,3 +324,5 @@ TEST_CASE("the methods rank as expected on a c-phi slope", "[slope][methods]") {
   CHECK(spencer == Approx(bishop).epsilon(0.01));
   CHECK(mp == Approx(spencer).epsilon(0.005));
 }
+
+}  // namespace test_lem_methods

@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+namespace test_lem_noncircular {
+
 namespace {
 
 using namespace lem_test;
@@ -35,7 +37,6 @@ double non_circular_fs(const slope::NonCircularResult& r, slope::Method m) {
 
 }  // namespace
 
-
 namespace {
 // ACADS 3 (Donald & Giam 1989), as reproduced in Slide2 verification problems 7 and 8: 2:1 face 12.25 m high
 // facing left, a horizontal weak layer 0.5 m thick (y 26.5 to 27.0) 0.75 m below the toe.
@@ -50,7 +51,6 @@ slope::Section acads3(double bottom) {
   return s;
 }
 }  // namespace
-
 
 namespace {
 // Fredlund & Krahn (1977) slope with a weak layer, in ft, psf, pcf (factors of safety do not depend on the units):
@@ -210,3 +210,5 @@ TEST_CASE("non-circular search: the user's entry and exit limits hold, the mirro
   const slope::NonCircularResult b = slope::search_noncircular(m, circular(m, methods), slope::SearchOptions{});
   CHECK(*a.methods[0].result.factor_of_safety == Approx(*b.methods[0].result.factor_of_safety).epsilon(0.002));
 }
+
+}  // namespace test_lem_noncircular

@@ -9,6 +9,8 @@
 #include "slope/methods.hpp"
 #include "slope/slices.hpp"
 
+namespace test_lem_polyline {
+
 using Catch::Matchers::Contains;
 using namespace lem_test;
 
@@ -195,3 +197,5 @@ TEST_CASE("a polyline inscribed in a circle converges to the circle's factor of 
     CHECK(previous < 0.005);
   }
 }
+
+}  // namespace test_lem_polyline

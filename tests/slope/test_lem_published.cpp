@@ -8,6 +8,8 @@
 #include "lem_sections.hpp"
 #include "slope/search.hpp"
 
+namespace test_lem_published {
+
 using namespace lem_test;
 
 namespace {
@@ -209,3 +211,5 @@ TEST_CASE("Yamagami & Ueta (1988): homogeneous slope, Bishop and Ordinary", "[sl
   CHECK(searched(r, slope::Method::bishop) == Approx(1.348).epsilon(0.015));
   CHECK(searched(r, slope::Method::ordinary) == Approx(1.282).epsilon(0.015));
 }
+
+}  // namespace test_lem_published

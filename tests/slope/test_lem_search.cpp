@@ -6,6 +6,8 @@
 #include "lem_sections.hpp"
 #include "slope/search.hpp"
 
+namespace test_lem_search {
+
 using Catch::Matchers::Contains;
 using namespace lem_test;
 
@@ -215,3 +217,5 @@ TEST_CASE("a cohesionless slope: the search stops at the minimum depth near the 
   CHECK(f == Approx(limit).epsilon(0.03));
   CHECK(result_for(r, slope::Method::bishop).mass->slices.size() >= 45);
 }
+
+}  // namespace test_lem_search

@@ -7,6 +7,8 @@
 #include "slope/methods.hpp"
 #include "slope/slices.hpp"
 
+namespace test_lem_slicing {
+
 using Catch::Matchers::Contains;
 using namespace lem_test;
 
@@ -314,3 +316,5 @@ TEST_CASE("mirroring the section mirrors the slices and keeps every factor of sa
     CHECK(b.lambda == Approx(a.lambda).epsilon(1e-7).margin(1e-7));
   }
 }
+
+}  // namespace test_lem_slicing

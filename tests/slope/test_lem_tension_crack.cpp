@@ -8,6 +8,8 @@
 #include "slope/methods.hpp"
 #include "slope/slices.hpp"
 
+namespace test_lem_tension_crack {
+
 using Catch::Matchers::Contains;
 using namespace lem_test;
 
@@ -157,3 +159,5 @@ TEST_CASE("a circle carries a tension crack as an inscribed polyline, the crack 
   CHECK_FALSE(spencer.factor_of_safety);  // refused, never a number
   CHECK_FALSE(spencer.error.empty());
 }
+
+}  // namespace test_lem_tension_crack

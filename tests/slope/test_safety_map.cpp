@@ -8,6 +8,8 @@
 #include "slope/safety_map.hpp"
 #include "slope/slices.hpp"
 
+namespace test_safety_map {
+
 using namespace lem_test;
 
 namespace {
@@ -87,3 +89,5 @@ TEST_CASE("the safety map of the Griffiths & Lane search: Bishop's factors, lowe
   CHECK(at_bottom >= critical - 1e-9);
   CHECK(at_bottom <= 1.05 * critical);
 }
+
+}  // namespace test_safety_map

@@ -16,6 +16,8 @@
 
 #include "sph/engine/atomic_file.hpp"
 
+namespace test_atomic_file {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -81,3 +83,5 @@ TEST_CASE("a writer killed at any moment leaves the old file or the new one, nev
   // Stray temporaries of killed writers may remain; they never replace the file.
   fs::remove_all(folder);
 }
+
+}  // namespace test_atomic_file

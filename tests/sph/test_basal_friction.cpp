@@ -18,6 +18,8 @@
 #include "sph/soil/soil_step.hpp"
 #include "sphslope/units.hpp"
 
+namespace test_basal_friction {
+
 namespace {
 
 double closed_form_deceleration() {
@@ -144,3 +146,5 @@ TEST_CASE("basal friction study: spacing, thickness and stretching", "[.][basal_
   for (const int rows : {1, 4, 8}) CHECK(row("at 5 mm", rows, 0.005, 0) == Approx(expected).epsilon(0.08));
   CHECK(row("stretched", 2, 0.005, 2.0) < sliding_deceleration(2, 0.005));
 }
+
+}  // namespace test_basal_friction

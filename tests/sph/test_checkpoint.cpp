@@ -12,6 +12,8 @@
 #include "sph/soil/run.hpp"
 #include "same_state.hpp"
 
+namespace test_checkpoint {
+
 namespace {
 sph::Model small_collapse() {
   sph::ColumnCollapseCase c;
@@ -118,3 +120,5 @@ TEST_CASE("the step gives the same state for 1 and 2 threads (no order-dependent
   CHECK(a.state.time == b.state.time);
   CHECK(same_state::differing_values(a.particles, b.particles) == 0);  // every field, bit for bit
 }
+
+}  // namespace test_checkpoint

@@ -27,6 +27,8 @@
 #include "sph/soil/benchmarks.hpp"
 #include "sph/soil/run.hpp"
 
+namespace test_column_collapse {
+
 TEST_CASE("granular column collapse (Bui et al. 2008) deposit matches the experiments' scaling laws",
           "[sph][validation][collapse]") {
   sph::ColumnCollapseCase c;
@@ -90,3 +92,5 @@ TEST_CASE("column collapse resolution study", "[.study]") {
     std::printf("  x = %.3f  surface %.4f\n", x, top);
   }
 }
+
+}  // namespace test_column_collapse

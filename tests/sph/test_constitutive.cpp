@@ -6,6 +6,8 @@
 
 #include "sph/soil/material.hpp"
 
+namespace test_constitutive {
+
 using namespace sph;
 
 namespace {
@@ -185,3 +187,5 @@ TEST_CASE("a yielding particle's stress update takes sub-steps in proportion to 
   const Stress apex{0, 0, 0, 0};
   CHECK(stress_substep_count(sand, apex, 0.0, 0.0, 1e-9, dt, 16) == 16);
 }
+
+}  // namespace test_constitutive

@@ -13,6 +13,8 @@
 #include "sph/engine/fill.hpp"
 #include "sph/soil/run.hpp"
 
+namespace test_elastic_column {
+
 namespace {
 
 sph::Model elastic_column(sph::GravityMode mode, double damping) { return test_column::elastic_box(mode, damping); }
@@ -85,3 +87,5 @@ TEST_CASE("elastic column study", "[.study]") {
     if (p.kind[i] == 0 && std::fabs(p.x0[i] - (std::getenv("SPH_X") ? std::atof(std::getenv("SPH_X")) : 0.2375)) < 1e-9 && std::lround(p.y0[i] / 0.025 - 0.5) % 8 == 0)
       std::printf("  y0 %.4f  syy %.1f exact %.1f sxx %.1f sxy %.1f rho %.2f\n", p.y0[i], soil.syy[i], -2000 * 9.81 * (1 - p.y0[i]), soil.sxx[i], soil.sxy[i], p.rho[i]);
 }
+
+}  // namespace test_elastic_column

@@ -16,6 +16,8 @@
 #include "sph/soil/run.hpp"
 #include "sph/soil/soil_step.hpp"
 
+namespace test_gravity_ramp_and_walls {
+
 namespace {
 
 // Elastic soil column 1 m wide, 2 m high, dx = 0.1 m, walls left, right and bottom (free-slip: a 1-D column).
@@ -139,3 +141,5 @@ TEST_CASE("walls thinner than the kernel support are refused", "[sph][fill]") {
   const std::size_t n3 = sph::add_box_walls(q, box, dx, h, 0, 2000);
   CHECK(n4 > n3);
 }
+
+}  // namespace test_gravity_ramp_and_walls

@@ -19,6 +19,8 @@
 #include "sphslope/units.hpp"
 #include "same_state.hpp"
 
+namespace test_isph {
+
 namespace {
 
 using namespace sph::fluid;
@@ -170,3 +172,5 @@ TEST_CASE("ISPH gives bitwise the same state with 1 and 2 threads, with every pr
   }
   omp_set_num_threads(before);
 }
+
+}  // namespace test_isph

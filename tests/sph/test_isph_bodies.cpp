@@ -16,6 +16,8 @@
 #include "sph/fluid/run.hpp"
 #include "sphslope/units.hpp"
 
+namespace test_isph_bodies {
+
 namespace {
 
 using namespace sph::fluid;
@@ -303,3 +305,5 @@ TEST_CASE("ISPH a splash against a wall runs through with the fluid inside the t
   CHECK(outside == 0);
   CHECK(clamped_steps > 0);  // the clamp did act
 }
+
+}  // namespace test_isph_bodies

@@ -16,6 +16,8 @@
 #include "sph/fluid/run.hpp"
 #include "sphslope/units.hpp"
 
+namespace test_isph_validation {
+
 namespace {
 
 using namespace sph::fluid;
@@ -259,3 +261,5 @@ TEST_CASE("ISPH dam break (Martin & Moyce 1952, n^2 = 2): surge front against th
   CHECK(slope >= 1.2);
   CHECK(slope <= 1.6);
 }
+
+}  // namespace test_isph_validation

@@ -12,6 +12,8 @@
 #include "sph/soil/run.hpp"
 #include "sph/soil/soil_step.hpp"
 
+namespace test_kernel_gradient {
+
 namespace {
 
 struct StrainRateErrors {
@@ -106,3 +108,5 @@ TEST_CASE("the corrected kernel gradient brings the elastic column's stress clos
   CHECK(corrected < 0.008);
   CHECK(corrected < 0.5 * standard);
 }
+
+}  // namespace test_kernel_gradient

@@ -10,6 +10,8 @@
 #include "sph/engine/kernel.hpp"
 #include "sph/engine/neighbour_search.hpp"
 
+namespace test_kernels {
+
 namespace {
 
 template <class Kernel>
@@ -105,3 +107,5 @@ TEST_CASE("cell-list neighbour search equals brute force on random points", "[sp
   }
   CHECK(total > n);  // the test is not vacuous
 }
+
+}  // namespace test_kernels

@@ -21,6 +21,8 @@
 #include "sph/soil/run.hpp"
 #include "sph/soil/soil_step.hpp"
 
+namespace test_loads {
+
 namespace {
 
 constexpr double rho = test_column::density, g = 9.81, gamma_w = 9810.0, H = test_column::height;
@@ -162,3 +164,5 @@ TEST_CASE("loads: k_h accelerates a block on a frictionless floor at k_h g", "[s
   INFO("mean vx " << momentum / mass << " m/s, k_h g t = " << expected << " m/s");
   CHECK(std::fabs(momentum / mass - expected) < 0.05 * std::fabs(expected));
 }
+
+}  // namespace test_loads

@@ -26,6 +26,8 @@
 #include "sph/mps/terms.hpp"
 #include "sphslope/units.hpp"
 
+namespace test_mps {
+
 using Catch::Matchers::Contains;
 namespace terms = sph::mps::terms;
 
@@ -656,3 +658,5 @@ TEST_CASE("mps operators on a disordered lattice: measured errors printed", "[.m
         e.n_max);
   }
 }
+
+}  // namespace test_mps

@@ -13,6 +13,8 @@
 #include "sph/mps/run.hpp"
 #include "sph/mps/stepper.hpp"
 
+namespace test_mps_phases {
+
 namespace {
 
 constexpr double g = 9.81;  // [m/s^2]
@@ -173,3 +175,5 @@ TEST_CASE("MPS materials of different densities: particle mass, mixture density 
   CHECK(at(0.105, 0.095, phi) == Approx(0.6 * (below - 1000.0) / 324.0).epsilon(1e-9));
   CHECK(at(0.105, -0.005, rho) == Approx(1324.0).epsilon(1e-9));  // the floor under the bed: the grains'
 }
+
+}  // namespace test_mps_phases

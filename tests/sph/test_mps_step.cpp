@@ -17,6 +17,8 @@
 #include "sph/mps/stepper.hpp"
 #include "same_state.hpp"
 
+namespace test_mps_step {
+
 namespace {
 
 constexpr double g = 9.81;  // [m/s^2]
@@ -539,3 +541,5 @@ TEST_CASE("MPS dry collapse: an unyielded zone in the bottom corner under a yiel
   CHECK(wrong == 0);
   CHECK(*std::max_element(derived[0].values.begin(), derived[0].values.end()) == Approx(std::log10(cap)));
 }
+
+}  // namespace test_mps_step

@@ -13,6 +13,8 @@
 #include "sph/engine/neighbour_list.hpp"
 #include "sph/engine/neighbours.hpp"
 
+namespace test_neighbours {
+
 namespace {
 
 sph::ParticleSet scattered(std::size_t n, double x_lo, double x_hi, double y_lo, double y_hi, unsigned seed) {
@@ -125,3 +127,5 @@ TEST_CASE("a neighbour list drawn from wider candidates holds every pair within 
   CHECK(missing > 0);
   CHECK(extra == 0);  // the candidates hold no pair beyond the radius, moved or not
 }
+
+}  // namespace test_neighbours

@@ -10,6 +10,8 @@
 #include "sph/soil/benchmarks.hpp"
 #include "sph/soil/run.hpp"
 
+namespace test_run_options {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -100,3 +102,5 @@ TEST_CASE("a run stops as quasi-static when every particle is slower than the th
   CHECK(s.simulated_time < 5.0);
   CHECK(s.simulated_time >= 0.3);
 }
+
+}  // namespace test_run_options

@@ -6,6 +6,8 @@
 #include "sph/engine/fill.hpp"
 #include "sph/soil/model.hpp"
 
+namespace test_settings_and_fill {
+
 TEST_CASE("invalid settings are refused with a message naming the setting", "[sph][settings]") {
   sph::Settings s;
   s.particle_spacing = 0.01;
@@ -64,3 +66,5 @@ TEST_CASE("time-step estimate equals the stepper's bound at rest", "[sph][settin
   m.settings.use_integration(sph::TimeIntegration::predictor_corrector);
   CHECK(sph::time_step_estimate(m) == Approx(0.2 * 0.12 / (c * 1.12)).epsilon(1e-12));
 }
+
+}  // namespace test_settings_and_fill

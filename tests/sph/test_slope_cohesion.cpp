@@ -11,6 +11,8 @@
 #include "sph/engine/fill.hpp"
 #include "sph/soil/run.hpp"
 
+namespace test_slope_cohesion {
+
 namespace {
 
 double max_displacement_after(double cohesion, double t_end, sph::GravityMode mode = sph::GravityMode::geostatic_k0,
@@ -66,3 +68,5 @@ TEST_CASE("thesis slope 2 study", "[.study]") {
   const double dx = std::getenv("SPH_STUDY_DX") ? std::atof(std::getenv("SPH_STUDY_DX")) : 0.5;
   max_displacement_after(11e3, 8.0, sph::GravityMode::sudden, 15e6, dx);
 }
+
+}  // namespace test_slope_cohesion

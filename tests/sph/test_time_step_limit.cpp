@@ -17,6 +17,8 @@
 #include "sph/soil/benchmarks.hpp"
 #include "sph/soil/soil_step.hpp"
 
+namespace test_time_step_limit {
+
 namespace {
 
 // h G_max over wave numbers along x and along the diagonal of the square lattice of spacing 1 (V_j = 1).
@@ -256,3 +258,5 @@ TEST_CASE("time step: a stress update in sub-steps is refused with the predictor
   s.stress_substeps = 65;
   CHECK_THROWS_WITH(s.validate(), Catch::Contains("[1, 64]"));
 }
+
+}  // namespace test_time_step_limit
