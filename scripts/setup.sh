@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs everything sphslope needs on a fresh Debian 12 machine. Safe to run more than once.
 set -euo pipefail
-packages=(g++ cmake make python3 libeigen3-dev libcgal-dev nlohmann-json3-dev libgsl-dev catch2 libcli11-dev libomp-dev
-          clang libclang-rt-14-dev pmccabe universal-ctags libxml2-utils chromium poppler-utils fonts-dejavu-core)
+packages=(g++ cmake make ninja-build python3 libeigen3-dev libcgal-dev nlohmann-json3-dev libgsl-dev catch2 libcli11-dev
+          libomp-dev clang libclang-rt-14-dev pmccabe universal-ctags libxml2-utils chromium poppler-utils fonts-dejavu-core)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
