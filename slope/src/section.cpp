@@ -89,6 +89,13 @@ std::string section_error(const Section& section) {
       out << "material " << m << " ('" << material.name << "') needs a pore-pressure ratio r_u with 0 <= r_u < 1";
       return out.str();
     }
+    if (!(material.cohesion_rate >= 0.0) || !std::isfinite(material.cohesion_rate) ||
+        !(material.cohesion_max >= material.cohesion) ||
+        (material.cohesion_datum_y && !std::isfinite(*material.cohesion_datum_y))) {
+      out << "material " << m << " ('" << material.name
+          << "') needs a finite cohesion rate >= 0, a maximum cohesion >= its cohesion and a finite datum";
+      return out.str();
+    }
   }
   if (section.water) {
     const auto& line = section.water->piezometric_line;

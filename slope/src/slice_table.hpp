@@ -79,8 +79,12 @@ struct PreparedSection {
   // profile lines ordered from the top (the ground surface, lines[0]) down; they may touch but not cross
   std::vector<IndexedPolyline> lines;
   std::vector<double> line_unit_weight, line_cohesion, line_tan_phi;
+  // cohesion with depth (Material::cohesion_rate): rate, datum (NaN: below the line itself) and cap of each line
+  std::vector<double> line_cohesion_rate, line_cohesion_datum, line_cohesion_max;
   std::vector<std::size_t> line_material;
   std::vector<double> material_ru;  // r_u of each material of the section (by its index), 0 when none
+  // The cohesion of line k's material at the point (x, y) in it, with its increase with depth.
+  double cohesion_at(std::size_t k, double x, double y) const;
   bool has_water = false;
   IndexedPolyline piezometric_line;
   double water_unit_weight = 0.0;

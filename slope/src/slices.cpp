@@ -70,6 +70,9 @@ PreparedSection::PreparedSection(const Section& section) {
     line_unit_weight.push_back(m.unit_weight);
     line_cohesion.push_back(m.cohesion);
     line_tan_phi.push_back(std::tan(m.friction_angle));
+    line_cohesion_rate.push_back(m.cohesion_rate);
+    line_cohesion_datum.push_back(m.cohesion_datum_y.value_or(std::numeric_limits<double>::quiet_NaN()));
+    line_cohesion_max.push_back(m.cohesion_max);
     line_material.push_back(line.material);
   }
   lines = std::move(ordered);
@@ -105,6 +108,19 @@ PreparedSection::PreparedSection(const Section& section) {
   seismic_coefficient = section.seismic_coefficient;
   std::sort(fixed_breaks.begin(), fixed_breaks.end());
   fixed_breaks.erase(std::unique(fixed_breaks.begin(), fixed_breaks.end()), fixed_breaks.end());
+}
+
+double PreparedSection::cohesion_at(std::size_t k, double x, double y) const {
+  const double rate = line_cohesion_rate[k];
+  if (!(rate > 0.0)) return line_cohesion[k];
+  double top = line_cohesion_datum[k];
+  if (std::isnan(top)) {
+    // the material's own top: its line, or a line above where that one is lower (lines touch, never cross)
+    const double xc = std::clamp(x, x_min, x_max);
+    top = lines[0].y(xc);
+    for (std::size_t j = 1; j <= k; ++j) top = std::min(top, lines[j].y(xc));
+  }
+  return std::min(line_cohesion[k] + rate * std::max(0.0, top - y), line_cohesion_max[k]);
 }
 
 double PreparedSection::ground_at(double x) const { return lines.front().y(std::clamp(x, x_min, x_max)); }
@@ -430,7 +446,7 @@ double Slicer::slice_layers(int i, const Circle* circle, SliceTable& table) {
   // A slice over a gap where the arc grazes above rough ground (shallow_gap) has no weight; its base keeps the
   // strength of the soil beneath, as if the roughness were smoothed: with zero strength there the interslice
   // force methods meet tension on these weightless slices and refuse the surface.
-  table.cohesion[i] = ps.line_cohesion[base_line];
+  table.cohesion[i] = ps.cohesion_at(base_line, xm, ybm);
   table.tan_phi[i] = ps.line_tan_phi[base_line];
   return weight;
 }

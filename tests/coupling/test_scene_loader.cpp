@@ -345,6 +345,40 @@ TEST_CASE("scene: SPH carries the section loads, and ignore_loads leaves one out
                     Catch::Contains("analyses.sph.ignore_loads[0]: the section has no water to leave out"));
 }
 
+TEST_CASE("scene: cohesion rising with depth is read in kPa/m, checked against the cohesion, and left out of SPH",
+          "[scene][undrained]") {
+  // docs/scene-format.md, section.materials[i]: cohesion_increase_kPa_per_m, cohesion_datum_y_m, cohesion_max_kPa.
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water.json"));
+  nlohmann::json& lower = scene["section"]["materials"][1];
+  lower["cohesion_increase_kPa_per_m"] = 2.5;
+  lower["cohesion_datum_y_m"] = 7.0;
+  lower["cohesion_max_kPa"] = 40.0;
+  const slope::Material read = parse_scene(scene.dump()).section->section.materials[1];
+  CHECK(read.cohesion_rate == 2500.0);
+  REQUIRE(read.cohesion_datum_y);
+  CHECK(*read.cohesion_datum_y == 7.0);
+  CHECK(read.cohesion_max == 40e3);
+  CHECK(parse_scene(scene.dump()).section->section.materials[0].cohesion_rate == 0.0);
+  scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 1.0}};
+  const auto left_out = coupling::loads_sph_leaves_out(parse_scene(scene.dump()));
+  REQUIRE(left_out.size() == 1);
+  CHECK(left_out[0].path == "section.materials[1].cohesion_increase_kPa_per_m");
+  CHECK_THAT(left_out[0].name, Catch::Contains("2.5 kPa/m"));
+  scene["analyses"].erase("sph");
+
+  lower["cohesion_max_kPa"] = 14.0;
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("section.materials[1].cohesion_max_kPa: must be at least cohesion_kPa = 15 (got 14)"));
+  lower.erase("cohesion_max_kPa");
+  lower.erase("cohesion_increase_kPa_per_m");
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("section.materials[1].cohesion_datum_y_m: needs cohesion_increase_kPa_per_m"));
+  lower.erase("cohesion_datum_y_m");
+  lower["cohesion_increase_kPa_per_m"] = -1.0;
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("section.materials[1].cohesion_increase_kPa_per_m: must be >= 0 (got -1.0)"));
+}
+
 TEST_CASE("scene: k_h on a section level at both ends is refused for SPH (no direction)", "[scene][sph]") {
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water.json"));
   scene["section"]["seismic"]["horizontal_coefficient"] = 0.1;

@@ -80,14 +80,32 @@ std::string header(const Scene& scene, const RunResults& results, const RunPage&
   return out.str();
 }
 
+// c' in kPa, with its increase with depth z (m) where it has one: "9.6 + 2.36 z below y = 9.14 m, at most 50".
+std::string cohesion_cell(const slope::Material& m) {
+  char text[160];
+  if (!(m.cohesion_rate > 0.0)) {
+    std::snprintf(text, sizeof text, "%.1f", m.cohesion / 1e3);
+    return text;
+  }
+  char below[48] = "its top";
+  if (m.cohesion_datum_y) std::snprintf(below, sizeof below, "y = %.2f m", *m.cohesion_datum_y);
+  std::snprintf(text, sizeof text, "%.1f + %.3g z below %s", m.cohesion / 1e3, m.cohesion_rate / 1e3, below);
+  std::string out = text;
+  if (std::isfinite(m.cohesion_max)) {
+    std::snprintf(text, sizeof text, ", at most %.1f", m.cohesion_max / 1e3);
+    out += text;
+  }
+  return out;
+}
+
 std::string materials_table(const slope::Section& s) {
   std::ostringstream out;
   out << "<table><tr><th class=\"l\">material</th><th>&gamma; (kN/m&sup3;)</th><th>c&prime; (kPa)</th>"
          "<th>&phi;&prime; (&deg;)</th></tr>\n";
   char row[256];
   for (const slope::Material& m : s.materials) {
-    std::snprintf(row, sizeof row, "<td>%.2f</td><td>%.1f</td><td>%.1f</td></tr>\n", m.unit_weight / 1e3,
-                  m.cohesion / 1e3, sphslope::degrees(m.friction_angle));
+    std::snprintf(row, sizeof row, "<td>%.2f</td><td>%s</td><td>%.1f</td></tr>\n", m.unit_weight / 1e3,
+                  cohesion_cell(m).c_str(), sphslope::degrees(m.friction_angle));
     out << "<tr><td class=\"l\">" << esc(m.name) << "</td>" << row;
   }
   out << "</table>\n";

@@ -416,6 +416,9 @@ std::string summarize(const Scene& scene) {
     if (s.water) out << ", water table";
     for (const slope::Material& m : s.materials)
       if (m.pore_pressure_ratio > 0.0) out << ", r_u " << format_number(m.pore_pressure_ratio) << " in " << m.name;
+    for (const slope::Material& m : s.materials)
+      if (m.cohesion_rate > 0.0)
+        out << ", cohesion + " << format_number(m.cohesion_rate / 1e3) << " kPa/m with depth in " << m.name;
     if (!s.surcharges.empty())
       out << ", " << s.surcharges.size() << " surcharge" << (s.surcharges.size() == 1 ? "" : "s");
     if (s.seismic_coefficient > 0) out << ", seismic kh = " << format_number(s.seismic_coefficient);

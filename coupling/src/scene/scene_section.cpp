@@ -269,6 +269,30 @@ std::optional<slope::Range> read_range(JsonReader& reader, std::string_view key,
   return slope::Range{pair->first, pair->second};
 }
 
+// The cohesion's increase with depth (already read; checked here against each other): a datum or a maximum
+// without a rate is an error, as is a maximum below the cohesion at the datum or top. Fills `material` when valid.
+bool read_cohesion_with_depth(JsonReader& m, const std::optional<double>& cohesion, const std::optional<double>& rate,
+                              const std::optional<double>& datum, const std::optional<double>& maximum,
+                              SoilMaterial& material) {
+  if ((m.has("cohesion_increase_kPa_per_m") && !rate) || (m.has("cohesion_datum_y_m") && !datum) ||
+      (m.has("cohesion_max_kPa") && !maximum))
+    return false;
+  if ((datum || maximum) && !rate) {
+    m.diagnostics().error(m.path_of(datum ? "cohesion_datum_y_m" : "cohesion_max_kPa"),
+                          "needs cohesion_increase_kPa_per_m (the cohesion's increase with depth, kPa/m)");
+    return false;
+  }
+  if (maximum && cohesion && *maximum < *cohesion) {
+    m.diagnostics().error(m.path_of("cohesion_max_kPa"), "must be at least cohesion_kPa = " + format_number(*cohesion) +
+                                                             " (got " + format_number(*maximum) + ")");
+    return false;
+  }
+  if (rate) material.cohesion_rate = *rate * kilo;
+  material.cohesion_datum_y = datum;
+  if (maximum) material.cohesion_max = *maximum * kilo;
+  return true;
+}
+
 }  // namespace
 
 std::optional<SoilMaterial> read_material(JsonReader& m) {
@@ -282,7 +306,11 @@ std::optional<SoilMaterial> read_material(JsonReader& m) {
   const auto poisson = m.number("poisson_ratio", Need::optional, Bounds::open(-1.0, 0.5));
   const auto model = m.string("constitutive_model", Need::optional);
   const auto ru = m.number("pore_pressure_ratio", Need::optional, Bounds::half_open(0.0, 1.0));
+  const auto c_rate = m.number("cohesion_increase_kPa_per_m", Need::optional, Bounds::non_negative());
+  const auto c_datum = m.number("cohesion_datum_y_m", Need::optional, Bounds::any());
+  const auto c_max = m.number("cohesion_max_kPa", Need::optional, Bounds::non_negative());
   m.finish();
+  if (!read_cohesion_with_depth(m, cohesion, c_rate, c_datum, c_max, material)) return std::nullopt;
   if (model && *model != "drucker_prager" && *model != "elastic") {
     m.diagnostics().error(m.path_of("constitutive_model"),
                           "unknown model \"" + *model + "\" (allowed: drucker_prager, elastic)");
@@ -508,7 +536,8 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
   result.section.bottom_y = *bottom_y;
   for (const SoilMaterial& m : result.materials) {
     result.section.materials.push_back(
-        slope::Material{m.name, m.unit_weight, m.cohesion, m.friction_angle, m.pore_pressure_ratio});
+        slope::Material{m.name, m.unit_weight, m.cohesion, m.friction_angle, m.pore_pressure_ratio, m.cohesion_rate,
+                        m.cohesion_datum_y, m.cohesion_max});
   }
   for (const LineRead& line : lines) {
     result.section.profile_lines.push_back(slope::ProfileLine{*line.material, *line.points});

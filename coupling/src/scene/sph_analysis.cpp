@@ -121,6 +121,12 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
                            " of material \"" + materials[i].name + "\"",
                        index_path("section.materials", i) + ".pore_pressure_ratio",
                        "the SPH soil model takes pore pressure from the piezometric line only"});
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].cohesion_rate > 0.0)
+      loads.push_back({"the cohesion's increase with depth of material \"" + materials[i].name + "\" (" +
+                           format_number(materials[i].cohesion_rate / 1e3) + " kPa/m)",
+                       index_path("section.materials", i) + ".cohesion_increase_kPa_per_m",
+                       "the SPH soil model gives each material one cohesion (cohesion_kPa)"});
   return loads;
 }
 

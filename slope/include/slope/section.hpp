@@ -2,6 +2,7 @@
 // Slope cross-section for limit-equilibrium analysis (plane strain, per metre of slope width).
 // All quantities are SI: m, N/m^3, Pa, rad. Scene files use kPa and kN/m^3; coupling converts once.
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,14 @@ struct Material {
   // soil above the base's midpoint (the slice's soil weight / its width), in place of the piezometric line's;
   // 0: the piezometric line (if any) gives it. 0 <= r_u < 1.
   double pore_pressure_ratio = 0.0;
+  // Cohesion increasing with depth (an undrained strength Su that grows with depth when friction_angle = 0): on a
+  // slice base, c = cohesion + cohesion_rate * z at the base's midpoint, at most cohesion_max, with z the depth
+  // below the horizontal datum y = cohesion_datum_y when it is given (z = 0 above it), else below this material's
+  // own top at the midpoint's x (its profile line, or a line above where that one is lower). cohesion is then the
+  // strength at the datum or at the top. cohesion_rate = 0: c = cohesion everywhere.
+  double cohesion_rate = 0.0;                                     // Pa/m, >= 0
+  std::optional<double> cohesion_datum_y{};                       // m
+  double cohesion_max = std::numeric_limits<double>::infinity();  // Pa, >= cohesion
 };
 
 // A profile line is the top of its material; the material extends down to the next line below it

@@ -1,5 +1,6 @@
 #pragma once
 // A soil material of a scene (a section's layer or a particle body), in SI units.
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -21,6 +22,10 @@ struct SoilMaterial {
   std::optional<double> poisson_ratio;     // -; needed by SPH only
   bool elastic = false;                    // SPH: linear elastic, no yield (constitutive_model "elastic")
   double pore_pressure_ratio = 0.0;        // r_u (-), limit equilibrium only: u = r_u x the soil's overburden
+  // limit equilibrium only: the cohesion's increase with depth (slope::Material::cohesion_rate has the rule)
+  double cohesion_rate = 0.0;                                     // Pa/m; 0: constant cohesion
+  std::optional<double> cohesion_datum_y;                         // m; absent: depth below the material's top
+  double cohesion_max = std::numeric_limits<double>::infinity();  // Pa
 
   double density() const { return unit_weight / standard_gravity; }  // kg/m^3
 };
