@@ -75,7 +75,7 @@ TEST_CASE("Su rising below a datum: the factor of safety on a circle against the
   }
 }
 
-TEST_CASE("Su below the layer's own top equals Su below a datum at that top; a cap at Su0 gives a uniform clay",
+TEST_CASE("Su below the layer's own top equals Su below a datum at that top, and a cap at Su0 gives a uniform clay",
           "[slope][undrained]") {
   // A sand embankment on a clay whose top is level at y = 10: measured from the layer top or from the datum
   // y = 10, every base has the same depth, so the slices and the factors of safety are the same to the last bit.
