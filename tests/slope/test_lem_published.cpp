@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "lem_checks.hpp"
 #include "lem_sections.hpp"
 #include "slope/search.hpp"
 
@@ -13,25 +14,6 @@ namespace test_lem_published {
 using namespace lem_test;
 
 namespace {
-
-double fs_on(const slope::SlipMass& mass, slope::Method m, double* lambda = nullptr) {
-  const slope::FsResult r = slope::factor_of_safety(mass, m);
-  INFO(slope::method_key(m) << ": " << r.error);
-  REQUIRE(r.factor_of_safety);
-  if (lambda != nullptr) *lambda = r.lambda;
-  return *r.factor_of_safety;
-}
-
-double searched(const slope::SearchResult& r, slope::Method m) {
-  for (const slope::CriticalSurface& c : r.methods) {
-    if (c.method != m) continue;
-    INFO(slope::method_key(m) << ": " << c.result.error);
-    REQUIRE(c.result.factor_of_safety);
-    return *c.result.factor_of_safety;
-  }
-  FAIL("method missing");
-  return 0.0;
-}
 
 // Fredlund & Krahn (1977), Can. Geotech. J. 14:429-439, example problem, in its own units (ft, psf, pcf):
 // 2:1 slope 40 ft high (crest y = 60 ft for x <= 60, toe (140, 20)), c' = 600 psf, phi' = 20 deg,

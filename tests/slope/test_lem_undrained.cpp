@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "lem_checks.hpp"
 #include "lem_sections.hpp"
 #include "slope/methods.hpp"
 #include "slope/search.hpp"
@@ -17,24 +18,6 @@ namespace test_lem_undrained {
 using namespace lem_test;
 
 namespace {
-
-double fs_on(const slope::SlipMass& mass, slope::Method m) {
-  const slope::FsResult r = slope::factor_of_safety(mass, m);
-  INFO(slope::method_key(m) << ": " << r.error);
-  REQUIRE(r.factor_of_safety);
-  return *r.factor_of_safety;
-}
-
-double searched(const slope::SearchResult& r, slope::Method m) {
-  for (const slope::CriticalSurface& c : r.methods) {
-    if (c.method != m) continue;
-    INFO(slope::method_key(m) << ": " << c.result.error);
-    REQUIRE(c.result.factor_of_safety);
-    return *c.result.factor_of_safety;
-  }
-  FAIL("method missing");
-  return 0.0;
-}
 
 // A phi = 0 clay: Su0 kPa at the datum or top, rising by rate kPa/m.
 slope::Material clay(double su0_kPa, double rate_kPa_m) {
