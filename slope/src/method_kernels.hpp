@@ -48,6 +48,9 @@ class MethodWorkspace {
 
   std::vector<double> numerator, friction_term, interface_function;
   std::vector<SliceForces> forces;
+  // the iteration on non-linear strength envelopes: the bases' effective normal stresses and the forces they come from
+  std::vector<double> envelope_normal;
+  std::vector<SliceForces> envelope_forces;
 
   // Grows the per-slice buffers of the ratio equations (Bishop, Janbu) to hold n slices (with room to spare).
   void reserve_ratio_terms(int n) {
@@ -69,8 +72,9 @@ double janbu_correction_factor(const SliceTable& table);
 // guess: starting factor of safety (e.g. Bishop's); <= 0 to let the method pick one.
 Outcome general_limit_equilibrium(const SliceTable& table, MethodWorkspace& ws, bool half_sine, double guess);
 
-// Dispatch; guess as above (used by Spencer and Morgenstern-Price only).
-Outcome evaluate_method(const SliceTable& table, Method method, MethodWorkspace& ws, double guess = 0.0);
+// Dispatch; guess as above (used by Spencer and Morgenstern-Price only). With non-linear strength envelopes the
+// table's cohesion and friction are rewritten (method_table.hpp, solve_row).
+Outcome evaluate_method(SliceTable& table, Method method, MethodWorkspace& ws, double guess = 0.0);
 
 // Slice forces at a solution.
 void slice_forces(const SliceTable& table, Method method, const Outcome& outcome, MethodWorkspace& ws,

@@ -97,9 +97,9 @@ std::size_t method_index(Method method) {
 
 const MethodRow& method_row(Method method) { return rows[method_index(method)]; }
 
-Outcome evaluate_method(const SliceTable& table, Method method, MethodWorkspace& ws, double guess) {
+Outcome evaluate_method(SliceTable& table, Method method, MethodWorkspace& ws, double guess) {
   const MethodRow& row = method_row(method);
-  const Outcome solution = method_row(row.solution_of).solve(table, ws, guess);
+  const Outcome solution = solve_row(method_row(row.solution_of), table, ws, guess);
   return row.from_solution ? row.from_solution(table, solution) : solution;
 }
 

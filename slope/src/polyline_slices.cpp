@@ -182,8 +182,15 @@ std::string Slicer::slice_polyline(const SlipPolyline& in, int target_slices, Sl
     const double entry_x = dir > 0 ? s.front().x : s.back().x;
     const std::size_t line = surface_line(ps, entry_x);
     // the Rankine depth from the cohesion at the ground where the surface enters (with its increase with depth)
-    const double c = ps.cohesion_at(line, entry_x, ps.ground_at(entry_x));
-    const Material soil{"", ps.line_unit_weight[line], c, std::atan(ps.line_tan_phi[line])};
+    // (a strength envelope: its tangent at zero normal stress)
+    double c = ps.cohesion_at(line, entry_x, ps.ground_at(entry_x));
+    double tan_phi = ps.line_tan_phi[line];
+    if (const int e = ps.material_envelope[ps.line_material[line]]; e >= 0) {
+      const EnvelopePoint p = envelope_at(ps.envelopes[static_cast<std::size_t>(e)], 0.0);
+      c = p.shear;
+      tan_phi = p.slope;
+    }
+    const Material soil{"", ps.line_unit_weight[line], c, std::atan(tan_phi)};
     z = in.tension_crack->depth ? *in.tension_crack->depth : rankine_crack_depth(soil);
     if (!(z >= 0.0) || !std::isfinite(z)) return "the tension crack depth is not a non-negative number";
     if (z > 0.0 && !cut_at_crack(ps, s, dir, z))

@@ -203,7 +203,7 @@ class SearchEngine {
     const std::size_t i = method_index(method);
     if (!solved_[i]) {
       const MethodRow& row = method_table()[i];
-      solutions_[i] = row.solve(table_, ws_, warm_start(row));
+      solutions_[i] = solve_row(row, table_, ws_, warm_start(row));
       solved_[i] = true;
     }
     return solutions_[i];

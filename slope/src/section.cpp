@@ -39,6 +39,49 @@ double Section::ground_y(double x) const {
   return polyline_y(profile_lines.front().points, std::clamp(x, x_min(), x_max()));
 }
 
+namespace {
+
+// What is wrong with material m of a section (empty: nothing).
+std::string material_error(const Material& material, std::size_t m) {
+  std::ostringstream out;
+  if (!(material.unit_weight > 0.0) || !(material.cohesion >= 0.0) || !(material.friction_angle >= 0.0) ||
+      !(material.friction_angle < 1.5707963267948966)) {
+    out << "material " << m << " ('" << material.name
+        << "') needs a positive unit weight, cohesion >= 0 and 0 <= friction angle < 90 degrees";
+    return out.str();
+  }
+  if (material.saturated_unit_weight &&
+      (!(*material.saturated_unit_weight > 0.0) || !std::isfinite(*material.saturated_unit_weight))) {
+    out << "material " << m << " ('" << material.name << "') needs a positive finite saturated unit weight";
+    return out.str();
+  }
+  if (!(material.pore_pressure_ratio >= 0.0) || !(material.pore_pressure_ratio < 1.0)) {
+    out << "material " << m << " ('" << material.name << "') needs a pore-pressure ratio r_u with 0 <= r_u < 1";
+    return out.str();
+  }
+  if (!(material.cohesion_rate >= 0.0) || !std::isfinite(material.cohesion_rate) ||
+      !(material.cohesion_max >= material.cohesion) ||
+      (material.cohesion_datum_y && !std::isfinite(*material.cohesion_datum_y))) {
+    out << "material " << m << " ('" << material.name
+        << "') needs a finite cohesion rate >= 0, a maximum cohesion >= its cohesion and a finite datum";
+    return out.str();
+  }
+  if (material.envelope) {
+    if (const std::string e = envelope_error(*material.envelope); !e.empty()) {
+      out << "material " << m << " ('" << material.name << "'): " << e;
+      return out.str();
+    }
+    if (material.cohesion_rate != 0.0) {
+      out << "material " << m << " ('" << material.name
+          << "') has a strength envelope and a cohesion increasing with depth: give one or the other";
+      return out.str();
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
 std::string section_error(const Section& section) {
   std::ostringstream out;
   if (section.profile_lines.empty()) return "the section has no profile lines";
@@ -77,26 +120,8 @@ std::string section_error(const Section& section) {
       }
     }
   }
-  for (std::size_t m = 0; m < section.materials.size(); ++m) {
-    const Material& material = section.materials[m];
-    if (!(material.unit_weight > 0.0) || !(material.cohesion >= 0.0) || !(material.friction_angle >= 0.0) ||
-        !(material.friction_angle < 1.5707963267948966)) {
-      out << "material " << m << " ('" << material.name
-          << "') needs a positive unit weight, cohesion >= 0 and 0 <= friction angle < 90 degrees";
-      return out.str();
-    }
-    if (!(material.pore_pressure_ratio >= 0.0) || !(material.pore_pressure_ratio < 1.0)) {
-      out << "material " << m << " ('" << material.name << "') needs a pore-pressure ratio r_u with 0 <= r_u < 1";
-      return out.str();
-    }
-    if (!(material.cohesion_rate >= 0.0) || !std::isfinite(material.cohesion_rate) ||
-        !(material.cohesion_max >= material.cohesion) ||
-        (material.cohesion_datum_y && !std::isfinite(*material.cohesion_datum_y))) {
-      out << "material " << m << " ('" << material.name
-          << "') needs a finite cohesion rate >= 0, a maximum cohesion >= its cohesion and a finite datum";
-      return out.str();
-    }
-  }
+  for (std::size_t m = 0; m < section.materials.size(); ++m)
+    if (std::string e = material_error(section.materials[m], m); !e.empty()) return e;
   if (section.water) {
     const auto& line = section.water->piezometric_line;
     if (line.size() < 2) return "the piezometric line needs at least two points";

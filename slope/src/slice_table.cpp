@@ -17,6 +17,7 @@ void SliceTable::resize(int n) {
     v->resize(capacity);
   }
   material.resize(capacity);
+  envelope.resize(capacity);
 }
 
 // Slice i's loads that a circle and a polyline share: the cohesion and pore forces on the base, the vertical and
@@ -40,6 +41,9 @@ double SliceTable::shared_loads(int i, double dir, double& scale) {
 // mirrored so that sliding is toward +x' (x' = direction * (x - xc), y' = y - yc); a moment is positive when it
 // drives sliding (anticlockwise in the mirrored frame).
 void SliceTable::compute_loads() {
+  has_envelopes = envelopes != nullptr && std::any_of(envelope.begin(), envelope.begin() + count, [&](int e) {
+                    return e >= 0 && static_cast<std::size_t>(e) < envelopes->size();
+                  });
   if (!circular) {
     compute_polyline_arms();
     add_crack_force();
@@ -103,6 +107,11 @@ void table_to_mass(const SliceTable& t, SlipMass& mass) {
   mass.exit = t.exit;
   mass.direction = t.direction;
   mass.slices.resize(static_cast<std::size_t>(t.count));
+  if (t.has_envelopes) {
+    mass.envelopes = *t.envelopes;
+  } else {
+    mass.envelopes.clear();
+  }
   for (int i = 0; i < t.count; ++i) {
     Slice& s = mass.slices[static_cast<std::size_t>(i)];
     s.x_left = t.x_left[i];
@@ -120,6 +129,7 @@ void table_to_mass(const SliceTable& t, SlipMass& mass) {
     s.tan_friction = t.tan_phi[i];
     s.pore_pressure = t.pore_pressure[i];
     s.base_material = t.material[i];
+    s.envelope = t.has_envelopes ? t.envelope[i] : -1;
     s.seismic_force = t.seismic[i];
     s.water_thrust = t.water_thrust[i];
   }
@@ -139,6 +149,7 @@ void mass_to_table(const SlipMass& mass, SliceTable& t) {
   t.entry = mass.entry;
   t.exit = mass.exit;
   t.direction = mass.direction >= 0 ? 1 : -1;
+  t.envelopes = &mass.envelopes;
   double max_depth = 0.0;
   for (int i = 0; i < n; ++i) {
     const Slice& s = mass.slices[static_cast<std::size_t>(i)];
@@ -158,6 +169,7 @@ void mass_to_table(const SlipMass& mass, SliceTable& t) {
     t.tan_phi[i] = s.tan_friction;
     t.pore_pressure[i] = s.pore_pressure;
     t.material[i] = s.base_material;
+    t.envelope[i] = s.envelope;
     t.seismic[i] = s.seismic_force;
     t.water_thrust[i] = s.water_thrust;
     max_depth = std::max(max_depth, s.top_y - s.base_y);

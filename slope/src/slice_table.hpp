@@ -48,6 +48,12 @@ struct SliceTable {
   std::vector<double> weight, surcharge, ponded, water_thrust, seismic;
   std::vector<double> cohesion, tan_phi, pore_pressure;
   std::vector<std::size_t> material;
+  // Non-linear strength (slope/strength.hpp): envelope[i] indexes *envelopes for a base whose strength is an
+  // envelope's, -1 for Mohr-Coulomb (cohesion, tan_phi). solve_row (method_table.hpp) then rewrites cohesion and
+  // tan_phi with the envelope's tangent at the base's normal stress. has_envelopes: any base has one (compute_loads).
+  std::vector<int> envelope;
+  const std::vector<StrengthEnvelope>* envelopes = nullptr;
+  bool has_envelopes = false;
   // derived, per slice
   std::vector<double> cohesion_force;  // c' l
   std::vector<double> pore_force;      // U = u l
@@ -79,10 +85,16 @@ struct PreparedSection {
   // profile lines ordered from the top (the ground surface, lines[0]) down; they may touch but not cross
   std::vector<IndexedPolyline> lines;
   std::vector<double> line_unit_weight, line_cohesion, line_tan_phi;
+  // below the piezometric line (the unit weight where the material has no saturated one or there is no water)
+  std::vector<double> line_saturated_weight;
+  bool has_saturated_weights = false;  // some line's differs from its unit weight
   // cohesion with depth (Material::cohesion_rate): rate, datum (NaN: below the line itself) and cap of each line
   std::vector<double> line_cohesion_rate, line_cohesion_datum, line_cohesion_max;
   std::vector<std::size_t> line_material;
   std::vector<double> material_ru;  // r_u of each material of the section (by its index), 0 when none
+  // the strength envelopes of the section's materials, and each material's index into them (-1: Mohr-Coulomb)
+  std::vector<StrengthEnvelope> envelopes;
+  std::vector<int> material_envelope;
   // The cohesion of line k's material at the point (x, y) in it, with its increase with depth.
   double cohesion_at(std::size_t k, double x, double y) const;
   bool has_water = false;

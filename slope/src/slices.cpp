@@ -68,6 +68,8 @@ PreparedSection::PreparedSection(const Section& section) {
     const Material& m = section.materials.at(line.material);
     ordered.push_back(std::move(lines[k]));
     line_unit_weight.push_back(m.unit_weight);
+    line_saturated_weight.push_back(section.water ? m.saturated_unit_weight.value_or(m.unit_weight) : m.unit_weight);
+    has_saturated_weights = has_saturated_weights || line_saturated_weight.back() != m.unit_weight;
     line_cohesion.push_back(m.cohesion);
     line_tan_phi.push_back(std::tan(m.friction_angle));
     line_cohesion_rate.push_back(m.cohesion_rate);
@@ -76,7 +78,11 @@ PreparedSection::PreparedSection(const Section& section) {
     line_material.push_back(line.material);
   }
   lines = std::move(ordered);
-  for (const Material& m : section.materials) material_ru.push_back(m.pore_pressure_ratio);
+  for (const Material& m : section.materials) {
+    material_ru.push_back(m.pore_pressure_ratio);
+    material_envelope.push_back(m.envelope ? static_cast<int>(envelopes.size()) : -1);
+    if (m.envelope) envelopes.push_back(*m.envelope);
+  }
 
   if (section.water) {
     has_water = true;
@@ -429,10 +435,21 @@ double Slicer::slice_layers(int i, const Circle* circle, SliceTable& table) {
   double weight = 0.0;
   std::size_t base_line = n_lines - 1;
   const double on_line = 1e-9 * (1.0 + std::fabs(ybm));
+  // soil below the piezometric line weighs its saturated unit weight (where its material has one)
+  const double water_y = ps.has_saturated_weights ? ps.piezometric_line.mean(x0, x1) : 0.0;
   for (std::size_t k = 0; k < n_lines; ++k) {
     const double top = line_y_[k];
     const double bottom = std::max(line_y_[k + 1], ybm);
-    if (top > bottom) weight += ps.line_unit_weight[k] * (top - bottom);
+    if (top > bottom) {
+      const double unit_weight = ps.line_unit_weight[k];
+      const double saturated = ps.line_saturated_weight[k];
+      if (saturated == unit_weight) {
+        weight += unit_weight * (top - bottom);
+      } else {
+        const double wet_top = std::clamp(water_y, bottom, top);
+        weight += unit_weight * (top - wet_top) + saturated * (wet_top - bottom);
+      }
+    }
     double y_base = ybm;
     if (circle != nullptr && std::fabs(line_y_[k + 1] - ybm) <= on_line) y_base = lower_arc_y(*circle, xm);
     if (line_y_[k + 1] < y_base) {
@@ -448,6 +465,8 @@ double Slicer::slice_layers(int i, const Circle* circle, SliceTable& table) {
   // force methods meet tension on these weightless slices and refuse the surface.
   table.cohesion[i] = ps.cohesion_at(base_line, xm, ybm);
   table.tan_phi[i] = ps.line_tan_phi[base_line];
+  table.envelope[i] = ps.material_envelope[table.material[i]];
+  table.envelopes = &ps.envelopes;
   return weight;
 }
 

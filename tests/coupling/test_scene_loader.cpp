@@ -379,6 +379,105 @@ TEST_CASE("scene: cohesion rising with depth is read in kPa/m, checked against t
                     Catch::Contains("section.materials[1].cohesion_increase_kPa_per_m: must be >= 0 (got -1.0)"));
 }
 
+TEST_CASE("scene: strength envelopes (Hoek-Brown, power curve, shear-normal function) are read in MPa and kPa, one "
+          "per material, and the SPH analysis needs a Mohr-Coulomb strength beside them", "[scene][strength]") {
+  // docs/scene-format.md, section.materials[i]: hoek_brown, power_curve, shear_normal_kPa.
+  const fs::path source = fs::path(test_paths::source_dir());
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(source / "cases/hammah_2005_hoek_brown.json"));
+  nlohmann::json& rock = scene["section"]["materials"][0];
+  {
+    const slope::Material read = parse_scene(scene.dump()).section->section.materials[0];
+    REQUIRE(read.envelope);
+    CHECK(read.envelope->kind == slope::StrengthEnvelope::Kind::hoek_brown);
+    const slope::HoekBrown expected = slope::hoek_brown_from_gsi(30e6, 5.0, 2.0, 0.0);
+    CHECK(read.envelope->hoek_brown.intact_strength == 30e6);
+    CHECK(read.envelope->hoek_brown.mb == expected.mb);
+    CHECK(read.envelope->hoek_brown.s == expected.s);
+    CHECK(read.envelope->hoek_brown.a == expected.a);
+  }
+  rock["hoek_brown"] = {{"intact_strength_MPa", 30}, {"mb", 0.067}, {"s", 2.5e-5}, {"a", 0.619}};
+  CHECK(parse_scene(scene.dump()).section->section.materials[0].envelope->hoek_brown.mb == 0.067);
+  rock["hoek_brown"]["gsi"] = 5;
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("section.materials[0].hoek_brown: give gsi and mi (and disturbance), or mb, s and "
+                                    "a, not both"));
+  rock["hoek_brown"] = {{"intact_strength_MPa", 30}, {"gsi", 5}};
+  CHECK_THROWS_WITH(parse_scene(scene.dump()), Catch::Contains("section.materials[0].hoek_brown.mi: required"));
+
+  // tau = 1.4 sigma'^0.8 in kPa: 1.4 x 1000^0.2 Pa^0.2 in SI, the same strength at 100 kPa.
+  rock.erase("hoek_brown");
+  rock["power_curve"] = {{"a", 1.4}, {"b", 0.8}};
+  {
+    const slope::Material read = parse_scene(scene.dump()).section->section.materials[0];
+    REQUIRE(read.envelope);
+    CHECK(slope::envelope_at(*read.envelope, 100e3).shear == Approx(1.4 * std::pow(100.0, 0.8) * 1e3).epsilon(1e-12));
+  }
+  rock["power_curve"]["b"] = 1.5;
+  CHECK_THROWS_WITH(parse_scene(scene.dump()), Catch::Contains("section.materials[0].power_curve.b: must be in (0, 1]"));
+  rock["power_curve"]["b"] = 0.8;
+  rock["shear_normal_kPa"] = {{0, 5}, {100, 60}};
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("section.materials[0].shear_normal_kPa: a material has one strength envelope"));
+  rock.erase("power_curve");
+  CHECK(parse_scene(scene.dump()).section->section.materials[0].envelope->points[1].shear == 60e3);
+  rock["shear_normal_kPa"] = {{0, 5}, {100, 60}, {200, 50}};
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("section.materials[0].shear_normal_kPa[2]: the shear strength must not decrease"));
+  rock["shear_normal_kPa"] = {{0, 5}, {100, 60}};
+
+  rock["cohesion_increase_kPa_per_m"] = 2.0;
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("section.materials[0].cohesion_increase_kPa_per_m: a material with a strength "
+                                    "envelope takes its strength from the envelope alone"));
+  rock.erase("cohesion_increase_kPa_per_m");
+  rock["cohesion_kPa"] = 20.0;
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("section.materials[0].friction_angle_deg: give both cohesion_kPa and "
+                                    "friction_angle_deg"));
+  rock.erase("cohesion_kPa");
+
+  // The SPH soil model is Mohr-Coulomb: without cohesion_kPa and friction_angle_deg it cannot run; with them it
+  // runs on them and the envelope is listed as left out of it.
+  rock["youngs_modulus_MPa"] = 100.0;
+  rock["poisson_ratio"] = 0.3;
+  scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 1.0}};
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("lacks cohesion_kPa and friction_angle_deg (beside its strength envelope)"));
+  rock["cohesion_kPa"] = 20.0;
+  rock["friction_angle_deg"] = 35.0;
+  const auto left_out = coupling::loads_sph_leaves_out(parse_scene(scene.dump()));
+  REQUIRE(left_out.size() == 1);
+  CHECK(left_out[0].path == "section.materials[0].shear_normal_kPa");
+  CHECK_THAT(left_out[0].name, Catch::Contains("shear-normal function"));
+}
+
+TEST_CASE("scene: a particle body's material has no strength envelope and no saturated unit weight",
+          "[scene][strength]") {
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/bui2008_column_collapse.json"));
+  REQUIRE(scene.contains("bodies"));
+  scene["bodies"][0]["material"]["hoek_brown"] = {{"intact_strength_MPa", 30}, {"gsi", 5}, {"mi", 2}};
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("bodies[0].material.hoek_brown: strength envelopes are for the section's materials"));
+  scene["bodies"][0]["material"].erase("hoek_brown");
+  scene["bodies"][0]["material"]["saturated_unit_weight_kN_m3"] = 21.0;
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("bodies[0].material.saturated_unit_weight_kN_m3: is for the section's materials"));
+}
+
+TEST_CASE("scene: a saturated unit weight is read in kN/m3 and left out of SPH", "[scene][water]") {
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water.json"));
+  scene["section"]["materials"][1]["saturated_unit_weight_kN_m3"] = 21.5;
+  CHECK(parse_scene(scene.dump()).section->section.materials[1].saturated_unit_weight == 21.5e3);
+  CHECK_FALSE(parse_scene(scene.dump()).section->section.materials[0].saturated_unit_weight);
+  scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 1.0}};
+  const auto left_out = coupling::loads_sph_leaves_out(parse_scene(scene.dump()));
+  REQUIRE(left_out.size() == 1);
+  CHECK(left_out[0].path == "section.materials[1].saturated_unit_weight_kN_m3");
+  scene["section"]["materials"][1]["saturated_unit_weight_kN_m3"] = 0.0;
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("section.materials[1].saturated_unit_weight_kN_m3: must be > 0"));
+}
+
 TEST_CASE("scene: k_h on a section level at both ends is refused for SPH (no direction)", "[scene][sph]") {
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water.json"));
   scene["section"]["seismic"]["horizontal_coefficient"] = 0.1;

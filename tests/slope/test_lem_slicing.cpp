@@ -317,4 +317,63 @@ TEST_CASE("mirroring the section mirrors the slices and keeps every factor of sa
   }
 }
 
+TEST_CASE("a saturated unit weight weighs the soil below the piezometric line", "[slope][slicing][water]") {
+  // Level ground at y = 20 over a base at y = 0, the water at y = 12 (ponded nowhere). Every slice's weight is
+  // b (gamma (top - 12) + gamma_sat (12 - base)) where its base is below the water, b gamma (top - base) above it
+  // (hand calculation on the slice's own mean heights: the ground and the water are level).
+  slope::Section s = flat_ground(20.0, 0.0);
+  s.water = slope::Water{{{0, 12}, {100, 12}}};
+  s.materials[0].saturated_unit_weight = 22e3;
+  const slope::Circle circle{50.0, 30.0, 25.0};
+  const auto mass = slope::slice_circle(s, circle, slope::SliceOptions{});
+  REQUIRE(mass);
+  bool some_below = false, some_above = false;
+  for (const slope::Slice& slice : mass->slices) {
+    // the base's mean height over the slice: the chord's midpoint, as the slicer takes it
+    const double base = slice.base_y;
+    const double expected = base < 12.0 ? slice.width * (20e3 * (20.0 - 12.0) + 22e3 * (12.0 - base))
+                                        : slice.width * 20e3 * (20.0 - base);
+    some_below = some_below || base < 12.0;
+    some_above = some_above || base > 12.0;
+    CHECK(slice.weight == Approx(expected).epsilon(1e-12));
+  }
+  CHECK(some_below);
+  CHECK(some_above);
+
+  s.materials[0].saturated_unit_weight = -1.0;
+  CHECK_THAT(slope::section_error(s), Contains("saturated unit weight"));
+
+  // On a slope (crest y = 15 to x = 20, a 30 degree face to the toe at y = 5): with the water along the ground, a
+  // saturated weight of 22 is a unit weight of 22 everywhere; with the water below the mass, it changes nothing
+  // (every factor of safety equal to 1e-12).
+  s = simple_slope(10.0, 30.0, 20.0, 30.0, 5.0, material("soil", 20.0, 10.0, 25.0));
+  s.materials[0].saturated_unit_weight = 22e3;
+  const slope::Circle on_slope{30.0, 28.0, 22.0};
+  const auto expect_same = [&](const slope::Section& a, const slope::Section& b) {
+    const auto ma = slope::slice_circle(a, on_slope, slope::SliceOptions{});
+    const auto mb = slope::slice_circle(b, on_slope, slope::SliceOptions{});
+    REQUIRE(ma);
+    REQUIRE(mb);
+    for (slope::Method m : {slope::Method::ordinary, slope::Method::bishop, slope::Method::spencer}) {
+      INFO(slope::method_key(m));
+      const slope::FsResult fa = slope::factor_of_safety(*ma, m);
+      const slope::FsResult fb = slope::factor_of_safety(*mb, m);
+      REQUIRE(fa.factor_of_safety);
+      REQUIRE(fb.factor_of_safety);
+      CHECK(*fa.factor_of_safety == Approx(*fb.factor_of_safety).epsilon(1e-12));
+    }
+  };
+  slope::Section at_ground = s;
+  at_ground.water = slope::Water{s.profile_lines[0].points};
+  slope::Section heavy = at_ground;
+  heavy.materials[0].unit_weight = 22e3;
+  heavy.materials[0].saturated_unit_weight.reset();
+  expect_same(at_ground, heavy);
+  slope::Section deep = s;
+  deep.water = slope::Water{{{0, 0.5}, {100, 0.5}}};
+  slope::Section dry_weight = deep;
+  dry_weight.materials[0].saturated_unit_weight.reset();
+  expect_same(deep, dry_weight);
+}
+
 }  // namespace test_lem_slicing

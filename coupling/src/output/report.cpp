@@ -20,7 +20,19 @@ constexpr double to_kilo = 1e-3;  // N -> kN, Pa -> kPa
 // A finite number, or null (JSON has no NaN or infinity; never write a made-up number).
 nlohmann::json number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
-nlohmann::json slice_report(const slope::Section& section, const slope::Slice& slice,
+// The base's c' (Pa) and tan(phi'): the material's, or for a base with a strength envelope the tangent to it at
+// the base's effective normal stress of the solution (NaN without forces).
+std::pair<double, double> base_strength(const slope::SlipMass& mass, const slope::Slice& slice,
+                                        const slope::SliceForces* forces) {
+  if (slice.envelope < 0 || static_cast<std::size_t>(slice.envelope) >= mass.envelopes.size())
+    return {slice.cohesion, slice.tan_friction};
+  if (forces == nullptr) return {std::nan(""), std::nan("")};
+  const double sigma = (forces->normal - forces->pore_force) / slice.base_length;
+  const slope::EnvelopePoint p = slope::envelope_at(mass.envelopes[static_cast<std::size_t>(slice.envelope)], sigma);
+  return {p.shear - sigma * p.slope, p.slope};
+}
+
+nlohmann::json slice_report(const slope::Section& section, const slope::SlipMass& mass, const slope::Slice& slice,
                             const slope::SliceForces* forces) {
   nlohmann::json s;
   s["x_left_m"] = slice.x_left;
@@ -29,8 +41,9 @@ nlohmann::json slice_report(const slope::Section& section, const slope::Slice& s
   s["base_angle_deg"] = sphslope::degrees(slice.base_angle);
   s["base_length_m"] = slice.base_length;
   s["material"] = slice.base_material < section.materials.size() ? section.materials[slice.base_material].name : "";
-  s["cohesion_kPa"] = slice.cohesion * to_kilo;
-  s["friction_angle_deg"] = sphslope::degrees(std::atan(slice.tan_friction));
+  const auto [cohesion, tan_friction] = base_strength(mass, slice, forces);
+  s["cohesion_kPa"] = number(cohesion * to_kilo);
+  s["friction_angle_deg"] = number(sphslope::degrees(std::atan(tan_friction)));
   s["weight_kN_m"] = slice.weight * to_kilo;
   s["surcharge_kN_m"] = slice.surcharge_load * to_kilo;
   s["ponded_water_kN_m"] = slice.ponded_water_load * to_kilo;
@@ -104,7 +117,7 @@ nlohmann::json method_report(const slope::Section& section, const slope::Critica
   const bool with_forces = result.forces.size() == mass.slices.size();
   nlohmann::json slices = nlohmann::json::array();
   for (std::size_t i = 0; i < mass.slices.size(); ++i) {
-    slices.push_back(slice_report(section, mass.slices[i], with_forces ? &result.forces[i] : nullptr));
+    slices.push_back(slice_report(section, mass, mass.slices[i], with_forces ? &result.forces[i] : nullptr));
   }
   m["slices"] = std::move(slices);
   return m;

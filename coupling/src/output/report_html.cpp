@@ -104,8 +104,18 @@ std::string materials_table(const slope::Section& s) {
          "<th>&phi;&prime; (&deg;)</th></tr>\n";
   char row[256];
   for (const slope::Material& m : s.materials) {
-    std::snprintf(row, sizeof row, "<td>%.2f</td><td>%s</td><td>%.1f</td></tr>\n", m.unit_weight / 1e3,
-                  cohesion_cell(m).c_str(), sphslope::degrees(m.friction_angle));
+    char gamma[64];
+    std::snprintf(gamma, sizeof gamma, "%.2f", m.unit_weight / 1e3);
+    if (m.saturated_unit_weight && s.water)
+      std::snprintf(gamma, sizeof gamma, "%.2f; %.2f below water", m.unit_weight / 1e3, *m.saturated_unit_weight / 1e3);
+    if (m.envelope) {  // the envelope in place of c' and phi'
+      std::snprintf(row, sizeof row, "<td>%s</td>", gamma);
+      out << "<tr><td class=\"l\">" << esc(m.name) << "</td>" << row << "<td colspan=\"2\" class=\"l\">"
+          << esc(slope::describe_envelope(*m.envelope)) << "</td></tr>\n";
+      continue;
+    }
+    std::snprintf(row, sizeof row, "<td>%s</td><td>%s</td><td>%.1f</td></tr>\n", gamma, cohesion_cell(m).c_str(),
+                  sphslope::degrees(m.friction_angle));
     out << "<tr><td class=\"l\">" << esc(m.name) << "</td>" << row;
   }
   out << "</table>\n";

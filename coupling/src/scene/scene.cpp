@@ -419,6 +419,11 @@ std::string summarize(const Scene& scene) {
     for (const slope::Material& m : s.materials)
       if (m.cohesion_rate > 0.0)
         out << ", cohesion + " << format_number(m.cohesion_rate / 1e3) << " kPa/m with depth in " << m.name;
+    for (const slope::Material& m : s.materials)
+      if (m.saturated_unit_weight && s.water)
+        out << ", " << format_number(*m.saturated_unit_weight / 1e3) << " kN/m3 below water in " << m.name;
+    for (const slope::Material& m : s.materials)
+      if (m.envelope) out << ", " << slope::describe_envelope(*m.envelope) << " in " << m.name;
     if (!s.surcharges.empty())
       out << ", " << s.surcharges.size() << " surcharge" << (s.surcharges.size() == 1 ? "" : "s");
     if (s.seismic_coefficient > 0) out << ", seismic kh = " << format_number(s.seismic_coefficient);

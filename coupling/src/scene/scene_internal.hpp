@@ -17,7 +17,23 @@ inline constexpr long max_grid_points_per_axis = 200;
 
 // Reads and validates one material object (name, unit weight, strength, optional elastic and flow constants) and
 // converts it to SI; reports its own unknown keys. Also used for the materials of particle bodies.
-std::optional<SoilMaterial> read_material(JsonReader& material);
+// Scene units to SI: kPa, kN/m^3 and kPa/m (kilo), MPa (mega).
+inline constexpr double kilo = 1e3;
+inline constexpr double mega = 1e6;
+
+// Whose material it is: a section's may have a strength envelope (limit equilibrium) in place of cohesion_kPa and
+// friction_angle_deg; a particle body's is the SPH model's Mohr-Coulomb.
+enum class MaterialOf { section, body };
+// The scene key of a strength envelope of this kind.
+inline const char* envelope_key(slope::StrengthEnvelope::Kind kind) {
+  switch (kind) {
+    case slope::StrengthEnvelope::Kind::hoek_brown: return "hoek_brown";
+    case slope::StrengthEnvelope::Kind::power_curve: return "power_curve";
+    case slope::StrengthEnvelope::Kind::shear_normal: return "shear_normal_kPa";
+  }
+  return "";
+}
+std::optional<SoilMaterial> read_material(JsonReader& material, MaterialOf owner);
 
 // Reads and validates "section"; nullopt when anything in it is invalid (the faults are in `diagnostics`).
 std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagnostics);

@@ -10,9 +10,6 @@ namespace coupling {
 
 namespace {
 
-constexpr double kilo = 1e3;
-constexpr double mega = 1e6;
-
 using Polyline = std::vector<slope::Point>;
 
 std::string range_text(double a, double b) { return format_number(a) + " to " + format_number(b); }
@@ -269,75 +266,7 @@ std::optional<slope::Range> read_range(JsonReader& reader, std::string_view key,
   return slope::Range{pair->first, pair->second};
 }
 
-// The cohesion's increase with depth (already read; checked here against each other): a datum or a maximum
-// without a rate is an error, as is a maximum below the cohesion at the datum or top. Fills `material` when valid.
-bool read_cohesion_with_depth(JsonReader& m, const std::optional<double>& cohesion, const std::optional<double>& rate,
-                              const std::optional<double>& datum, const std::optional<double>& maximum,
-                              SoilMaterial& material) {
-  if ((m.has("cohesion_increase_kPa_per_m") && !rate) || (m.has("cohesion_datum_y_m") && !datum) ||
-      (m.has("cohesion_max_kPa") && !maximum))
-    return false;
-  if ((datum || maximum) && !rate) {
-    m.diagnostics().error(m.path_of(datum ? "cohesion_datum_y_m" : "cohesion_max_kPa"),
-                          "needs cohesion_increase_kPa_per_m (the cohesion's increase with depth, kPa/m)");
-    return false;
-  }
-  if (maximum && cohesion && *maximum < *cohesion) {
-    m.diagnostics().error(m.path_of("cohesion_max_kPa"), "must be at least cohesion_kPa = " + format_number(*cohesion) +
-                                                             " (got " + format_number(*maximum) + ")");
-    return false;
-  }
-  if (rate) material.cohesion_rate = *rate * kilo;
-  material.cohesion_datum_y = datum;
-  if (maximum) material.cohesion_max = *maximum * kilo;
-  return true;
-}
-
 }  // namespace
-
-std::optional<SoilMaterial> read_material(JsonReader& m) {
-  SoilMaterial material;
-  const auto name = m.string("name", Need::required);
-  const auto unit_weight = m.number("unit_weight_kN_m3", Need::required, Bounds::positive());
-  const auto cohesion = m.number("cohesion_kPa", Need::required, Bounds::non_negative());
-  const auto friction = m.number("friction_angle_deg", Need::required, Bounds::half_open(0.0, 90.0));
-  const auto dilatancy = m.number("dilatancy_angle_deg", Need::optional, Bounds::half_open(0.0, 90.0));
-  const auto youngs = m.number("youngs_modulus_MPa", Need::optional, Bounds::positive());
-  const auto poisson = m.number("poisson_ratio", Need::optional, Bounds::open(-1.0, 0.5));
-  const auto model = m.string("constitutive_model", Need::optional);
-  const auto ru = m.number("pore_pressure_ratio", Need::optional, Bounds::half_open(0.0, 1.0));
-  const auto c_rate = m.number("cohesion_increase_kPa_per_m", Need::optional, Bounds::non_negative());
-  const auto c_datum = m.number("cohesion_datum_y_m", Need::optional, Bounds::any());
-  const auto c_max = m.number("cohesion_max_kPa", Need::optional, Bounds::non_negative());
-  m.finish();
-  if (!read_cohesion_with_depth(m, cohesion, c_rate, c_datum, c_max, material)) return std::nullopt;
-  if (model && *model != "drucker_prager" && *model != "elastic") {
-    m.diagnostics().error(m.path_of("constitutive_model"),
-                          "unknown model \"" + *model + "\" (allowed: drucker_prager, elastic)");
-    return std::nullopt;
-  }
-  if (dilatancy && friction && *dilatancy > *friction) {
-    m.diagnostics().error(m.path_of("dilatancy_angle_deg"),
-                          "must not exceed friction_angle_deg = " + format_number(*friction) + " (got " +
-                              format_number(*dilatancy) + "; 0 <= dilatancy <= friction angle)");
-    return std::nullopt;
-  }
-  if (!name || !unit_weight || !cohesion || !friction) return std::nullopt;
-  if (m.has("dilatancy_angle_deg") && !dilatancy) return std::nullopt;
-  if (m.has("youngs_modulus_MPa") && !youngs) return std::nullopt;
-  if (m.has("poisson_ratio") && !poisson) return std::nullopt;
-  if (m.has("pore_pressure_ratio") && !ru) return std::nullopt;
-  material.name = *name;
-  material.unit_weight = *unit_weight * kilo;
-  material.cohesion = *cohesion * kilo;
-  material.friction_angle = sphslope::radians(*friction);
-  if (dilatancy) material.dilatancy_angle = sphslope::radians(*dilatancy);
-  if (youngs) material.youngs_modulus = *youngs * mega;
-  material.poisson_ratio = poisson;
-  material.elastic = model && *model == "elastic";
-  if (ru) material.pore_pressure_ratio = *ru;
-  return material;
-}
 
 bool read_search_limits(JsonReader& search, const slope::Section* section, slope::SearchLimits& limits) {
   Diagnostics& diagnostics = search.diagnostics();
@@ -389,20 +318,6 @@ std::optional<double> read_minimum_depth(JsonReader& search) {
   return search.number("minimum_depth_m", Need::optional, Bounds::positive());
 }
 
-void check_materials_for_sph(const std::string& section_path, const SceneSection& section, Diagnostics& diagnostics) {
-  for (std::size_t i = 0; i < section.materials.size(); ++i) {
-    const SoilMaterial& m = section.materials[i];
-    std::string missing;
-    if (!m.youngs_modulus) missing += "youngs_modulus_MPa";
-    if (!m.poisson_ratio) missing += std::string(missing.empty() ? "" : " and ") + "poisson_ratio";
-    if (missing.empty()) continue;
-    diagnostics.error(index_path(join_path(section_path, "materials"), i),
-                      "material \"" + m.name + "\" lacks " + missing +
-                          ", which the SPH analysis (analyses.sph) needs for every material (elastic constants of the "
-                          "soil model; dilatancy_angle_deg is optional, default 0)");
-  }
-}
-
 namespace {
 
 // The names of section.materials, for the profile lines that refer to them.
@@ -421,7 +336,7 @@ MaterialNames read_section_materials(JsonReader& section, std::vector<SoilMateri
   std::map<std::string, std::string> first_path;
   for (std::size_t i = 0; i < materials->size(); ++i) {
     JsonReader m((*materials)[i], index_path(section.path_of("materials"), i), diagnostics);
-    auto material = read_material(m);
+    auto material = read_material(m, MaterialOf::section);
     if (!material) {
       // Keep the name (if readable) so profile lines naming it do not report a second, misleading error.
       if (m.is_object() && (*materials)[i].contains("name") && (*materials)[i]["name"].is_string()) {
@@ -537,7 +452,7 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
   for (const SoilMaterial& m : result.materials) {
     result.section.materials.push_back(
         slope::Material{m.name, m.unit_weight, m.cohesion, m.friction_angle, m.pore_pressure_ratio, m.cohesion_rate,
-                        m.cohesion_datum_y, m.cohesion_max});
+                        m.cohesion_datum_y, m.cohesion_max, m.saturated_unit_weight, m.envelope});
   }
   for (const LineRead& line : lines) {
     result.section.profile_lines.push_back(slope::ProfileLine{*line.material, *line.points});

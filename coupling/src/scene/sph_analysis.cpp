@@ -127,6 +127,18 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
                            format_number(materials[i].cohesion_rate / 1e3) + " kPa/m)",
                        index_path("section.materials", i) + ".cohesion_increase_kPa_per_m",
                        "the SPH soil model gives each material one cohesion (cohesion_kPa)"});
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].saturated_unit_weight && section.water)
+      loads.push_back({"the saturated unit weight of material \"" + materials[i].name + "\" (" +
+                           format_number(*materials[i].saturated_unit_weight / 1e3) + " kN/m3)",
+                       index_path("section.materials", i) + ".saturated_unit_weight_kN_m3",
+                       "the SPH soil model gives each material one density (unit_weight_kN_m3 / g)"});
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].envelope)
+      loads.push_back({"the strength envelope of material \"" + materials[i].name + "\" (" +
+                           slope::describe_envelope(*materials[i].envelope) + ")",
+                       index_path("section.materials", i) + "." + envelope_key(materials[i].envelope->kind),
+                       "the SPH soil model takes its Mohr-Coulomb cohesion_kPa and friction_angle_deg"});
   return loads;
 }
 
@@ -355,7 +367,7 @@ std::optional<std::vector<ParticleBody>> read_particle_bodies(const nlohmann::js
     if (auto polygon = read_simple_polygon(b, "polygon_m", "a body"))
       for (const auto& [x, y] : *polygon) body.polygon.push_back({x, y});
     if (auto m = b.object("material", Need::required)) {
-      if (auto material = read_material(*m)) {
+      if (auto material = read_material(*m, MaterialOf::body)) {
         body.material = *material;
         std::string missing;
         if (!material->youngs_modulus) missing = "youngs_modulus_MPa";

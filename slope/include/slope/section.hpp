@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "slope/strength.hpp"
+
 namespace slope {
 
 struct Point {
@@ -16,7 +18,7 @@ struct Point {
 
 struct Material {
   std::string name;
-  double unit_weight = 0.0;     // N/m^3 (total unit weight)
+  double unit_weight = 0.0;     // N/m^3 (total unit weight; above the piezometric line when saturated_unit_weight is given)
   double cohesion = 0.0;        // Pa (effective cohesion c')
   double friction_angle = 0.0;  // rad (effective friction angle phi')
   // r_u (-): when > 0, the pore pressure on a slice base in this material is r_u times the vertical overburden of
@@ -31,6 +33,12 @@ struct Material {
   double cohesion_rate = 0.0;                                     // Pa/m, >= 0
   std::optional<double> cohesion_datum_y{};                       // m
   double cohesion_max = std::numeric_limits<double>::infinity();  // Pa, >= cohesion
+  // N/m^3, > 0: the total unit weight of this material below the piezometric line (Section::water); empty: unit_weight
+  // everywhere. Each slice splits each layer at the piezometric line's mean height over the slice.
+  std::optional<double> saturated_unit_weight{};
+  // A non-linear strength envelope (strength.hpp): when given, it is the strength of slice bases in this material
+  // (cohesion, friction_angle and the cohesion's increase with depth are not used: cohesion_rate must be 0).
+  std::optional<StrengthEnvelope> envelope{};
 };
 
 // A profile line is the top of its material; the material extends down to the next line below it

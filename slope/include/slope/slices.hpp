@@ -34,6 +34,8 @@ struct Slice {
   double tan_friction = 0.0;     // tan(phi') of the material at the base
   double pore_pressure = 0.0;    // Pa, at the base midpoint
   std::size_t base_material = 0; // index into Section::materials
+  int envelope = -1;             // index into SlipMass::envelopes when the base material's strength is a non-linear
+                                 // envelope (cohesion and tan_friction are then not used), -1: Mohr-Coulomb
   // Added for the methods (zero when there is no water / no seismic load):
   double seismic_force = 0.0;    // N/m, kh * weight, horizontal, in the direction of sliding, acting at mid-height
                                  // of the slice ((base_y + top_y) / 2: centroid approximated at mid-height)
@@ -49,6 +51,8 @@ struct SlipMass {
   Point exit;         // m, lower intersection with the ground surface (near the toe)
   int direction = 1;  // +1: the mass slides toward +x; -1: toward -x
   std::vector<Slice> slices;
+  // The non-linear strength envelopes of the base materials that have one (Slice::envelope indexes them).
+  std::vector<StrengthEnvelope> envelopes;
   // Polyline surfaces only (empty for a circle): the surface analysed, left to right; with a tension crack it
   // starts (or ends) at the bottom of the crack.
   std::vector<Point> surface;

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "slope/strength.hpp"
 #include "sphslope/units.hpp"
 
 namespace coupling {
@@ -15,6 +16,7 @@ using sphslope::standard_gravity;  // density = unit weight / g
 struct SoilMaterial {
   std::string name;
   double unit_weight = 0.0;                // N/m^3
+  std::optional<double> saturated_unit_weight;  // N/m^3, limit equilibrium, below the piezometric line
   double cohesion = 0.0;                   // Pa
   double friction_angle = 0.0;             // rad
   std::optional<double> dilatancy_angle;   // rad; absent: SPH uses 0 (non-associated flow)
@@ -26,6 +28,11 @@ struct SoilMaterial {
   double cohesion_rate = 0.0;                                     // Pa/m; 0: constant cohesion
   std::optional<double> cohesion_datum_y;                         // m; absent: depth below the material's top
   double cohesion_max = std::numeric_limits<double>::infinity();  // Pa
+  // limit equilibrium: a non-linear strength envelope (hoek_brown, power_curve or shear_normal_kPa) in place of
+  // cohesion and friction_angle; mohr_coulomb: cohesion_kPa and friction_angle_deg were given (always, without an
+  // envelope; the SPH soil model needs them)
+  std::optional<slope::StrengthEnvelope> envelope;
+  bool mohr_coulomb = true;
 
   double density() const { return unit_weight / standard_gravity; }  // kg/m^3
 };

@@ -1,0 +1,74 @@
+// A method's solution on slice bases with non-linear strength envelopes (method_table.hpp, solve_row): the methods
+// of slices take a cohesion and a friction per base, so each base gets the envelope's tangent at its effective
+// normal stress (the instantaneous c_i and phi_i, as Slide2 and SLOPE/W do), and the stresses of the solution start
+// the next solve. At the fixed point every base carries tau(sigma_n') of its envelope at its own sigma_n'.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "method_table.hpp"
+#include "slope/strength.hpp"
+
+namespace slope::detail {
+
+namespace {
+
+constexpr int maximum_envelope_iterations = 200;
+
+bool has_envelope(const SliceTable& t, int i) {
+  const int e = t.envelope[i];
+  return e >= 0 && static_cast<std::size_t>(e) < t.envelopes->size();
+}
+
+// The tangent of each base's envelope at its effective normal stress sigma[i], as the base's c' and tan(phi').
+void apply_envelopes(SliceTable& t, const std::vector<double>& sigma) {
+  for (int i = 0; i < t.count; ++i) {
+    if (!has_envelope(t, i)) continue;
+    const EnvelopePoint p = envelope_at((*t.envelopes)[static_cast<std::size_t>(t.envelope[i])], sigma[i]);
+    t.tan_phi[i] = p.slope;
+    t.cohesion[i] = p.shear - sigma[i] * p.slope;
+    t.cohesion_force[i] = t.cohesion[i] * t.base_length[i];
+  }
+}
+
+}  // namespace
+
+Outcome solve_row(const MethodRow& row, SliceTable& t, MethodWorkspace& ws, double guess) {
+  if (!t.has_envelopes) return row.solve(t, ws, guess);
+  std::vector<double>& sigma = ws.envelope_normal;
+  sigma.assign(static_cast<std::size_t>(t.count), 0.0);
+  // The start: the Ordinary method's effective normal forces, which do not depend on the strength.
+  for (int i = 0; i < t.count; ++i)
+    sigma[i] = (t.vertical[i] * t.cos_a[i] - t.horizontal[i] * t.sin_a[i] - t.pore_force[i]) / t.base_length[i];
+  Outcome out;
+  double previous = std::numeric_limits<double>::quiet_NaN();
+  int solver_iterations = 0;
+  for (int pass = 0; pass < maximum_envelope_iterations; ++pass) {
+    apply_envelopes(t, sigma);
+    out = row.solve(t, ws, guess);
+    solver_iterations += out.iterations;
+    if (!out.ok()) return out;
+    row.forces(t, ws, out, ws.envelope_forces);
+    double change = 0.0, scale = 0.0;
+    for (int i = 0; i < t.count; ++i) {
+      if (!has_envelope(t, i)) continue;
+      const SliceForces& f = ws.envelope_forces[static_cast<std::size_t>(i)];
+      const double next = (f.normal - f.pore_force) / t.base_length[i];
+      change = std::max(change, std::fabs(next - sigma[i]));
+      scale = std::max(scale, std::fabs(next));
+      sigma[i] = next;
+    }
+    const double fs = out.factor_of_safety;
+    if (std::fabs(fs - previous) <= 1e-9 * fs && change <= 1e-7 * scale) {
+      out.iterations = solver_iterations;
+      return out;
+    }
+    previous = fs;
+    guess = fs;
+  }
+  out.failure = Failure::not_converged;
+  out.iterations = solver_iterations;
+  return out;
+}
+
+}  // namespace slope::detail
