@@ -26,6 +26,22 @@ slope::Section griffiths_lane() {
   return s;
 }
 
+// Hammah et al. (2005) Example 1 (cases/hammah_2005_hoek_brown.json): a 10 m, 45 degree rock slope with a
+// generalized Hoek-Brown envelope (sigma_ci 30 MPa, GSI 5, m_i 2, D 0, 25 kN/m^3); with hoek_brown = false the
+// same slope in a Mohr-Coulomb soil of about its strength (c' = 17 kPa, phi' = 24 deg), for the envelope's cost.
+slope::Section hammah(bool hoek_brown) {
+  slope::Section s;
+  s.bottom_y = 0.0;
+  s.materials.push_back({"rock mass", 25e3, 17e3, sphslope::radians(24.0)});
+  if (hoek_brown) {
+    slope::StrengthEnvelope e;
+    e.hoek_brown = slope::hoek_brown_from_gsi(30e6, 5.0, 2.0, 0.0);
+    s.materials[0].envelope = e;
+  }
+  s.profile_lines.push_back({0, {{0, 15}, {20, 15}, {30, 5}, {50, 5}}});
+  return s;
+}
+
 // Trial circles scattered around the critical one, all admissible for every method measured.
 std::vector<slope::Circle> trial_circles(const slope::Section& section, int count) {
   slope::CircleEvaluator evaluator(section);
@@ -150,6 +166,13 @@ int main() {
   throughput("Janbu simplified", slope::Method::janbu, section, circles);
   search_time("default search, Bishop", {slope::Method::bishop}, section);
   search_time("default search, all methods", slope::all_methods(), section);
+  std::printf("Hammah et al. (2005) 45 degree rock slope: Mohr-Coulomb (c' 17 kPa, phi' 24 deg), then the "
+              "generalized Hoek-Brown envelope\n");
+  for (bool hoek_brown : {false, true}) {
+    const slope::Section rock = hammah(hoek_brown);
+    search_time(hoek_brown ? "Hoek-Brown, Bishop" : "Mohr-Coulomb, Bishop", {slope::Method::bishop}, rock);
+    search_time(hoek_brown ? "Hoek-Brown, all methods" : "Mohr-Coulomb, all methods", slope::all_methods(), rock);
+  }
   polyline_throughput(section, circles);
   noncircular_time("non-circular, Spencer", {slope::Method::spencer}, section);
   noncircular_time("non-circular, all methods", slope::all_methods(), section);

@@ -49,7 +49,7 @@ class MethodWorkspace {
   std::vector<double> numerator, friction_term, interface_function;
   std::vector<SliceForces> forces;
   // the iteration on non-linear strength envelopes: the bases' effective normal stresses and the forces they come from
-  std::vector<double> envelope_normal;
+  std::vector<double> envelope_normal, envelope_hint;
   std::vector<SliceForces> envelope_forces;
 
   // Grows the per-slice buffers of the ratio equations (Bishop, Janbu) to hold n slices (with room to spare).

@@ -42,8 +42,8 @@ std::size_t method_index(Method method);
 // Solves the row's equations on the table (row.solve). When slice bases have non-linear strength envelopes
 // (SliceTable::envelope), each solve sees the envelopes' tangents at the bases' effective normal stresses as their
 // cohesion and friction (written into the table), starting from the Ordinary method's normal forces; the
-// solution's normal forces give the next stresses, until the factor of safety changes by less than 1e-9 of itself
-// and every stress by less than 1e-7 of the largest (envelope_iteration.cpp).
+// solution's normal forces give the next stresses, until none changes by more than 1e-6 of the largest
+// (envelope_iteration.cpp).
 Outcome solve_row(const MethodRow& row, SliceTable& table, MethodWorkspace& ws, double guess);
 
 }  // namespace slope::detail

@@ -28,9 +28,10 @@ struct BalmerPoint {
 
 BalmerPoint balmer(const HoekBrown& hb, double sigma3) {
   const double w = hb.mb * sigma3 / hb.intact_strength + hb.s;
-  const double deviator = hb.intact_strength * std::pow(w, hb.a);
-  const double k = 1.0 + hb.a * hb.mb * std::pow(w, hb.a - 1.0);
-  const double dk = hb.a * (hb.a - 1.0) * hb.mb * hb.mb / hb.intact_strength * std::pow(w, hb.a - 2.0);
+  const double w_a = std::pow(w, hb.a);  // one pow: w^(a-1) and w^(a-2) follow by division (w > 0 here)
+  const double deviator = hb.intact_strength * w_a;
+  const double k = 1.0 + hb.a * hb.mb * w_a / w;
+  const double dk = hb.a * (hb.a - 1.0) * hb.mb * hb.mb / hb.intact_strength * w_a / (w * w);
   BalmerPoint p;
   p.normal = sigma3 + deviator / (k + 1.0);
   p.shear = deviator * std::sqrt(k) / (k + 1.0);
@@ -45,25 +46,37 @@ BalmerPoint balmer(const HoekBrown& hb, double sigma3) {
 // a slope of 5.3.
 double least_sigma3(const HoekBrown& hb) { return hb.intact_strength * (1e-9 - hb.s) / hb.mb; }
 
-EnvelopePoint hoek_brown_at(const HoekBrown& hb, double normal_stress) {
-  const double lo_sigma3 = least_sigma3(hb);
-  BalmerPoint p = balmer(hb, lo_sigma3);
-  if (!(normal_stress > p.normal)) return {p.shear + p.slope * (normal_stress - p.normal), p.slope};
-  // sigma_n(sigma3) increases (d_normal > 1): Newton's method kept inside the bracket [lo, hi], bisecting when a
-  // step leaves it. sigma_n >= sigma3, so sigma3 = sigma_n is an upper bound.
-  double lo = lo_sigma3, hi = normal_stress;
-  double x = lo;
-  const double tolerance = 1e-13 * (std::fabs(normal_stress) + hb.intact_strength);
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    const double f = p.normal - normal_stress;
-    if (std::fabs(f) <= tolerance) break;
+EnvelopePoint hoek_brown_at(const HoekBrown& hb, double normal_stress, double* hint) {
+  // The root sigma3 of sigma_n(sigma3) = normal_stress. sigma_n increases (d_normal > 1) and sigma_n >= sigma3: the
+  // root lies in [least, normal_stress] unless normal_stress is below sigma_n(least), where the tangent there is
+  // extended. Newton's method from the hint (or the upper end), kept inside the bracket and bisecting when a step
+  // leaves it; the least point is evaluated only when a step would fall below it.
+  const double least = least_sigma3(hb);
+  const auto extended = [&](const BalmerPoint& q) {
+    return EnvelopePoint{q.shear + q.slope * (normal_stress - q.normal), q.slope};
+  };
+  double lo = least, hi = normal_stress;
+  if (!(hi > lo)) return extended(balmer(hb, least));
+  double x = (hint != nullptr && *hint > lo && *hint < hi) ? *hint : hi;
+  BalmerPoint p = balmer(hb, x);
+  // Within the tolerance the point found is on the envelope beside the target: its tangent covers the difference
+  // (an error of the order of the curvature times the difference squared).
+  const double tolerance = 1e-9 * (std::fabs(normal_stress) + 1e-3 * hb.intact_strength);
+  double f = p.normal - normal_stress;
+  for (int iteration = 0; iteration < 200 && std::fabs(f) > tolerance; ++iteration) {
     (f < 0.0 ? lo : hi) = x;
     double next = x - f / p.d_normal;
+    if (!(next > lo) && lo == least) {
+      const BalmerPoint q = balmer(hb, least);
+      if (!(normal_stress > q.normal)) return extended(q);
+    }
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     x = next;
     p = balmer(hb, x);
+    f = p.normal - normal_stress;
   }
-  return {p.shear, p.slope};
+  if (hint != nullptr) *hint = x;
+  return {p.shear - p.slope * f, p.slope};
 }
 
 EnvelopePoint power_curve_at(const StrengthEnvelope& e, double normal_stress) {
@@ -90,9 +103,9 @@ bool finite_all(std::initializer_list<double> values) {
 
 }  // namespace
 
-EnvelopePoint envelope_at(const StrengthEnvelope& envelope, double normal_stress) {
+EnvelopePoint envelope_at(const StrengthEnvelope& envelope, double normal_stress, double* hint) {
   switch (envelope.kind) {
-    case StrengthEnvelope::Kind::hoek_brown: return hoek_brown_at(envelope.hoek_brown, normal_stress);
+    case StrengthEnvelope::Kind::hoek_brown: return hoek_brown_at(envelope.hoek_brown, normal_stress, hint);
     case StrengthEnvelope::Kind::power_curve: return power_curve_at(envelope, normal_stress);
     case StrengthEnvelope::Kind::shear_normal: return shear_normal_at(envelope.points, normal_stress);
   }

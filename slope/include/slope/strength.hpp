@@ -53,7 +53,10 @@ struct EnvelopePoint {
 // Below the envelope's least normal stress (Hoek-Brown: just above the tensile strength -s sigma_ci / m_b; power curve:
 // sigma' + d below 1 Pa, where the slope would grow without bound; a shear-normal function: its first point) the
 // tangent there is extended (the strength may fall to zero or below: the methods then refuse the surface).
-EnvelopePoint envelope_at(const StrengthEnvelope& envelope, double normal_stress);
+// hint (Hoek-Brown; optional): in, the minor principal stress sigma3' (Pa) found for a nearby normal stress, where
+// the root search starts (NaN: none); out, the one found. The result does not depend on it beyond the root's
+// tolerance (sigma_n found within 1e-9 of |sigma_n| + 1e-3 sigma_ci, the tangent covering the difference).
+EnvelopePoint envelope_at(const StrengthEnvelope& envelope, double normal_stress, double* hint = nullptr);
 
 // Empty when the envelope can be used; otherwise what is wrong with its parameters.
 std::string envelope_error(const StrengthEnvelope& envelope);
