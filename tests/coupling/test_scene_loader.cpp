@@ -464,15 +464,18 @@ TEST_CASE("scene: a particle body's material has no strength envelope and no sat
                     Catch::Contains("bodies[0].material.saturated_unit_weight_kN_m3: is for the section's materials"));
 }
 
-TEST_CASE("scene: a saturated unit weight is read in kN/m3 and left out of SPH", "[scene][water]") {
+TEST_CASE("scene: a saturated unit weight is read in kN/m3; SPH leaves it out only without the water",
+          "[scene][water]") {
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water.json"));
   scene["section"]["materials"][1]["saturated_unit_weight_kN_m3"] = 21.5;
   CHECK(parse_scene(scene.dump()).section->section.materials[1].saturated_unit_weight == 21.5e3);
   CHECK_FALSE(parse_scene(scene.dump()).section->section.materials[0].saturated_unit_weight);
   scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 1.0}};
+  CHECK(coupling::loads_sph_leaves_out(parse_scene(scene.dump())).empty());
+  scene["analyses"]["sph"]["ignore_loads"] = {"water"};
   const auto left_out = coupling::loads_sph_leaves_out(parse_scene(scene.dump()));
-  REQUIRE(left_out.size() == 1);
-  CHECK(left_out[0].path == "section.materials[1].saturated_unit_weight_kN_m3");
+  REQUIRE(left_out.size() == 2);
+  CHECK(left_out[1].path == "section.materials[1].saturated_unit_weight_kN_m3");
   scene["section"]["materials"][1]["saturated_unit_weight_kN_m3"] = 0.0;
   CHECK_THROWS_WITH(parse_scene(scene.dump()),
                     Catch::Contains("section.materials[1].saturated_unit_weight_kN_m3: must be > 0"));

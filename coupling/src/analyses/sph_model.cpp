@@ -199,6 +199,22 @@ sph::BoxWalls box_walls(double x_min, double x_max, double y_min, double height,
   return box;
 }
 
+// Whether the SPH analysis carries a section load ("water", "surcharges", "seismic"): not listed in ignore_loads.
+bool sph_carries(const SphAnalysis& analysis, const char* load) {
+  const auto& ignored = analysis.ignored_loads;
+  return std::find(ignored.begin(), ignored.end(), load) == ignored.end();
+}
+
+// A particle's density (kg/m^3): its material's saturated unit weight / g below the piezometric line where the
+// material has one and the SPH analysis carries the water, its unit weight / g elsewhere.
+double particle_density(const SoilMaterial& material, const slope::Section& section, bool water_carried, double x,
+                        double y) {
+  if (water_carried && section.water && material.saturated_unit_weight &&
+      y < slope::polyline_y(section.water->piezometric_line, x))
+    return *material.saturated_unit_weight / standard_gravity;
+  return material.density();
+}
+
 // A slope section: its soil on the cell-centred lattice and the walls of the section box.
 void build_section_particles(const SceneSection& scene_section, const SphAnalysis& analysis, sph::Model& model,
                              SphSize& counted) {
@@ -214,8 +230,10 @@ void build_section_particles(const SceneSection& scene_section, const SphAnalysi
   for (const auto& m : scene_section.materials) model.materials.push_back(to_sph_material(m));
   const SectionFill fill = fill_section(section, dx);
   model.particles.reserve(fill.points.size() + wall_estimate(width, height, analysis.section_walls, dx, analysis.wall_layers));
+  const bool water_carried = sph_carries(analysis, "water");
   for (std::size_t i = 0; i < fill.points.size(); ++i) {
-    const double density = model.materials[fill.materials[i]].density;
+    const double density = particle_density(scene_section.materials[fill.materials[i]], section, water_carried,
+                                            fill.points[i].x, fill.points[i].y);
     model.particles.add(fill.points[i].x, fill.points[i].y, density * dx * dx, density,
                         static_cast<std::uint16_t>(fill.materials[i]), sph::ParticleKind::soil);
   }
@@ -271,11 +289,6 @@ void build_body_particles(const std::vector<ParticleBody>& bodies, const std::op
         box_walls(walls->x_min, walls->x_max, walls->bottom_y, walls->height, walls->sides, analysis.wall_layers);
     counted.wall_particles = sph::add_box_walls(model.particles, box, dx, h, 0, model.materials.front().density);
   }
-}
-
-bool sph_carries(const SphAnalysis& analysis, const char* load) {
-  const auto& ignored = analysis.ignored_loads;
-  return std::find(ignored.begin(), ignored.end(), load) == ignored.end();
 }
 
 // The section's loads on the SPH model (sph/soil/loads.hpp), except those analyses.sph.ignore_loads leaves out: the

@@ -128,11 +128,12 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
                        index_path("section.materials", i) + ".cohesion_increase_kPa_per_m",
                        "the SPH soil model gives each material one cohesion (cohesion_kPa)"});
   for (std::size_t i = 0; i < materials.size(); ++i)
-    if (materials[i].saturated_unit_weight && section.water)
+    if (materials[i].saturated_unit_weight && section.water && listed("water"))
       loads.push_back({"the saturated unit weight of material \"" + materials[i].name + "\" (" +
                            format_number(*materials[i].saturated_unit_weight / 1e3) + " kN/m3)",
                        index_path("section.materials", i) + ".saturated_unit_weight_kN_m3",
-                       "the SPH soil model gives each material one density (unit_weight_kN_m3 / g)"});
+                       "without the water (analyses.sph.ignore_loads) every particle has the density "
+                       "unit_weight_kN_m3 / g"});
   for (std::size_t i = 0; i < materials.size(); ++i)
     if (materials[i].envelope)
       loads.push_back({"the strength envelope of material \"" + materials[i].name + "\" (" +
