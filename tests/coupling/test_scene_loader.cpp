@@ -16,6 +16,8 @@
 #include "coupling/output/report.hpp"
 #include "coupling/scene/scene.hpp"
 #include "coupling/analyses/pipeline.hpp"
+#include "sph/mps/settings.hpp"
+#include "sph/soil/model.hpp"
 
 namespace test_scene_loader {
 
@@ -464,7 +466,7 @@ TEST_CASE("scene: a particle body's material has no strength envelope and no sat
                     Catch::Contains("bodies[0].material.saturated_unit_weight_kN_m3: is for the section's materials"));
 }
 
-TEST_CASE("scene: a saturated unit weight is read in kN/m3; SPH leaves it out only without the water",
+TEST_CASE("scene: a saturated unit weight is read in kN/m3, SPH leaves it out only without the water",
           "[scene][water]") {
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water.json"));
   scene["section"]["materials"][1]["saturated_unit_weight_kN_m3"] = 21.5;
@@ -479,6 +481,53 @@ TEST_CASE("scene: a saturated unit weight is read in kN/m3; SPH leaves it out on
   scene["section"]["materials"][1]["saturated_unit_weight_kN_m3"] = 0.0;
   CHECK_THROWS_WITH(parse_scene(scene.dump()),
                     Catch::Contains("section.materials[1].saturated_unit_weight_kN_m3: must be > 0"));
+}
+
+namespace {
+
+// The row of docs/scene-format.md's tables that documents `key` ("| `key` | ...").
+std::string documented_row(const std::string& key) {
+  std::ifstream docs(fs::path(test_paths::source_dir()) / "docs/scene-format.md");
+  std::string line;
+  while (std::getline(docs, line))
+    if (line.rfind("| `" + key + "` |", 0) == 0) return line;
+  return {};
+}
+
+// Every name of the table reads back to its value and is listed in the key's row of the docs, as `name` or
+// `"name"`; the scene reader and the report take their names from the same table.
+template <class E, std::size_t N>
+void check_names(const std::string& key, const sphslope::NameTable<E, N>& names) {
+  INFO(key);
+  const std::string row = documented_row(key);
+  REQUIRE_FALSE(row.empty());
+  for (const sphslope::Named<E>& entry : names) {
+    const std::string name(entry.name);
+    INFO(name);
+    CHECK(sphslope::value_named(names, entry.name) == entry.value);
+    CHECK(sphslope::name_of(names, entry.value) == entry.name);
+    CHECK((row.find("`" + name + "`") != std::string::npos || row.find("`\"" + name + "\"`") != std::string::npos));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("scene: each setting's names come from one table that the docs list", "[scene]") {
+  check_names("kernel", sph::kernel_names);
+  check_names("kernel_gradient", sph::kernel_gradient_names);
+  check_names("time_integration", sph::time_integration_names);
+  check_names("gravity", sph::gravity_mode_names);
+  check_names("regularisation", sph::mps::regularisation_names);
+  check_names("interaction_viscosity", sph::mps::interaction_viscosity_names);
+  check_names("effective_pressure", sph::mps::effective_pressure_names);
+  check_names("pore_pressure", sph::mps::pore_pressure_names);
+  check_names("stress_divergence", sph::mps::stress_divergence_names);
+  // The reader's message lists the same names.
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water_sph.json"));
+  scene["analyses"]["sph"]["kernel"] = "gaussian";
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("analyses.sph.kernel: unknown kernel \"gaussian\" (allowed: " +
+                                    sphslope::names_listed(sph::kernel_names) + ")"));
 }
 
 TEST_CASE("scene: k_h on a section level at both ends is refused for SPH (no direction)", "[scene][sph]") {

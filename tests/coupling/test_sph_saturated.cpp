@@ -54,7 +54,7 @@ double largest_displacement(const sph::Model& m) {
 
 }  // namespace
 
-TEST_CASE("SPH: particles below the water table weigh the saturated unit weight; the K0 state is the closed form "
+TEST_CASE("SPH: particles below the water table weigh the saturated unit weight, the K0 state is the closed form "
           "and at rest", "[sph][loads][water]") {
   const coupling::Scene scene = coupling::parse_scene(level_scene(false).dump());
   CHECK(coupling::loads_sph_leaves_out(scene).empty());

@@ -46,7 +46,7 @@ double gravity_of(const IsphAnalysis& a) { return std::hypot(a.settings.gravity_
 
 void echo_settings(const IsphAnalysis& a, const sph::fluid::Model& model, IsphStageResult& result) {
   result.pressure_mode = sph::fluid::pressure_mode_key(a.settings.pressure_mode);
-  result.kernel = a.settings.kernel == sph::KernelType::wendland_c2 ? "wendland_c2" : "cubic_spline";
+  result.kernel = sphslope::name_of(sph::kernel_names, a.settings.kernel);
   result.particle_spacing = a.settings.particle_spacing;
   result.smoothing_length = a.settings.smoothing_length();
   result.fluid_particles = model.particles.count(sph::ParticleKind::soil);

@@ -129,7 +129,7 @@ SphModelFacts model_facts(const sph::Model& model, const SphSize& size, const Sp
   f.wall_particles = size.wall_particles;
   f.particle_spacing_m = model.settings.particle_spacing;
   f.kernel = model.settings.kernel;
-  f.corrected_gradient = model.settings.kernel_gradient == sph::KernelGradient::corrected;
+  f.kernel_gradient = model.settings.kernel_gradient;
   f.stress_substeps = model.settings.stress_substeps;
   f.gravity = model.settings.gravity_mode;
   f.gravity_ramp_s = model.settings.gravity_ramp_time;

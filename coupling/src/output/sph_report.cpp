@@ -6,32 +6,19 @@ namespace coupling {
 
 namespace {
 
-const char* kernel_key(sph::KernelType kernel) {
-  return kernel == sph::KernelType::cubic_spline ? "cubic_spline" : "wendland_c2";
-}
-
-const char* gravity_key(sph::GravityMode mode) {
-  switch (mode) {
-    case sph::GravityMode::sudden: return "sudden";
-    case sph::GravityMode::geostatic_k0: return "geostatic_k0";
-    case sph::GravityMode::ramped: return "ramped";
-  }
-  return "sudden";
-}
-
 void write_model(const SphModelFacts& f, nlohmann::json& report) {
   report["particles"] = f.particles;
   report["soil_particles"] = f.soil_particles;
   report["wall_particles"] = f.wall_particles;
   report["particle_spacing_m"] = f.particle_spacing_m;
   report["smoothing_length_m"] = f.smoothing_length_m;
-  report["kernel"] = kernel_key(f.kernel);
-  report["kernel_gradient"] = f.corrected_gradient ? "corrected" : "standard";
+  report["kernel"] = sphslope::name_of(sph::kernel_names, f.kernel);
+  report["kernel_gradient"] = sphslope::name_of(sph::kernel_gradient_names, f.kernel_gradient);
   report["stress_substeps"] = f.stress_substeps;
   report["p_wave_speed_m_s"] = f.p_wave_speed_m_s;
   report["time_step_estimate_s"] = f.time_step_estimate_s;
   report["planned_steps"] = f.planned_steps;
-  report["gravity"] = gravity_key(f.gravity);
+  report["gravity"] = sphslope::name_of(sph::gravity_mode_names, f.gravity);
   if (f.gravity == sph::GravityMode::ramped) report["gravity_ramp_s"] = f.gravity_ramp_s;
   report["wall_layers"] = f.wall_layers;
   report["memory_estimate_MiB"] = f.memory_estimate_MiB;

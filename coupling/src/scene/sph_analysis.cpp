@@ -145,40 +145,26 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
 
 namespace {
 
-// A setting chosen by name: `out` is set to the named choice; another name is an error listing the allowed ones.
-template <class E>
-void read_choice(JsonReader& r, std::string_view key, const char* what,
-                 std::initializer_list<std::pair<std::string_view, E>> choices, E& out) {
+// A setting chosen by name (its name table): `out` is set to the named choice; another name is an error listing the
+// allowed ones.
+template <class E, std::size_t N>
+void read_choice(JsonReader& r, std::string_view key, const char* what, const sphslope::NameTable<E, N>& names,
+                 E& out) {
   const auto value = r.string(key, Need::optional);
   if (!value) return;
-  std::string allowed;
-  for (const auto& [name, choice] : choices) {
-    if (*value == name) {
-      out = choice;
-      return;
-    }
-    allowed += (allowed.empty() ? "" : ", ") + std::string(name);
+  if (const auto choice = sphslope::value_named(names, *value)) {
+    out = *choice;
+    return;
   }
-  r.diagnostics().error(r.path_of(key),
-                        "unknown " + std::string(what) + " \"" + *value + "\" (allowed: " + allowed + ")");
+  r.diagnostics().error(r.path_of(key), "unknown " + std::string(what) + " \"" + *value +
+                                            "\" (allowed: " + sphslope::names_listed(names) + ")");
 }
 
 void read_choices(JsonReader& r, sph::Settings& s) {
-  read_choice(r, "kernel", "kernel",
-              {{"cubic_spline", sph::KernelType::cubic_spline}, {"wendland_c2", sph::KernelType::wendland_c2}},
-              s.kernel);
-  read_choice(r, "kernel_gradient", "kernel gradient",
-              {{"standard", sph::KernelGradient::standard}, {"corrected", sph::KernelGradient::corrected}},
-              s.kernel_gradient);
-  read_choice(r, "time_integration", "time integration",
-              {{"predictor_corrector", sph::TimeIntegration::predictor_corrector},
-               {"verlet", sph::TimeIntegration::verlet}},
-              s.integration);
-  read_choice(r, "gravity", "gravity mode",
-              {{"sudden", sph::GravityMode::sudden},
-               {"geostatic_k0", sph::GravityMode::geostatic_k0},
-               {"ramped", sph::GravityMode::ramped}},
-              s.gravity_mode);
+  read_choice(r, "kernel", "kernel", sph::kernel_names, s.kernel);
+  read_choice(r, "kernel_gradient", "kernel gradient", sph::kernel_gradient_names, s.kernel_gradient);
+  read_choice(r, "time_integration", "time integration", sph::time_integration_names, s.integration);
+  read_choice(r, "gravity", "gravity mode", sph::gravity_mode_names, s.gravity_mode);
 }
 
 void read_artificial_viscosity(JsonReader& r, sph::Settings& s) {

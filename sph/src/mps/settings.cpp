@@ -9,66 +9,42 @@
 
 namespace sph::mps {
 
-Regularisation regularisation_from(const std::string& key) {
-  if (key == "as_printed") return Regularisation::as_printed;
-  if (key == "consistent") return Regularisation::consistent;
-  throw std::invalid_argument("mps regularisation '" + key + "': expected \"as_printed\" or \"consistent\"");
+namespace {
+
+// The value named `key` in the table; std::invalid_argument naming the setting and the allowed names otherwise.
+template <class E, std::size_t N>
+E value_from(const sphslope::NameTable<E, N>& names, const std::string& key, const char* setting) {
+  if (const auto value = sphslope::value_named(names, key)) return *value;
+  throw std::invalid_argument(std::string("mps ") + setting + " '" + key + "': expected " +
+                              sphslope::names_listed(names, true));
 }
 
-const char* regularisation_key(Regularisation r) {
-  return r == Regularisation::as_printed ? "as_printed" : "consistent";
+}  // namespace
+
+Regularisation regularisation_from(const std::string& key) {
+  return value_from(regularisation_names, key, "regularisation");
 }
+const char* regularisation_key(Regularisation r) { return sphslope::name_of(regularisation_names, r).data(); }
 
 InteractionViscosity interaction_viscosity_from(const std::string& key) {
-  if (key == "harmonic_mean") return InteractionViscosity::harmonic_mean;
-  if (key == "own") return InteractionViscosity::own;
-  throw std::invalid_argument("mps interaction viscosity '" + key + "': expected \"harmonic_mean\" or \"own\"");
+  return value_from(interaction_viscosity_names, key, "interaction viscosity");
 }
-
 const char* interaction_viscosity_key(InteractionViscosity v) {
-  return v == InteractionViscosity::harmonic_mean ? "harmonic_mean" : "own";
+  return sphslope::name_of(interaction_viscosity_names, v).data();
 }
 
 EffectivePressure effective_pressure_from(const std::string& key) {
-  if (key == "smoothed") return EffectivePressure::smoothed;
-  if (key == "hydrostatic") return EffectivePressure::hydrostatic;
-  if (key == "smoothed_thin_layer") return EffectivePressure::smoothed_thin_layer;
-  throw std::invalid_argument("mps effective pressure '" + key +
-                              "': expected \"smoothed\", \"hydrostatic\" or \"smoothed_thin_layer\"");
+  return value_from(effective_pressure_names, key, "effective pressure");
 }
+const char* effective_pressure_key(EffectivePressure p) { return sphslope::name_of(effective_pressure_names, p).data(); }
 
-const char* effective_pressure_key(EffectivePressure p) {
-  switch (p) {
-    case EffectivePressure::smoothed: return "smoothed";
-    case EffectivePressure::hydrostatic: return "hydrostatic";
-    case EffectivePressure::smoothed_thin_layer: return "smoothed_thin_layer";
-  }
-  return "smoothed";
-}
-
-PorePressure pore_pressure_from(const std::string& key) {
-  if (key == "none") return PorePressure::none;
-  if (key == "hydrostatic") return PorePressure::hydrostatic;
-  throw std::invalid_argument("mps pore pressure '" + key + "': expected \"none\" or \"hydrostatic\"");
-}
-
-const char* pore_pressure_key(PorePressure p) { return p == PorePressure::none ? "none" : "hydrostatic"; }
+PorePressure pore_pressure_from(const std::string& key) { return value_from(pore_pressure_names, key, "pore pressure"); }
+const char* pore_pressure_key(PorePressure p) { return sphslope::name_of(pore_pressure_names, p).data(); }
 
 StressDivergence stress_divergence_from(const std::string& key) {
-  if (key == "direct") return StressDivergence::direct;
-  if (key == "indirect") return StressDivergence::indirect;
-  if (key == "full") return StressDivergence::full;
-  throw std::invalid_argument("mps stress divergence '" + key + "': expected \"direct\", \"indirect\" or \"full\"");
+  return value_from(stress_divergence_names, key, "stress divergence");
 }
-
-const char* stress_divergence_key(StressDivergence s) {
-  switch (s) {
-    case StressDivergence::direct: return "direct";
-    case StressDivergence::indirect: return "indirect";
-    case StressDivergence::full: return "full";
-  }
-  return "direct";
-}
+const char* stress_divergence_key(StressDivergence s) { return sphslope::name_of(stress_divergence_names, s).data(); }
 
 std::string sound_speed_problem(double c0, double u_max) {
   if (terms::sound_speed_sufficient(c0, u_max)) return {};

@@ -26,7 +26,7 @@ void Settings::validate() const {
   if (!(cfl <= max_cfl(integration))) {
     std::ostringstream os;
     os << "settings.cfl = " << cfl << " is above " << max_cfl(integration) << ", the largest stable value of the "
-       << (integration == TimeIntegration::verlet ? "verlet" : "predictor_corrector") << " time integration (default "
+       << sphslope::name_of(time_integration_names, integration) << " time integration (default "
        << default_cfl(integration) << "; docs/sph.md, \"Time step\")";
     throw std::invalid_argument(os.str());
   }

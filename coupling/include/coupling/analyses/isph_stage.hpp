@@ -18,7 +18,7 @@ namespace coupling {
 struct IsphStageResult {
   sph::RunSummary summary;
   std::string pressure_mode;  // "explicit" / "iterative"
-  std::string kernel;  // "wendland_c2" / "cubic_spline"
+  std::string kernel;  // its name (sph::kernel_names)
   double particle_spacing = 0, smoothing_length = 0;  // [m]
   std::size_t fluid_particles = 0, wall_particles = 0;
   double fluid_mass_start = 0, fluid_mass_end = 0;  // [kg/m]

@@ -6,9 +6,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "sphslope/names.hpp"
+
 namespace sph {
 
 enum class KernelType { cubic_spline, wendland_c2 };
+// The kernels' names in scene files and reports.
+inline constexpr sphslope::NameTable<KernelType, 2> kernel_names{
+    {{"cubic_spline", KernelType::cubic_spline}, {"wendland_c2", KernelType::wendland_c2}}};
 
 // Monaghan & Lattanzio (1985) cubic B-spline, 2-D normalisation 10/(7 pi h^2):
 //   W = s [1 - 1.5 q^2 + 0.75 q^3] (0 <= q < 1),  s 0.25 (2 - q)^3 (1 <= q < 2),  0 otherwise.

@@ -13,6 +13,10 @@ enum class GravityMode {
   geostatic_k0,  // soil: sigma_yy = -rho g depth below the local free surface, sigma_xx = sigma_zz = K0 sigma_yy
   ramped,  // zero initial stress, gravity grows linearly from 0 to full over gravity_ramp_time
 };
+// The gravity modes' names in scene files and reports.
+inline constexpr sphslope::NameTable<GravityMode, 3> gravity_mode_names{{{"sudden", GravityMode::sudden},
+                                                                       {"geostatic_k0", GravityMode::geostatic_k0},
+                                                                       {"ramped", GravityMode::ramped}}};
 
 struct EngineSettings {
   static constexpr double h_over_dx_min = 1.0;  // allowed range of h / dx

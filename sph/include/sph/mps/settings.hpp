@@ -8,6 +8,7 @@
 #include <string>
 
 #include "sph/engine/settings.hpp"
+#include "sphslope/names.hpp"
 
 namespace sph::mps {
 
@@ -132,19 +133,29 @@ struct Settings : EngineSettings {
   void validate() const;
 };
 
-// "as_printed" / "consistent". Throws std::invalid_argument on other names.
+// The names of each setting's choices in scene files and reports; the _from functions throw std::invalid_argument
+// on other names, naming the allowed ones.
+inline constexpr sphslope::NameTable<Regularisation, 2> regularisation_names{
+    {{"as_printed", Regularisation::as_printed}, {"consistent", Regularisation::consistent}}};
+inline constexpr sphslope::NameTable<InteractionViscosity, 2> interaction_viscosity_names{
+    {{"harmonic_mean", InteractionViscosity::harmonic_mean}, {"own", InteractionViscosity::own}}};
+inline constexpr sphslope::NameTable<EffectivePressure, 3> effective_pressure_names{
+    {{"smoothed", EffectivePressure::smoothed},
+     {"hydrostatic", EffectivePressure::hydrostatic},
+     {"smoothed_thin_layer", EffectivePressure::smoothed_thin_layer}}};
+inline constexpr sphslope::NameTable<PorePressure, 2> pore_pressure_names{
+    {{"none", PorePressure::none}, {"hydrostatic", PorePressure::hydrostatic}}};
+inline constexpr sphslope::NameTable<StressDivergence, 3> stress_divergence_names{
+    {{"direct", StressDivergence::direct}, {"indirect", StressDivergence::indirect}, {"full", StressDivergence::full}}};
+
 Regularisation regularisation_from(const std::string& key);
 const char* regularisation_key(Regularisation r);
-// "smoothed" / "hydrostatic" / "smoothed_thin_layer". Throws std::invalid_argument on other names.
 EffectivePressure effective_pressure_from(const std::string& key);
 const char* effective_pressure_key(EffectivePressure p);
-// "none" / "hydrostatic". Throws std::invalid_argument on other names.
 PorePressure pore_pressure_from(const std::string& key);
 const char* pore_pressure_key(PorePressure p);
-// "direct" / "indirect". Throws std::invalid_argument on other names.
 StressDivergence stress_divergence_from(const std::string& key);
 const char* stress_divergence_key(StressDivergence s);
-// "harmonic_mean" / "own". Throws std::invalid_argument on other names.
 InteractionViscosity interaction_viscosity_from(const std::string& key);
 const char* interaction_viscosity_key(InteractionViscosity v);
 

@@ -40,6 +40,9 @@ enum class TimeIntegration {
   predictor_corrector,  // one rate evaluation per step, rates of the predicted state (Bui et al. 2008)
   verlet,               // kick-drift-kick (Stormer-Verlet): kinematic rates at the half-step velocity, then forces
 };
+// The time integrations' names in scene files and reports.
+inline constexpr sphslope::NameTable<TimeIntegration, 2> time_integration_names{
+    {{"predictor_corrector", TimeIntegration::predictor_corrector}, {"verlet", TimeIntegration::verlet}}};
 
 // The default and the largest accepted cfl of each time integration (docs/sph.md, "Time step"). Verlet: the dispersion
 // relation of the SPH operators bounds the step at cfl ~ 2.0 (h omega_max / c_P = 1.06-1.14 for both kernels and
@@ -60,6 +63,9 @@ int default_stress_substeps(TimeIntegration integration);
 // elsewhere the standard gradient is kept: corrected free-surface particles (down to 0.25) blew up the granular
 // collapse at its front (non-positive density) and changed nothing in the elastic column (docs/accuracy.md).
 enum class KernelGradient { standard, corrected };
+// The kernel gradients' names in scene files and reports.
+inline constexpr sphslope::NameTable<KernelGradient, 2> kernel_gradient_names{
+    {{"standard", KernelGradient::standard}, {"corrected", KernelGradient::corrected}}};
 
 struct Xsph {
   bool enabled = false;
