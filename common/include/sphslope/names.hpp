@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -47,6 +48,13 @@ std::string names_listed(const NameTable<E, N>& table, bool quoted = false) {
     if (quoted) out += '"';
   }
   return out;
+}
+
+// The value named `key`; otherwise std::invalid_argument "<what> '<key>': expected "a" or "b"".
+template <class E, std::size_t N>
+E value_named_or_throw(const NameTable<E, N>& table, const std::string& key, const std::string& what) {
+  if (const auto value = value_named(table, key)) return *value;
+  throw std::invalid_argument(what + " '" + key + "': expected " + names_listed(table, true));
 }
 
 }  // namespace sphslope

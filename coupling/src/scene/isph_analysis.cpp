@@ -22,28 +22,9 @@ void read_numerics(JsonReader& r, sph::fluid::Settings& s) {
   s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, sph::fluid::Settings::max_cfl, true});
   s.max_time_step = r.number_or("max_time_step_s", s.max_time_step, Bounds::non_negative());
   s.solver_tolerance = r.number_or("solver_tolerance", s.solver_tolerance, Bounds::open(0.0, 1.0));
-  if (auto mode = r.string("pressure", Need::optional)) {
-    try {
-      s.pressure_mode = sph::fluid::pressure_mode_from(*mode);
-    } catch (const std::exception&) {
-      r.diagnostics().error(r.path_of("pressure"), "expected \"explicit\" or \"iterative\", got \"" + *mode + "\"");
-    }
-  }
-  if (auto preconditioner = r.string("preconditioner", Need::optional)) {
-    try {
-      s.preconditioner = sph::fluid::preconditioner_from(*preconditioner);
-    } catch (const std::exception&) {
-      r.diagnostics().error(r.path_of("preconditioner"),
-                            "expected \"multigrid\" or \"diagonal\", got \"" + *preconditioner + "\"");
-    }
-  }
-  if (auto solver = r.string("solver", Need::optional)) {
-    try {
-      s.solver = sph::fluid::linear_solver_from(*solver);
-    } catch (const std::exception&) {
-      r.diagnostics().error(r.path_of("solver"), "expected \"cg\" or \"bicgstab\", got \"" + *solver + "\"");
-    }
-  }
+  read_named(r, "pressure", sph::fluid::pressure_mode_names, s.pressure_mode);
+  read_named(r, "preconditioner", sph::fluid::preconditioner_names, s.preconditioner);
+  read_named(r, "solver", sph::fluid::linear_solver_names, s.solver);
   s.wall_layers = static_cast<int>(std::ceil(2.0 * s.h_over_dx - 1e-9));
 }
 

@@ -41,16 +41,19 @@ bool read_polygon_in_tank(JsonReader& r, const Tank& tank, const char* what, std
 // {law: "table", time_s: [...], travel_m: [...]}.
 void read_motion(JsonReader& m, sph::fluid::RigidBody& body) {
   using Motion = sph::fluid::RigidBody::Motion;
-  const auto law = m.string("law", Need::required);
-  if (!law) return;
-  if (*law == "free") {
-    body.motion = Motion::free;
-  } else if (*law == "ln_cosh") {
-    body.motion = Motion::ln_cosh;
+  if (!m.has("law")) {
+    m.string("law", Need::required);  // reports the missing key
+    return;
+  }
+  const std::size_t errors = m.diagnostics().size();
+  read_named(m, "law", sph::fluid::motion_law_names, body.motion);
+  if (m.diagnostics().size() != errors) return;
+  if (body.motion == Motion::free) {
+    // gravity and the fluid's force: nothing more to read
+  } else if (body.motion == Motion::ln_cosh) {
     body.initial_acceleration = m.number("initial_acceleration_m_s2", Need::required, Bounds::positive()).value_or(0);
     body.terminal_speed = m.number("terminal_speed_m_s", Need::required, Bounds::positive()).value_or(0);
-  } else if (*law == "table") {
-    body.motion = Motion::table;
+  } else {  // Motion::table
     const nlohmann::json* t = m.array("time_s", Need::required, 2, limits::polyline_points);
     const nlohmann::json* s = m.array("travel_m", Need::required, 2, limits::polyline_points);
     if (!t || !s) return;
@@ -71,8 +74,6 @@ void read_motion(JsonReader& m, sph::fluid::RigidBody& body) {
       body.table_time.push_back(*tk);
       body.table_travel.push_back(*sk);
     }
-  } else {
-    m.diagnostics().error(m.path_of("law"), "expected \"free\", \"ln_cosh\" or \"table\", got \"" + *law + "\"");
   }
 }
 

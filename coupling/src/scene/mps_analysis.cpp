@@ -16,18 +16,6 @@ namespace {
 constexpr SizeLimit materials_limit{100, "materials", "each block names one of them"};
 constexpr SizeLimit profile_times_limit{1000, "times", "each time writes one profile of the whole tank"};
 
-// An optional string key naming one of a setting's choices (its name table); another name is an error listing them.
-template <class Choice, std::size_t N>
-void read_choice(JsonReader& r, const char* key, const sphslope::NameTable<Choice, N>& names, Choice& target) {
-  const auto name = r.string(key, Need::optional);
-  if (!name) return;
-  if (const auto value = sphslope::value_named(names, *name)) {
-    target = *value;
-    return;
-  }
-  r.diagnostics().error(r.path_of(key), "expected " + sphslope::names_listed(names, true) + ", got \"" + *name + "\"");
-}
-
 void read_numerics(JsonReader& r, sph::mps::Settings& s) {
   using Settings = sph::mps::Settings;
   if (auto v = r.number("particle_spacing_m", Need::required, Bounds::positive())) s.particle_spacing = *v;
@@ -41,11 +29,11 @@ void read_numerics(JsonReader& r, sph::mps::Settings& s) {
   s.pressure_split = r.number_or("pressure_split", s.pressure_split, Bounds::closed(0.0, 1.0));
   s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, sph::mps::Settings::max_cfl, true});
   s.output_interval = r.number_or("output_interval_s", s.output_interval, Bounds::non_negative());
-  read_choice(r, "regularisation", sph::mps::regularisation_names, s.regularisation);
-  read_choice(r, "effective_pressure", sph::mps::effective_pressure_names, s.effective_pressure);
-  read_choice(r, "pore_pressure", sph::mps::pore_pressure_names, s.pore_pressure);
-  read_choice(r, "stress_divergence", sph::mps::stress_divergence_names, s.stress_divergence);
-  read_choice(r, "interaction_viscosity", sph::mps::interaction_viscosity_names, s.interaction_viscosity);
+  read_named(r, "regularisation", sph::mps::regularisation_names, s.regularisation);
+  read_named(r, "effective_pressure", sph::mps::effective_pressure_names, s.effective_pressure);
+  read_named(r, "pore_pressure", sph::mps::pore_pressure_names, s.pore_pressure);
+  read_named(r, "stress_divergence", sph::mps::stress_divergence_names, s.stress_divergence);
+  read_named(r, "interaction_viscosity", sph::mps::interaction_viscosity_names, s.interaction_viscosity);
 }
 
 // One material: {name, type: "granular", consistency_Pa_sN, flow_index, regularisation_growth_s,

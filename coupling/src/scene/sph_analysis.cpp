@@ -178,17 +178,7 @@ void read_artificial_viscosity(JsonReader& r, sph::Settings& s) {
 void read_artificial_stress(JsonReader& r, sph::Settings& s) {
   auto stress = r.object("artificial_stress", Need::optional);
   if (!stress) return;
-  if (const auto mode = stress->string("mode", Need::optional)) {
-    if (*mode == "auto") {
-      s.artificial_stress.mode = sph::ArtificialStressMode::automatic;
-    } else if (*mode == "on") {
-      s.artificial_stress.mode = sph::ArtificialStressMode::on;
-    } else if (*mode == "off") {
-      s.artificial_stress.mode = sph::ArtificialStressMode::off;
-    } else {
-      r.diagnostics().error(stress->path_of("mode"), "unknown mode \"" + *mode + "\" (allowed: auto, on, off)");
-    }
-  }
+  read_choice(*stress, "mode", "mode", sph::artificial_stress_mode_names, s.artificial_stress.mode);
   s.artificial_stress.epsilon = stress->number_or("epsilon", s.artificial_stress.epsilon, Bounds::closed(0.0, 1.0));
   s.artificial_stress.exponent = stress->number_or("exponent", s.artificial_stress.exponent, Bounds::positive());
   stress->finish();

@@ -6,33 +6,20 @@
 namespace sph::fluid {
 
 PressureMode pressure_mode_from(const std::string& key) {
-  if (key == "explicit") return PressureMode::explicit_jacobi;
-  if (key == "iterative") return PressureMode::iterative;
-  throw std::invalid_argument("pressure mode '" + key + "': expected \"explicit\" or \"iterative\"");
+  return sphslope::value_named_or_throw(pressure_mode_names, key, "pressure mode");
 }
-
-const char* pressure_mode_key(PressureMode mode) {
-  return mode == PressureMode::explicit_jacobi ? "explicit" : "iterative";
-}
+const char* pressure_mode_key(PressureMode mode) { return sphslope::name_of(pressure_mode_names, mode).data(); }
 
 LinearSolver linear_solver_from(const std::string& key) {
-  if (key == "cg") return LinearSolver::conjugate_gradient;
-  if (key == "bicgstab") return LinearSolver::bicgstab;
-  throw std::invalid_argument("linear solver '" + key + "': expected \"cg\" or \"bicgstab\"");
+  return sphslope::value_named_or_throw(linear_solver_names, key, "linear solver");
 }
-
-const char* linear_solver_key(LinearSolver solver) {
-  return solver == LinearSolver::conjugate_gradient ? "cg" : "bicgstab";
-}
+const char* linear_solver_key(LinearSolver solver) { return sphslope::name_of(linear_solver_names, solver).data(); }
 
 Preconditioner preconditioner_from(const std::string& key) {
-  if (key == "diagonal") return Preconditioner::diagonal;
-  if (key == "multigrid") return Preconditioner::multigrid;
-  throw std::invalid_argument("preconditioner '" + key + "': expected \"diagonal\" or \"multigrid\"");
+  return sphslope::value_named_or_throw(preconditioner_names, key, "preconditioner");
 }
-
 const char* preconditioner_key(Preconditioner preconditioner) {
-  return preconditioner == Preconditioner::diagonal ? "diagonal" : "multigrid";
+  return sphslope::name_of(preconditioner_names, preconditioner).data();
 }
 
 Settings::Settings() {

@@ -11,12 +11,9 @@ namespace sph::mps {
 
 namespace {
 
-// The value named `key` in the table; std::invalid_argument naming the setting and the allowed names otherwise.
 template <class E, std::size_t N>
 E value_from(const sphslope::NameTable<E, N>& names, const std::string& key, const char* setting) {
-  if (const auto value = sphslope::value_named(names, key)) return *value;
-  throw std::invalid_argument(std::string("mps ") + setting + " '" + key + "': expected " +
-                              sphslope::names_listed(names, true));
+  return sphslope::value_named_or_throw(names, key, std::string("mps ") + setting);
 }
 
 }  // namespace

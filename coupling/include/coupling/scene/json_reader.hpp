@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/scene/input_limits.hpp"
+#include "sphslope/names.hpp"
 
 namespace coupling {
 
@@ -132,5 +133,18 @@ std::optional<std::pair<double, double>> read_pair(const nlohmann::json& value, 
 
 // Closest string within edit distance 2 (case-insensitive), for "did you mean" hints; empty if none.
 std::string closest_match(std::string_view word, const std::vector<std::string>& candidates);
+
+// An optional string key naming one of a setting's choices (its name table): `target` is set to the named one;
+// another name is an error "expected "a" or "b", got "c"".
+template <class Choice, std::size_t N>
+void read_named(JsonReader& r, const char* key, const sphslope::NameTable<Choice, N>& names, Choice& target) {
+  const auto name = r.string(key, Need::optional);
+  if (!name) return;
+  if (const auto value = sphslope::value_named(names, *name)) {
+    target = *value;
+    return;
+  }
+  r.diagnostics().error(r.path_of(key), "expected " + sphslope::names_listed(names, true) + ", got \"" + *name + "\"");
+}
 
 }  // namespace coupling

@@ -38,6 +38,10 @@ struct RigidBody {
   // The prescribed travel and speed at time t (table and ln_cosh; stop_travel not applied) [m], [m/s].
   void prescribed(double t, double& travel, double& speed) const;
 };
+// The motion laws' names in scene files (bodies[i].motion.law).
+inline constexpr sphslope::NameTable<RigidBody::Motion, 3> motion_law_names{{{"free", RigidBody::Motion::free},
+                                                                            {"ln_cosh", RigidBody::Motion::ln_cosh},
+                                                                            {"table", RigidBody::Motion::table}}};
 
 struct Model {
   explicit Model(const Settings& s);

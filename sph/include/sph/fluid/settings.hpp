@@ -9,6 +9,7 @@
 #include <string>
 
 #include "sph/engine/settings.hpp"
+#include "sphslope/names.hpp"
 
 namespace sph::fluid {
 
@@ -85,12 +86,19 @@ struct Settings : EngineSettings {
   void validate() const;
 };
 
-// "explicit" / "iterative"; "cg" / "bicgstab". Throws std::invalid_argument on other names.
+// The names of the choices in scene files and reports; the _from functions throw std::invalid_argument on other
+// names, naming the allowed ones.
+inline constexpr sphslope::NameTable<PressureMode, 2> pressure_mode_names{
+    {{"explicit", PressureMode::explicit_jacobi}, {"iterative", PressureMode::iterative}}};
+inline constexpr sphslope::NameTable<LinearSolver, 2> linear_solver_names{
+    {{"cg", LinearSolver::conjugate_gradient}, {"bicgstab", LinearSolver::bicgstab}}};
+inline constexpr sphslope::NameTable<Preconditioner, 2> preconditioner_names{
+    {{"diagonal", Preconditioner::diagonal}, {"multigrid", Preconditioner::multigrid}}};
+
 PressureMode pressure_mode_from(const std::string& key);
 const char* pressure_mode_key(PressureMode mode);
 LinearSolver linear_solver_from(const std::string& key);
 const char* linear_solver_key(LinearSolver solver);
-// "diagonal" / "multigrid".
 Preconditioner preconditioner_from(const std::string& key);
 const char* preconditioner_key(Preconditioner preconditioner);
 

@@ -22,6 +22,9 @@ enum class WallSlip {
 };
 
 enum class ArtificialStressMode { off, on, automatic /* on iff some plastic material has cohesion > 0 */ };
+// The modes' names in scene files (analyses.sph.artificial_stress.mode).
+inline constexpr sphslope::NameTable<ArtificialStressMode, 3> artificial_stress_mode_names{
+    {{"auto", ArtificialStressMode::automatic}, {"on", ArtificialStressMode::on}, {"off", ArtificialStressMode::off}}};
 
 struct ArtificialViscosity {
   double alpha = 0.1;  // Monaghan alpha_Pi (Bui et al. 2008 used 0.1 for soil)
