@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "lem_checks.hpp"
@@ -161,12 +162,36 @@ TEST_CASE("Hammah et al. (2005) Example 1: a Hoek-Brown rock slope, 10 m high at
   // GSI = 5, m_i = 2, D = 0, gamma = 25 kN/m^3; limit equilibrium (Slide) Bishop 1.153, Spencer 1.152. The paper
   // gives neither the foundation depth nor the lateral extent: 5 m of foundation and 20 m of level ground on each
   // side here (the xslope project's verification, with 5 m, finds Bishop 1.150 and Spencer 1.152). 1 % against the
-  // paper.
-  const slope::Section s = simple_slope(10.0, 45.0, 20.0, 20.0, 5.0, hammah_rock());
+  // paper (measured 2026-11-29: 1.155, 1.156).
+  slope::Section s = simple_slope(10.0, 45.0, 20.0, 20.0, 5.0, hammah_rock());
   const std::vector<slope::Method> methods{slope::Method::bishop, slope::Method::spencer};
   const slope::SearchResult r = slope::search_critical(s, methods, slope::SearchOptions{});
   CHECK(searched(r, slope::Method::bishop) == Approx(1.153).epsilon(0.01));
   CHECK(searched(r, slope::Method::spencer) == Approx(1.152).epsilon(0.01));
+  // With the paper's rounded m_b = 0.067, s = 2.5e-5, a = 0.619 in place of those from GSI (0.0672, 2.60e-5, 0.6192).
+  s.materials[0].envelope->hoek_brown = slope::HoekBrown{30e6, 0.067, 2.5e-5, 0.619};
+  const slope::SearchResult rounded = slope::search_critical(s, methods, slope::SearchOptions{});
+  CHECK(searched(rounded, slope::Method::bishop) == Approx(1.153).epsilon(0.01));
+  CHECK(searched(rounded, slope::Method::spencer) == Approx(1.152).epsilon(0.01));
+}
+
+TEST_CASE("a Rankine tension crack in a material with an envelope takes the envelope's tangent at zero normal stress",
+          "[slope][strength]") {
+  // Rankine's depth 2 c / (gamma sqrt(Ka)), Ka = tan^2(45 deg - phi/2), with c and phi the tangent to the
+  // Hoek-Brown envelope at sigma_n' = 0 (strength.hpp), on a planar surface from the crest to the toe.
+  const slope::Section s = simple_slope(10.0, 45.0, 20.0, 20.0, 5.0, hammah_rock());
+  const slope::EnvelopePoint at_zero = slope::envelope_at(*s.materials[0].envelope, 0.0);
+  const double c = at_zero.shear, phi = std::atan(at_zero.slope);
+  const double expected = 2.0 * c / (25e3 * std::tan(M_PI / 4.0 - phi / 2.0));
+  REQUIRE(expected > 0.5);
+  slope::SlipPolyline surface;
+  surface.points = {{10.0, 15.0}, {30.0, 5.0}};
+  surface.tension_crack = slope::TensionCrack{std::nullopt, false};
+  std::string reason;
+  const auto mass = slope::slice_polyline(s, surface, slope::SliceOptions{}, &reason);
+  INFO(reason);
+  REQUIRE(mass);
+  CHECK(mass->crack_depth == Approx(expected).epsilon(1e-12));
 }
 
 TEST_CASE("Charles & Soares / Jiang, Baker & Yamagami: a power-curve soil, tau = 1.4 sigma'^0.8 kPa, with r_u = 0.3",
