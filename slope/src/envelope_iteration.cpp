@@ -25,8 +25,8 @@ bool has_envelope(const SliceTable& t, int i) {
 void apply_envelopes(SliceTable& t, const std::vector<double>& sigma, std::vector<double>& hints) {
   for (int i = 0; i < t.count; ++i) {
     if (!has_envelope(t, i)) continue;
-    const EnvelopePoint p =
-        envelope_at((*t.envelopes)[static_cast<std::size_t>(t.envelope[i])], sigma[i], &hints[static_cast<std::size_t>(i)]);
+    const auto k = static_cast<std::size_t>(i);
+    const EnvelopePoint p = envelope_at((*t.envelopes)[static_cast<std::size_t>(t.envelope[i])], sigma[i], &hints[k]);
     t.tan_phi[i] = p.slope;
     t.cohesion[i] = p.shear - sigma[i] * p.slope;
     t.cohesion_force[i] = t.cohesion[i] * t.base_length[i];

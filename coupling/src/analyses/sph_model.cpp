@@ -205,8 +205,8 @@ bool sph_carries(const SphAnalysis& analysis, const char* load) {
   return std::find(ignored.begin(), ignored.end(), load) == ignored.end();
 }
 
-// A particle's density (kg/m^3): its material's saturated unit weight / g below the piezometric line where the
-// material has one and the SPH analysis carries the water, its unit weight / g elsewhere.
+// The density of a particle (kg/m^3): the saturated unit weight of its material / g below the piezometric line
+// where the material has one and the SPH analysis carries the water, its unit weight / g elsewhere.
 double particle_density(const SoilMaterial& material, const slope::Section& section, bool water_carried, double x,
                         double y) {
   if (water_carried && section.water && material.saturated_unit_weight &&
