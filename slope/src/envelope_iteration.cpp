@@ -33,9 +33,8 @@ void apply_envelopes(SliceTable& t, const std::vector<double>& sigma, std::vecto
   }
 }
 
-}  // namespace
-
-Outcome solve_row(const MethodRow& row, SliceTable& t, MethodWorkspace& ws, double guess) {
+// The row's solution with the envelopes' tangents at the solution's own normal stresses.
+Outcome solve_envelopes(const MethodRow& row, SliceTable& t, MethodWorkspace& ws, double guess) {
   if (!t.has_envelopes) return row.solve(t, ws, guess);
   std::vector<double>& sigma = ws.envelope_normal;
   sigma.assign(static_cast<std::size_t>(t.count), 0.0);
@@ -71,6 +70,49 @@ Outcome solve_row(const MethodRow& row, SliceTable& t, MethodWorkspace& ws, doub
   out.failure = Failure::not_converged;
   out.iterations = solver_iterations;
   return out;
+}
+
+// Passive reinforcement enters divided by the factor of safety: G(F) is the row's solution with the passive forces
+// scaled by 1 / F, and the factor of safety is the fixed point F = G(F), found by the secant method on G(F) - F
+// from two plain iterations (G changes slowly with F: the passive forces are a part of the resistance).
+Outcome solve_passive(const MethodRow& row, SliceTable& t, MethodWorkspace& ws, double guess) {
+  constexpr int maximum_passes = 60;
+  int solver_iterations = 0;
+  Outcome out;
+  auto solution_at = [&](double F) {
+    t.passive_scale = 1.0 / F;
+    t.compute_loads();
+    out = solve_envelopes(row, t, ws, F);
+    solver_iterations += out.iterations;
+    return out.ok() ? out.factor_of_safety - F : std::numeric_limits<double>::quiet_NaN();
+  };
+  double x0 = std::isfinite(guess) && guess > 0.0 ? guess : 1.0;
+  double r0 = solution_at(x0);
+  if (!out.ok()) return out;
+  double x1 = out.factor_of_safety;
+  for (int pass = 1; pass < maximum_passes; ++pass) {
+    const double r1 = solution_at(x1);
+    if (!out.ok()) return out;
+    if (std::fabs(r1) <= 1e-11 * x1) {
+      out.iterations = solver_iterations;
+      return out;
+    }
+    double next = r1 != r0 ? x1 - r1 * (x1 - x0) / (r1 - r0) : out.factor_of_safety;
+    if (!(next > 0.0) || !std::isfinite(next)) next = out.factor_of_safety;
+    x0 = x1;
+    r0 = r1;
+    x1 = next;
+  }
+  out.failure = Failure::not_converged;
+  out.iterations = solver_iterations;
+  return out;
+}
+
+}  // namespace
+
+Outcome solve_row(const MethodRow& row, SliceTable& t, MethodWorkspace& ws, double guess) {
+  if (t.has_passive_supports) return solve_passive(row, t, ws, guess);
+  return solve_envelopes(row, t, ws, guess);
 }
 
 }  // namespace slope::detail

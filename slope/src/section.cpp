@@ -134,6 +134,9 @@ std::string section_error(const Section& section) {
     if (!(s.to_x > s.from_x)) return "a surcharge needs from_x < to_x";
   }
   if (!std::isfinite(section.seismic_coefficient)) return "the seismic coefficient must be finite";
+  for (std::size_t k = 0; k < section.reinforcement.size(); ++k)
+    if (std::string why = reinforcement_error(section.reinforcement[k]); !why.empty())
+      return "reinforcement element " + std::to_string(k) + ": " + why;
   return {};
 }
 

@@ -47,6 +47,7 @@ void SliceTable::compute_loads() {
   if (!circular) {
     compute_polyline_arms();
     add_crack_force();
+    add_support_forces();
     return;
   }
   const double xc = circle.xc;
@@ -61,6 +62,7 @@ void SliceTable::compute_loads() {
   }
   total_drive_moment = total;
   drive_moment_scale = scale;
+  add_support_forces();
 }
 
 // As the circle's loop above, about the moment point (xc, yc) of a polyline: the base normal N and shear S of slice
@@ -106,6 +108,7 @@ void table_to_mass(const SliceTable& t, SlipMass& mass) {
   mass.entry = t.entry;
   mass.exit = t.exit;
   mass.direction = t.direction;
+  mass.supports = t.supports;
   mass.slices.resize(static_cast<std::size_t>(t.count));
   if (t.has_envelopes) {
     mass.envelopes = *t.envelopes;
@@ -150,6 +153,8 @@ void mass_to_table(const SlipMass& mass, SliceTable& t) {
   t.exit = mass.exit;
   t.direction = mass.direction >= 0 ? 1 : -1;
   t.envelopes = &mass.envelopes;
+  t.supports = mass.supports;
+  t.passive_scale = 1.0;
   double max_depth = 0.0;
   for (int i = 0; i < n; ++i) {
     const Slice& s = mass.slices[static_cast<std::size_t>(i)];

@@ -54,6 +54,12 @@ struct SliceTable {
   std::vector<int> envelope;
   const std::vector<StrengthEnvelope>* envelopes = nullptr;
   bool has_envelopes = false;
+  // Reinforcement (slope/reinforcement.hpp): the forces of the elements this surface crosses (find_support_crossings).
+  // compute_loads adds each to its slice's loads, a passive one times passive_scale (1 / F: solve_row iterates on
+  // it); has_passive_supports: some force is passive (compute_loads).
+  std::vector<SupportForce> supports;
+  double passive_scale = 1.0;
+  bool has_passive_supports = false;
   // derived, per slice
   std::vector<double> cohesion_force;  // c' l
   std::vector<double> pore_force;      // U = u l
@@ -75,7 +81,12 @@ struct SliceTable {
   void compute_polyline_arms();  // shear and normal arms about a moment point (polylines)
   double shared_loads(int i, double dir, double& scale);  // the loads and driving moment a circle and a polyline share
   void add_crack_force();        // the water thrust of a crack on the upslope slice
+  void add_support_forces();     // the reinforcement's forces (reinforcement.cpp)
 };
+
+// The crossings of the elements with the table's slip surface (circle or polyline, between the mass's ends), each
+// element at its first crossing from its head, into table.supports. Call after the slices are filled.
+void find_support_crossings(const std::vector<Reinforcement>& elements, SliceTable& table);
 
 // Section data arranged for fast repeated slicing.
 struct PreparedSection {
@@ -102,6 +113,7 @@ struct PreparedSection {
   double water_unit_weight = 0.0;
   std::vector<Surcharge> surcharges;
   double seismic_coefficient = 0.0;
+  std::vector<Reinforcement> reinforcement;
   // x where a slice must end whatever the circle: surcharge ends and where the piezometric line crosses the ground
   // (the edge of ponded water). Vertices are not among them: the slices integrate the lines exactly.
   std::vector<double> fixed_breaks;

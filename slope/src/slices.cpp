@@ -112,6 +112,7 @@ PreparedSection::PreparedSection(const Section& section) {
     fixed_breaks.push_back(s.to_x);
   }
   seismic_coefficient = section.seismic_coefficient;
+  reinforcement = section.reinforcement;
   std::sort(fixed_breaks.begin(), fixed_breaks.end());
   fixed_breaks.erase(std::unique(fixed_breaks.begin(), fixed_breaks.end()), fixed_breaks.end());
 }
@@ -348,6 +349,8 @@ void Slicer::fill_slices(const Circle& circle, int dir, SliceTable& table) {
   table.surface.clear();
   table.crack_depth = table.crack_force = table.crack_force_y = table.chord_depth = 0.0;
   fill_from_bounds(dir, table, &circle);
+  find_support_crossings(ps.reinforcement, table);
+  table.passive_scale = 1.0;
   table.compute_loads();
 }
 

@@ -7,14 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "slope/point.hpp"
+#include "slope/reinforcement.hpp"
 #include "slope/strength.hpp"
 
 namespace slope {
-
-struct Point {
-  double x = 0.0;  // m
-  double y = 0.0;  // m
-};
 
 struct Material {
   std::string name;
@@ -70,6 +67,7 @@ struct Section {
   std::optional<Water> water;
   std::vector<Surcharge> surcharges;
   double seismic_coefficient = 0.0;  // horizontal pseudo-static coefficient kh (force kh*W out of the slope)
+  std::vector<Reinforcement> reinforcement;  // nails, anchors, geosynthetics, piles (reinforcement.hpp)
 
   double x_min() const;  // m, left end of the section
   double x_max() const;  // m, right end of the section

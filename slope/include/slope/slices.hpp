@@ -60,6 +60,9 @@ struct SlipMass {
   double crack_depth = 0.0;       // m, depth of the tension crack at the upper end (0: no crack)
   double crack_water_force = 0.0; // N/m, hydrostatic thrust of a water-filled crack, horizontal, toward sliding
   double crack_water_force_y = 0.0;  // m, height of its line of action (a third of the crack above its bottom)
+  // The reinforcement elements the slip surface crosses (Section::reinforcement), each at its first crossing from
+  // its head, with the force it puts on the mass there.
+  std::vector<SupportForce> supports;
 };
 
 // A vertical tension crack at the upper end of a slip surface (LE practice, e.g. Duncan & Wright 2005, Soil
