@@ -528,12 +528,80 @@ TEST_CASE("scene: each setting's names come from one table that the docs list", 
   check_names("solver", sph::fluid::linear_solver_names);
   check_names("preconditioner", sph::fluid::preconditioner_names);
   check_names("motion", sph::fluid::motion_law_names);
+  check_names("type", slope::support_type_names);
+  check_names("direction", slope::support_direction_names);
+  check_names("application", slope::support_application_names);
   // The reader's message lists the same names.
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water_sph.json"));
   scene["analyses"]["sph"]["kernel"] = "gaussian";
   CHECK_THROWS_WITH(parse_scene(scene.dump()),
                     Catch::Contains("analyses.sph.kernel: unknown kernel \"gaussian\" (allowed: " +
                                     sphslope::names_listed(sph::kernel_names) + ")"));
+}
+
+TEST_CASE("scene: reinforcement is read in kN and kN/m with its type's defaults, and left out of SPH",
+          "[scene][reinforcement]") {
+  // docs/scene-format.md, section.reinforcement[i].
+  const fs::path file = fs::path(test_paths::source_dir()) / "cases/duncan_wright_2005_geogrids.json";
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(file));
+  const slope::Section read = parse_scene(scene.dump()).section->section;
+  REQUIRE(read.reinforcement.size() == 5);
+  const slope::Reinforcement& grid = read.reinforcement[4];
+  CHECK(grid.type == slope::SupportType::geosynthetic);
+  CHECK(grid.tail.x == Approx(7.62 + 6.096).epsilon(1e-12));  // length_m and inclination 0, into the slope (+x)
+  CHECK(grid.tail.y == Approx(6.096).epsilon(1e-12));
+  CHECK(grid.tensile_capacity == Approx(11675.0).epsilon(1e-12));
+  CHECK(grid.direction == slope::SupportDirection::along);
+  CHECK(grid.application == slope::SupportApplication::active);
+  // a nail with only its capacity: passive, along, the head as strong as the nail, no pull-out limit
+  nlohmann::json& elements = scene["section"]["reinforcement"];
+  elements[0] = {{"type", "soil_nail"}, {"head_m", {2.0, 1.6}}, {"length_m", 5.0}, {"inclination_deg", 15.0},
+                 {"tensile_capacity_kN", 90.0}, {"spacing_m", 1.5}};
+  const slope::Reinforcement nail = parse_scene(scene.dump()).section->section.reinforcement[0];
+  CHECK(nail.application == slope::SupportApplication::passive);
+  CHECK(nail.direction == slope::SupportDirection::along);
+  CHECK(nail.head_capacity == 90e3);
+  CHECK(std::isinf(nail.bond_strength));
+  CHECK(nail.tail.y == Approx(1.6 - 5.0 * std::sin(15.0 * degree)).epsilon(1e-12));
+  CHECK(slope::capacity_at(nail, 1.0) / nail.spacing == Approx(60e3).epsilon(1e-12));
+  // a tieback: its bond length at the tail
+  elements[0] = {{"type", "tieback"}, {"head_m", {2.0, 1.6}}, {"tail_m", {12.0, 1.6}}, {"tensile_capacity_kN", 200.0},
+                 {"bond_strength_kN_m", 40.0}, {"bond_length_m", 4.0}};
+  const slope::Reinforcement tieback = parse_scene(scene.dump()).section->section.reinforcement[0];
+  CHECK(tieback.bond_start == Approx(6.0).epsilon(1e-12));
+  CHECK(slope::capacity_at(tieback, 3.0) == Approx(160e3).epsilon(1e-12));
+  // faults, each at its path
+  auto fails_with = [&](nlohmann::json element, const std::string& message) {
+    nlohmann::json bad = scene;
+    bad["section"]["reinforcement"][1] = std::move(element);
+    CHECK_THROWS_WITH(parse_scene(bad.dump()), Catch::Contains(message));
+  };
+  fails_with({{"type", "anchor"}, {"head_m", {2, 1.6}}, {"tail_m", {9, 1.6}}, {"tensile_capacity_kN", 9}},
+             "section.reinforcement[1].type: expected \"soil_nail\", \"tieback\", \"end_anchored\", \"geosynthetic\" or "
+             "\"pile\", got \"anchor\"");
+  fails_with({{"type", "soil_nail"}, {"head_m", {2, 1.6}}, {"tensile_capacity_kN", 9}},
+             "section.reinforcement[1]: give the element's other end");
+  fails_with({{"type", "tieback"}, {"head_m", {2, 1.6}}, {"tail_m", {9, 1.6}}, {"tensile_capacity_kN", 9},
+              {"bond_strength_kN_m", 10}},
+             "section.reinforcement[1].bond_length_m");
+  fails_with({{"type", "tieback"}, {"head_m", {2, 1.6}}, {"tail_m", {9, 1.6}}, {"tensile_capacity_kN", 9},
+              {"bond_strength_kN_m", 10}, {"bond_length_m", 8}},
+             "section.reinforcement[1].bond_length_m: must be at most the element's length, 7 m");
+  fails_with({{"type", "pile"}, {"head_m", {2, 1.6}}, {"tail_m", {2, -1}}, {"tensile_capacity_kN", 9}},
+             "section.reinforcement[1].shear_capacity_kN");
+  fails_with({{"type", "pile"}, {"head_m", {2, 1.6}}, {"tail_m", {2, -1}}, {"shear_capacity_kN", 9},
+              {"direction", "along"}},
+             "section.reinforcement[1]: a pile's shear acts tangent");
+  fails_with({{"type", "soil_nail"}, {"head_m", {2, 1.6}}, {"tail_m", {90, 1.6}}, {"tensile_capacity_kN", 9}},
+             "section.reinforcement[1]: must lie on the section");
+  // SPH has no structural elements: the run says so, at the path
+  scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 1.0}};
+  scene["section"]["materials"][0]["youngs_modulus_MPa"] = 50.0;
+  scene["section"]["materials"][0]["poisson_ratio"] = 0.3;
+  const auto left_out = coupling::loads_sph_leaves_out(parse_scene(scene.dump()));
+  REQUIRE(left_out.size() == 1);
+  CHECK(left_out[0].path == "section.reinforcement");
+  CHECK_THAT(left_out[0].name, Catch::Contains("5 reinforcement elements"));
 }
 
 TEST_CASE("scene: k_h on a section level at both ends is refused for SPH (no direction)", "[scene][sph]") {

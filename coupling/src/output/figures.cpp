@@ -13,6 +13,7 @@ namespace coupling {
 
 namespace {
 
+const char* const kReinforcementColour = "#006400";
 const char* const kMethodColours[] = {"#d62728", "#1f77b4", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
 struct PlotBounds {
@@ -46,6 +47,10 @@ void draw_section(SvgCanvas& canvas, const slope::Section& section) {
     canvas.polyline(section.profile_lines[k].points, "#333", k == 0 ? 1.8 : 1.0, k == 0 ? "" : "5,3");
   canvas.polyline({{section.x_min(), section.bottom_y}, {section.x_max(), section.bottom_y}}, "#333", 2.5);
   if (section.water) canvas.polyline(section.water->piezometric_line, "#1f77b4", 1.5, "8,4");
+  for (const slope::Reinforcement& e : section.reinforcement) {
+    canvas.polyline({e.head, e.tail}, kReinforcementColour, 2.5);
+    canvas.dot(e.head.x, e.head.y, 2.5, kReinforcementColour);
+  }
 }
 
 }  // namespace
@@ -77,6 +82,8 @@ std::string section_figure_svg(const SectionFigureData& data) {
     canvas.colour_bar(0.0, top, "accumulated plastic strain (-)");
   }
   if (data.section) legend.emplace_back("#333", "", "initial ground surface");
+  if (data.section && !data.section->reinforcement.empty())
+    legend.emplace_back(kReinforcementColour, "", "reinforcement (dot: head)");
   if (!data.final_ground.empty()) {
     canvas.polyline(data.final_ground, "#000", 2.0, "2,2");
     legend.emplace_back("#000", "2,2", "final ground surface");

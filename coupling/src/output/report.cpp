@@ -85,6 +85,28 @@ nlohmann::json surface_report(const slope::SlipMass& mass) {
   return s;
 }
 
+// The reinforcement elements the surface crosses, each with the force it puts on the mass at the solution (its
+// capacity there, divided by F when passive).
+nlohmann::json supports_report(const slope::Section& section, const slope::SlipMass& mass, double factor_of_safety) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const slope::SupportForce& f : mass.supports) {
+    const slope::Reinforcement& e = section.reinforcement.at(f.element);
+    const double share = f.passive ? 1.0 / factor_of_safety : 1.0;
+    list.push_back({{"element", f.element},
+                    {"type", std::string(sphslope::name_of(slope::support_type_names, e.type))},
+                    {"direction", std::string(sphslope::name_of(slope::support_direction_names, e.direction))},
+                    {"application", std::string(sphslope::name_of(slope::support_application_names, e.application))},
+                    {"crossing_m", point_json(f.at)},
+                    {"distance_from_head_m", f.distance},
+                    {"slice_from_left", f.slice + 1},
+                    {"capacity_kN_m", f.capacity * to_kilo},
+                    {"force_kN_m", f.capacity * share * to_kilo},
+                    {"force_x_kN_m", f.force_x * share * to_kilo},
+                    {"force_y_kN_m", f.force_y * share * to_kilo}});
+  }
+  return list;
+}
+
 }  // namespace
 
 std::string_view program_version() { return SPHSLOPE_VERSION; }
@@ -120,6 +142,7 @@ nlohmann::json method_report(const slope::Section& section, const slope::Critica
     slices.push_back(slice_report(section, mass, mass.slices[i], with_forces ? &result.forces[i] : nullptr));
   }
   m["slices"] = std::move(slices);
+  if (!section.reinforcement.empty()) m["reinforcement"] = supports_report(section, mass, *result.factor_of_safety);
   return m;
 }
 

@@ -122,6 +122,30 @@ std::string materials_table(const slope::Section& s) {
   return out.str();
 }
 
+// The reinforcement elements: where they are, their capacity and how their force acts. The force each puts on a
+// method's critical surface is in report.json (lem.methods.<method>.reinforcement).
+std::string reinforcement_table(const slope::Section& s) {
+  if (s.reinforcement.empty()) return {};
+  std::ostringstream out;
+  out << "<table><tr><th class=\"l\">reinforcement</th><th>head (x, y) m</th><th>tail (x, y) m</th>"
+         "<th>capacity (kN)</th><th>spacing (m)</th><th class=\"l\">force</th></tr>\n";
+  char cells[320];
+  for (std::size_t k = 0; k < s.reinforcement.size(); ++k) {
+    const slope::Reinforcement& e = s.reinforcement[k];
+    const bool pile = e.type == slope::SupportType::pile;
+    std::snprintf(cells, sizeof cells, "<td>(%.2f, %.2f)</td><td>(%.2f, %.2f)</td><td>%.1f%s</td><td>%.2f</td>",
+                  e.head.x, e.head.y, e.tail.x, e.tail.y, (pile ? e.shear_capacity : e.tensile_capacity) / 1e3,
+                  pile ? " shear" : "", e.spacing);
+    out << "<tr><td class=\"l\">" << k << ": " << sphslope::name_of(slope::support_type_names, e.type) << "</td>"
+        << cells << "<td class=\"l\">" << sphslope::name_of(slope::support_direction_names, e.direction) << ", "
+        << sphslope::name_of(slope::support_application_names, e.application)
+        << (e.application == slope::SupportApplication::passive ? " (divided by F)" : " (not divided by F)")
+        << "</td></tr>\n";
+  }
+  out << "</table>\n";
+  return out.str();
+}
+
 std::string geometry_lines(const slope::Section& s) {
   double top = s.bottom_y, low = 1e300;
   for (const slope::Point& p : s.profile_lines.front().points) {
@@ -190,7 +214,8 @@ std::string scene_summary(const Scene& scene, const RunResults& results) {
   std::ostringstream out;
   out << "<h2>Scene</h2>\n";
   if (scene.section) {
-    out << geometry_lines(scene.section->section) << materials_table(scene.section->section) << sph_lines(results);
+    out << geometry_lines(scene.section->section) << materials_table(scene.section->section)
+        << reinforcement_table(scene.section->section) << sph_lines(results);
   } else {
     out << sph_lines(results);
   }

@@ -427,6 +427,12 @@ std::string summarize(const Scene& scene) {
     if (!s.surcharges.empty())
       out << ", " << s.surcharges.size() << " surcharge" << (s.surcharges.size() == 1 ? "" : "s");
     if (s.seismic_coefficient > 0) out << ", seismic kh = " << format_number(s.seismic_coefficient);
+    if (!s.reinforcement.empty()) {
+      std::size_t passive = 0;
+      for (const slope::Reinforcement& e : s.reinforcement) passive += e.application == slope::SupportApplication::passive;
+      out << ", " << s.reinforcement.size() << " reinforcement element" << (s.reinforcement.size() == 1 ? "" : "s")
+          << " (" << s.reinforcement.size() - passive << " active, " << passive << " passive)";
+    }
   }
   if (scene.analyses.isph) {
     const IsphAnalysis& f = *scene.analyses.isph;

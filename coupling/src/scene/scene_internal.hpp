@@ -35,6 +35,18 @@ inline const char* envelope_key(slope::StrengthEnvelope::Kind kind) {
 }
 std::optional<SoilMaterial> read_material(JsonReader& material, MaterialOf owner);
 
+// What the readers of things placed on a section need of it: its x range (known only when its geometry is valid)
+// and the way into the slope (-1: toward -x, the ground's left end being higher; +1 the other way; 0 level ends).
+struct SectionExtent {
+  bool known = false;
+  double x_min = 0.0, x_max = 0.0;  // m
+  int into_slope = 0;
+};
+// section.reinforcement (scene_reinforcement.cpp): each element with its type's defaults, in SI; `ok` false when one
+// is invalid (reported at its path).
+std::vector<slope::Reinforcement> read_reinforcement(const nlohmann::json& array, const std::string& path,
+                                                     const SectionExtent& extent, Diagnostics& diagnostics, bool& ok);
+
 // Reads and validates "section"; nullopt when anything in it is invalid (the faults are in `diagnostics`).
 std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagnostics);
 

@@ -402,10 +402,12 @@ bool read_profile_lines(JsonReader& section, const MaterialNames& known, std::ve
   return lines_ok;
 }
 
-// Water, surcharges and the seismic coefficient; their positions are checked against the section's x range
-// only when the geometry is valid.
-void read_section_loads(JsonReader& section, double x_min, double x_max, std::optional<double> bottom_y,
-                        bool geometry_ok, slope::Section& out, Diagnostics& diagnostics) {
+// Water, surcharges, reinforcement and the seismic coefficient; their positions are checked against the section's
+// x range only when the geometry is valid.
+void read_section_loads(JsonReader& section, const SectionExtent& extent, std::optional<double> bottom_y,
+                        slope::Section& out, Diagnostics& diagnostics) {
+  const double x_min = extent.x_min, x_max = extent.x_max;
+  const bool geometry_ok = extent.known;
   if (auto water = section.object("water", Need::optional,
                                   "an object {\"piezometric_line_m\": [[x, y], ...], \"unit_weight_kN_m3\": 9.81}")) {
     out.water = read_water(*water, x_min, x_max, bottom_y, geometry_ok);
@@ -414,6 +416,11 @@ void read_section_loads(JsonReader& section, double x_min, double x_max, std::op
   if (const nlohmann::json* surcharges = section.array("surcharges", Need::optional, 0, limits::surcharges)) {
     out.surcharges = read_surcharges(*surcharges, section.path_of("surcharges"), x_min, x_max, geometry_ok, diagnostics,
                                      surcharges_ok);
+  }
+  if (const nlohmann::json* elements = section.array("reinforcement", Need::optional, 0, limits::reinforcement)) {
+    bool reinforcement_ok = true;
+    out.reinforcement = read_reinforcement(*elements, section.path_of("reinforcement"), extent, diagnostics,
+                                           reinforcement_ok);
   }
   if (auto seismic = section.object("seismic", Need::optional, "an object {\"horizontal_coefficient\": 0.1}")) {
     out.seismic_coefficient =
@@ -445,7 +452,12 @@ std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagn
     x_min = lines[0].points->front().x;
     x_max = lines[0].points->back().x;
   }
-  read_section_loads(section, x_min, x_max, bottom_y, geometry_ok, result.section, diagnostics);
+  SectionExtent extent{geometry_ok, x_min, x_max, 0};
+  if (geometry_ok) {
+    const double left = lines[0].points->front().y, right = lines[0].points->back().y;
+    extent.into_slope = left > right ? -1 : (left < right ? 1 : 0);
+  }
+  read_section_loads(section, extent, bottom_y, result.section, diagnostics);
   if (diagnostics.size() != errors_before || !geometry_ok) return std::nullopt;
 
   result.section.bottom_y = *bottom_y;

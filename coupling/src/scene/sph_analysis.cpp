@@ -140,6 +140,10 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
                            slope::describe_envelope(*materials[i].envelope) + ")",
                        index_path("section.materials", i) + "." + envelope_key(materials[i].envelope->kind),
                        "the SPH soil model takes its Mohr-Coulomb cohesion_kPa and friction_angle_deg"});
+  if (!section.reinforcement.empty())
+    loads.push_back({std::to_string(section.reinforcement.size()) + " reinforcement element" +
+                         (section.reinforcement.size() == 1 ? "" : "s"),
+                     "section.reinforcement", "the SPH soil model has no structural elements"});
   return loads;
 }
 

@@ -51,6 +51,9 @@ inline constexpr SizeLimit materials{
 // section.surcharges: each strip load is integrated over every slice of every trial surface.
 inline constexpr SizeLimit surcharges{
     1000, "surcharges", "each strip load is integrated over every slice of every trial surface"};
+// section.reinforcement: every element is intersected with every trial surface.
+inline constexpr SizeLimit reinforcement{
+    1000, "reinforcement elements", "every element is intersected with every trial surface of the search"};
 // analyses.lem.surfaces: each surface is sliced and solved with every method.
 inline constexpr SizeLimit slip_surfaces{
     100, "surfaces", "each given slip surface is sliced and solved with every method, and reported slice by slice"};
