@@ -85,7 +85,9 @@ struct SliceTable {
 };
 
 // The crossings of the elements with the table's slip surface (circle or polyline, between the mass's ends), each
-// element at its first crossing from its head, into table.supports. Call after the slices are filled.
+// element at its first crossing from its head, into table.supports. An element that leaves the mass through a
+// tension crack's face only does not act (as in Slide2, UTEXAS4 and SLOPE/W: tests/slope/test_lem_reinforcement.cpp,
+// Pockoski & Duncan's test slope 7). Call after the slices are filled.
 void find_support_crossings(const std::vector<Reinforcement>& elements, SliceTable& table);
 
 // Section data arranged for fast repeated slicing.

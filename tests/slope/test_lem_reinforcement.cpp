@@ -252,3 +252,71 @@ TEST_CASE("Duncan & Wright (2005) Fig. 7.28: a fill on rock held by five geogrid
 }
 
 }  // namespace test_lem_reinforcement
+
+namespace test_lem_reinforcement {
+
+TEST_CASE("Pockoski & Duncan (2000) test slope 7: a nailed vertical cut, passive nails with a bond, on Slide's circle",
+          "[slope][published][reinforcement][validation]") {
+  // Pockoski & Duncan (2000), Comparison of computer programs for analysis of reinforced slopes, test slope 7, as
+  // Rocscience Slide verification #60 and SLOPE/W's example (section 2.37): a 25 ft vertical cut in sandy clay
+  // (c = 800 psf, phi = 0, 120 pcf) over firm soil (c = 5000 psf, phi = 35 deg, 130 pcf) below y = 0; 250 psf over
+  // the whole crest and 500 psf more on its first 7.3 ft; a dry crack 7 ft deep. Five nails with heads on the face at
+  // y = 23, 18, 13, 8, 3 ft, 40, 40, 40, 33 and 25.5 ft long at 15 deg below the horizontal, 25 918 lb each, 5 ft
+  // apart, bond 1 508 lb/ft, passive, along the nail. On Slide's circle (-38.803, 54.156, R 66.622) cut by the crack:
+  // Slide Spencer 1.009, UTEXAS4 1.02, SLOPE/W 1.000. Feet and pounds as they are (FS does not depend on the
+  // units); the face is at x = 0 to x = 0.01 ft (profile lines need x strictly increasing).
+  slope::Section s;
+  s.bottom_y = -20.0;
+  s.materials.push_back(slope::Material{"sandy clay", 120.0, 800.0, 0.0});
+  s.materials.push_back(slope::Material{"firm soil", 130.0, 5000.0, radians(35.0)});
+  s.profile_lines.push_back(slope::ProfileLine{0, {{-14, 0}, {-0.01, 0}, {0, 25}, {50, 25}}});
+  s.profile_lines.push_back(slope::ProfileLine{1, {{-14, 0}, {50, 0}}});
+  s.surcharges.push_back(slope::Surcharge{0.0, 50.0, 250.0});
+  s.surcharges.push_back(slope::Surcharge{0.0, 7.3, 500.0});
+  const double lengths[] = {40.0, 40.0, 40.0, 33.0, 25.5};
+  const double heads[] = {23.0, 18.0, 13.0, 8.0, 3.0};
+  for (int k = 0; k < 5; ++k) {
+    slope::Reinforcement n = slope::reinforcement_defaults(slope::SupportType::soil_nail);
+    n.head = {0.0, heads[k]};
+    n.tail = {lengths[k] * std::cos(radians(15.0)), heads[k] - lengths[k] * std::sin(radians(15.0))};
+    n.spacing = 5.0;
+    slope::set_tensile_capacity(n, 25918.0);
+    n.bond_strength = 1508.0;
+    s.reinforcement.push_back(n);
+  }
+  REQUIRE(slope::section_error(s).empty());
+  // The circle leaves the face 0.0005 ft above the toe (it passes below the toe ground beyond): the arc from there
+  // to the crest as 256 chords, moments about its centre.
+  const slope::Circle circle{-38.803, 54.156, 66.622};
+  auto arc_y = [&](double x) { return circle.yc - std::sqrt(circle.radius * circle.radius - std::pow(x - circle.xc, 2)); };
+  const double face_y = arc_y(0.0);
+  const double entry_x = circle.xc + std::sqrt(circle.radius * circle.radius - std::pow(circle.yc - 25.0, 2));
+  slope::SlipPolyline surface;
+  surface.points.push_back({-0.01 * (1.0 - face_y / 25.0), face_y});
+  for (int k = 0; k <= 256; ++k) {
+    const double x = entry_x * k / 256.0;
+    surface.points.push_back({x, k == 256 ? 25.0 : arc_y(x)});
+  }
+  surface.moment_point = slope::Point{circle.xc, circle.yc};
+  surface.tension_crack = slope::TensionCrack{7.0, false};
+  std::string reason;
+  const auto mass = slope::slice_polyline(s, surface, slope::SliceOptions{}, &reason);
+  INFO(reason);
+  REQUIRE(mass);
+  // The top nail leaves the mass through the crack's face, not through the slip surface: it does not act (counting
+  // it would give Spencer 1.064 against the three programs' 1.000-1.020).
+  REQUIRE(mass->supports.size() == 4);
+  CHECK(mass->supports[0].element == 1);
+  // Measured 2026-11-29: Spencer 1.012, Janbu (uncorrected) 1.044 (Slide 1.041, UTEXAS4 1.08); 1 % against Slide.
+  CHECK(fs_on(*mass, slope::Method::spencer) == Approx(1.009).epsilon(0.01));
+  CHECK(fs_on(*mass, slope::Method::janbu) == Approx(1.041).epsilon(0.01));
+  // The same nails active: at F just above 1, dividing by F changes little, and active holds a little more
+  // (measured 1.017).
+  for (slope::Reinforcement& n : s.reinforcement) n.application = slope::SupportApplication::active;
+  const auto active = slope::slice_polyline(s, surface, slope::SliceOptions{}, &reason);
+  REQUIRE(active);
+  CHECK(fs_on(*active, slope::Method::spencer) > fs_on(*mass, slope::Method::spencer));
+  CHECK(fs_on(*active, slope::Method::spencer) == Approx(fs_on(*mass, slope::Method::spencer)).epsilon(0.01));
+}
+
+}  // namespace test_lem_reinforcement
