@@ -1,7 +1,8 @@
 // bench-lem: limit-equilibrium throughput on one core.
 //   trial circles per second (slicing + factor of safety together, 50 slices) for Bishop, Spencer and
 //   Morgenstern-Price on the homogeneous Griffiths & Lane (1999) slope, and the wall time of the default critical
-//   search with refinement; trial polylines per second for Spencer, and the wall time of the non-circular search.
+//   search with refinement, also with a Hoek-Brown envelope and with reinforcement; trial polylines per second for
+//   Spencer, and the wall time of the non-circular search.
 //   A benchmark program, not a test: it prints figures (docs/performance.md).
 #include <algorithm>
 #include <chrono>
@@ -39,6 +40,27 @@ slope::Section hammah(bool hoek_brown) {
     s.materials[0].envelope = e;
   }
   s.profile_lines.push_back({0, {{0, 15}, {20, 15}, {30, 5}, {50, 5}}});
+  return s;
+}
+
+// Duncan & Wright (2005) Fig. 7.28 (cases/duncan_wright_2005_geogrids.json): a 24 ft cohesionless fill at
+// 1.25H:1V on rock, bare or with its five geogrids (11.675 kN/m along the grid), active or passive.
+slope::Section geogrid_fill(int grids) {  // 0: none, 1: active, 2: passive
+  constexpr double ft = 0.3048;
+  slope::Section s;
+  s.bottom_y = 0.0;
+  s.materials.push_back({"fill", 20.421e3, 0.0, sphslope::radians(37.0)});
+  s.profile_lines.push_back({0, {{-20 * ft, 0}, {0, 0}, {30 * ft, 24 * ft}, {75 * ft, 24 * ft}}});
+  for (double y : {4.0, 8.0, 12.0, 16.0, 20.0}) {
+    if (grids == 0) break;
+    slope::Reinforcement g = slope::reinforcement_defaults(slope::SupportType::geosynthetic);
+    g.head = {1.25 * y * ft, y * ft};
+    g.tail = {(1.25 * y + 20.0) * ft, y * ft};
+    slope::set_tensile_capacity(g, 11.675e3);
+    g.direction = slope::SupportDirection::along;
+    g.application = grids == 2 ? slope::SupportApplication::passive : slope::SupportApplication::active;
+    s.reinforcement.push_back(g);
+  }
   return s;
 }
 
@@ -172,6 +194,15 @@ int main() {
     const slope::Section rock = hammah(hoek_brown);
     search_time(hoek_brown ? "Hoek-Brown, Bishop" : "Mohr-Coulomb, Bishop", {slope::Method::bishop}, rock);
     search_time(hoek_brown ? "Hoek-Brown, all methods" : "Mohr-Coulomb, all methods", slope::all_methods(), rock);
+  }
+  std::printf("Duncan & Wright (2005) Fig. 7.28 fill: bare, then with five geogrids active, then passive\n");
+  for (int grids : {0, 1, 2}) {
+    const slope::Section fill = geogrid_fill(grids);
+    const char* names[][2] = {{"bare, Bishop", "bare, all methods"},
+                              {"active grids, Bishop", "active grids, all methods"},
+                              {"passive grids, Bishop", "passive grids, all methods"}};
+    search_time(names[grids][0], {slope::Method::bishop}, fill);
+    search_time(names[grids][1], slope::all_methods(), fill);
   }
   polyline_throughput(section, circles);
   noncircular_time("non-circular, Spencer", {slope::Method::spencer}, section);
