@@ -229,6 +229,7 @@ std::string Slicer::slice_polyline(const SlipPolyline& in, int target_slices, Sl
   table.crack_force_y = force_y;
   table.surface = std::move(s);
   find_support_crossings(ps.reinforcement, table);
+  find_line_loads(ps, table);
   table.passive_scale = 1.0;
   table.compute_loads();
   return {};

@@ -181,27 +181,48 @@ void find_support_crossings(const std::vector<Reinforcement>& elements, SliceTab
   }
 }
 
-// Each support force on its slice: its vertical part lessens V, its horizontal part adds to H (in the sliding
-// direction), its moment about the centre (at the crossing) to the driving moment; a passive one times
-// passive_scale.
+void find_line_loads(const PreparedSection& ps, SliceTable& t) {
+  t.line_loads.clear();
+  if (ps.line_loads.empty() || t.count < 1) return;
+  const double x_lo = t.x_left[0];
+  const double x_hi = t.x_right[t.count - 1];
+  for (std::size_t k = 0; k < ps.line_loads.size(); ++k) {
+    const LineLoad& q = ps.line_loads[k];
+    if (q.x < x_lo || q.x > x_hi) continue;
+    const auto slice = std::lower_bound(t.x_right.begin(), t.x_right.begin() + t.count, q.x);
+    AppliedLineLoad a;
+    a.load = k;
+    a.slice = static_cast<std::size_t>(std::min<std::ptrdiff_t>(slice - t.x_right.begin(), t.count - 1));
+    a.at = Point{q.x, ps.ground_at(q.x)};
+    a.force_x = q.force_x;
+    a.force_y = q.force_y;
+    t.line_loads.push_back(a);
+  }
+}
+
+// A force (global fx, fy) at `at` on slice i: its vertical part lessens V, its horizontal part adds to H (in the
+// sliding direction), its moment about the centre to the driving moment.
+void SliceTable::add_point_force(int i, Point at, double fx_global, double fy) {
+  const double dir = direction >= 0 ? 1.0 : -1.0;
+  const double fx = dir * fx_global;  // mirrored frame
+  vertical[i] -= fy;
+  horizontal[i] += fx;
+  const double rx = dir * (at.x - circle.xc);
+  const double ry = at.y - circle.yc;
+  const double m = rx * fy - ry * fx;
+  drive_moment[i] += m;
+  total_drive_moment += m;
+  drive_moment_scale += std::fabs(rx * fy) + std::fabs(ry * fx);
+}
+
+// The line loads and the support forces on their slices, a passive support force times passive_scale.
 void SliceTable::add_support_forces() {
   has_passive_supports = false;
-  if (supports.empty()) return;
-  const double dir = direction >= 0 ? 1.0 : -1.0;
+  for (const AppliedLineLoad& q : line_loads) add_point_force(static_cast<int>(q.slice), q.at, q.force_x, q.force_y);
   for (const SupportForce& f : supports) {
     has_passive_supports = has_passive_supports || f.passive;
     const double scale = f.passive ? passive_scale : 1.0;
-    const int i = static_cast<int>(f.slice);
-    const double fx = dir * scale * f.force_x;  // mirrored frame
-    const double fy = scale * f.force_y;
-    vertical[i] -= fy;
-    horizontal[i] += fx;
-    const double rx = dir * (f.at.x - circle.xc);
-    const double ry = f.at.y - circle.yc;
-    const double m = rx * fy - ry * fx;
-    drive_moment[i] += m;
-    total_drive_moment += m;
-    drive_moment_scale += std::fabs(rx * fy) + std::fabs(ry * fx);
+    add_point_force(static_cast<int>(f.slice), f.at, scale * f.force_x, scale * f.force_y);
   }
 }
 

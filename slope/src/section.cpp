@@ -7,6 +7,15 @@
 
 namespace slope {
 
+double Surcharge::load_on(double x0, double x1) const {
+  const double a = std::max(from_x, x0), b = std::min(to_x, x1);
+  if (!(b > a)) return 0.0;
+  const double mid = 0.5 * (a + b);
+  const double p = pressure + (end_pressure() - pressure) * (mid - from_x) / (to_x - from_x);
+  return p * (b - a);  // exact for a linear pressure
+}
+
+
 double polyline_y(const std::vector<Point>& line, double x) {
   if (line.empty()) return 0.0;
   if (x <= line.front().x) return line.front().y;
@@ -132,8 +141,15 @@ std::string section_error(const Section& section) {
   }
   for (const Surcharge& s : section.surcharges) {
     if (!(s.to_x > s.from_x)) return "a surcharge needs from_x < to_x";
+    if (!std::isfinite(s.pressure) || !std::isfinite(s.end_pressure()))
+      return "a surcharge's pressures must be finite";
   }
   if (!std::isfinite(section.seismic_coefficient)) return "the seismic coefficient must be finite";
+  if (!(std::fabs(section.vertical_seismic_coefficient) < 1.0))
+    return "the vertical seismic coefficient must lie in (-1, 1)";
+  for (const LineLoad& q : section.line_loads)
+    if (!std::isfinite(q.x) || !std::isfinite(q.force_x) || !std::isfinite(q.force_y))
+      return "a line load's position and force must be finite";
   for (std::size_t k = 0; k < section.reinforcement.size(); ++k)
     if (std::string why = reinforcement_error(section.reinforcement[k]); !why.empty())
       return "reinforcement element " + std::to_string(k) + ": " + why;

@@ -12,7 +12,7 @@ void SliceTable::resize(int n) {
   const std::size_t capacity = static_cast<std::size_t>(n) + static_cast<std::size_t>(n) / 2 + 8;
   for (std::vector<double>* v :
        {&x_left, &x_right, &width, &sin_a, &cos_a, &base_length, &base_x, &base_y, &top_y, &weight, &surcharge,
-        &ponded, &water_thrust, &seismic, &cohesion, &tan_phi, &pore_pressure, &cohesion_force, &pore_force,
+        &ponded, &water_thrust, &seismic, &seismic_up, &cohesion, &tan_phi, &pore_pressure, &cohesion_force, &pore_force,
         &vertical, &horizontal, &drive_moment, &shear_arm, &normal_arm}) {
     v->resize(capacity);
   }
@@ -26,7 +26,7 @@ void SliceTable::resize(int n) {
 double SliceTable::shared_loads(int i, double dir, double& scale) {
   cohesion_force[i] = cohesion[i] * base_length[i];
   pore_force[i] = pore_pressure[i] * base_length[i];
-  vertical[i] = weight[i] + surcharge[i] + ponded[i];
+  vertical[i] = weight[i] + surcharge[i] + ponded[i] - seismic_up[i];
   horizontal[i] = seismic[i] + water_thrust[i];
   const double x_arm = dir * (base_x[i] - circle.xc);            // vertical loads act on the slice centre line
   const double y_mid = 0.5 * (base_y[i] + top_y[i]) - circle.yc;  // seismic force at mid-height
@@ -109,6 +109,7 @@ void table_to_mass(const SliceTable& t, SlipMass& mass) {
   mass.exit = t.exit;
   mass.direction = t.direction;
   mass.supports = t.supports;
+  mass.line_loads = t.line_loads;
   mass.slices.resize(static_cast<std::size_t>(t.count));
   if (t.has_envelopes) {
     mass.envelopes = *t.envelopes;
@@ -135,6 +136,7 @@ void table_to_mass(const SliceTable& t, SlipMass& mass) {
     s.envelope = t.has_envelopes ? t.envelope[i] : -1;
     s.seismic_force = t.seismic[i];
     s.water_thrust = t.water_thrust[i];
+    s.vertical_seismic_force = t.seismic_up[i];
   }
 }
 
@@ -154,6 +156,7 @@ void mass_to_table(const SlipMass& mass, SliceTable& t) {
   t.direction = mass.direction >= 0 ? 1 : -1;
   t.envelopes = &mass.envelopes;
   t.supports = mass.supports;
+  t.line_loads = mass.line_loads;
   t.passive_scale = 1.0;
   double max_depth = 0.0;
   for (int i = 0; i < n; ++i) {
@@ -177,6 +180,7 @@ void mass_to_table(const SlipMass& mass, SliceTable& t) {
     t.envelope[i] = s.envelope;
     t.seismic[i] = s.seismic_force;
     t.water_thrust[i] = s.water_thrust;
+    t.seismic_up[i] = s.vertical_seismic_force;
     max_depth = std::max(max_depth, s.top_y - s.base_y);
   }
   t.max_depth = max_depth;

@@ -46,6 +46,7 @@ struct SliceTable {
   // primitive, per slice
   std::vector<double> x_left, x_right, width, sin_a, cos_a, base_length, base_x, base_y, top_y;
   std::vector<double> weight, surcharge, ponded, water_thrust, seismic;
+  std::vector<double> seismic_up;  // kv W, upward (Slice::vertical_seismic_force)
   std::vector<double> cohesion, tan_phi, pore_pressure;
   std::vector<std::size_t> material;
   // Non-linear strength (slope/strength.hpp): envelope[i] indexes *envelopes for a base whose strength is an
@@ -58,12 +59,14 @@ struct SliceTable {
   // compute_loads adds each to its slice's loads, a passive one times passive_scale (1 / F: solve_row iterates on
   // it); has_passive_supports: some force is passive (compute_loads).
   std::vector<SupportForce> supports;
+  // The line loads on the mass's ground surface (find_line_loads), added to their slices' loads as the supports are.
+  std::vector<AppliedLineLoad> line_loads;
   double passive_scale = 1.0;
   bool has_passive_supports = false;
   // derived, per slice
   std::vector<double> cohesion_force;  // c' l
   std::vector<double> pore_force;      // U = u l
-  std::vector<double> vertical;        // V = W + surcharge + ponded water, downward
+  std::vector<double> vertical;        // V = W + surcharge + ponded water - kv W, downward
   std::vector<double> horizontal;      // H = kh W + water thrust, in the sliding direction
   std::vector<double> drive_moment;    // moment of V and H about the centre, positive when it drives sliding
   std::vector<double> shear_arm;       // distance from the centre to the base chord
@@ -81,14 +84,19 @@ struct SliceTable {
   void compute_polyline_arms();  // shear and normal arms about a moment point (polylines)
   double shared_loads(int i, double dir, double& scale);  // the loads and driving moment a circle and a polyline share
   void add_crack_force();        // the water thrust of a crack on the upslope slice
-  void add_support_forces();     // the reinforcement's forces (reinforcement.cpp)
+  void add_support_forces();     // the reinforcement's forces and the line loads (reinforcement.cpp)
+  void add_point_force(int i, Point at, double fx, double fy);
 };
 
 // The crossings of the elements with the table's slip surface (circle or polyline, between the mass's ends), each
 // element at its first crossing from its head, into table.supports. An element that leaves the mass through a
-// tension crack's face only does not act (as in Slide2, UTEXAS4 and SLOPE/W: tests/slope/test_lem_reinforcement.cpp,
+// tension crack's face only does not act (as in Slide2, UTEXAS4 and SLOPE/W: tests/slope/test_lem_loads.cpp,
 // Pockoski & Duncan's test slope 7). Call after the slices are filled.
 void find_support_crossings(const std::vector<Reinforcement>& elements, SliceTable& table);
+struct PreparedSection;
+// The section's line loads on the ground between the mass's ends (inclusive), each on the slice under it, into
+// table.line_loads. Call after the slices are filled.
+void find_line_loads(const PreparedSection& section, SliceTable& table);
 
 // Section data arranged for fast repeated slicing.
 struct PreparedSection {
@@ -115,7 +123,9 @@ struct PreparedSection {
   double water_unit_weight = 0.0;
   std::vector<Surcharge> surcharges;
   double seismic_coefficient = 0.0;
+  double vertical_seismic_coefficient = 0.0;
   std::vector<Reinforcement> reinforcement;
+  std::vector<LineLoad> line_loads;
   // x where a slice must end whatever the circle: surcharge ends and where the piezometric line crosses the ground
   // (the edge of ponded water). Vertices are not among them: the slices integrate the lines exactly.
   std::vector<double> fixed_breaks;

@@ -112,7 +112,9 @@ PreparedSection::PreparedSection(const Section& section) {
     fixed_breaks.push_back(s.to_x);
   }
   seismic_coefficient = section.seismic_coefficient;
+  vertical_seismic_coefficient = section.vertical_seismic_coefficient;
   reinforcement = section.reinforcement;
+  line_loads = section.line_loads;
   std::sort(fixed_breaks.begin(), fixed_breaks.end());
   fixed_breaks.erase(std::unique(fixed_breaks.begin(), fixed_breaks.end()), fixed_breaks.end());
 }
@@ -350,6 +352,7 @@ void Slicer::fill_slices(const Circle& circle, int dir, SliceTable& table) {
   table.crack_depth = table.crack_force = table.crack_force_y = table.chord_depth = 0.0;
   fill_from_bounds(dir, table, &circle);
   find_support_crossings(ps.reinforcement, table);
+  find_line_loads(ps, table);
   table.passive_scale = 1.0;
   table.compute_loads();
 }
@@ -370,6 +373,7 @@ void Slicer::fill_from_bounds(int dir, SliceTable& table, const Circle* circle) 
   const std::size_t n_lines = ps.lines.size();
   line_y_.resize(n_lines + 1);
   const double kh = ps.seismic_coefficient;
+  const double kv = ps.vertical_seismic_coefficient;
   double max_depth = 0.0;
   for (int i = 0; i < n; ++i) {
     const double x0 = bounds_[i];
@@ -398,6 +402,7 @@ void Slicer::fill_from_bounds(int dir, SliceTable& table, const Circle* circle) 
     const double weight = slice_layers(i, circle, table);
     slice_water(i, sdir, table);
     table.seismic[i] = kh * weight;
+    table.seismic_up[i] = kv * weight;
 
     table.surcharge[i] = surcharge_load(x0, x1);
   }
@@ -407,10 +412,7 @@ void Slicer::fill_from_bounds(int dir, SliceTable& table, const Circle* circle) 
 // The strip loads on [x0, x1] [N/m].
 double Slicer::surcharge_load(double x0, double x1) const {
   double q = 0.0;
-  for (const Surcharge& s : prepared_.surcharges) {
-    const double overlap = std::min(s.to_x, x1) - std::max(s.from_x, x0);
-    if (overlap > 0.0) q += s.pressure * overlap;
-  }
+  for (const Surcharge& s : prepared_.surcharges) q += s.load_on(x0, x1);
   return q;
 }
 

@@ -53,11 +53,24 @@ struct Water {
   double unit_weight = 9810.0;          // N/m^3
 };
 
-// Uniform vertical strip load on the ground surface between from_x and to_x.
+// Vertical strip load on the ground surface between from_x and to_x: uniform, or trapezoidal (linear from
+// `pressure` at from_x to `pressure_end` at to_x).
 struct Surcharge {
   double from_x = 0.0;    // m
   double to_x = 0.0;      // m
   double pressure = 0.0;  // Pa
+  std::optional<double> pressure_end{};  // Pa; empty: `pressure` over the whole strip
+
+  double end_pressure() const { return pressure_end.value_or(pressure); }
+  // The load on [x0, x1] (N/m of slope width): the pressure integrated over its overlap with the strip.
+  double load_on(double x0, double x1) const;
+};
+
+// A line load (a force per metre of slope width) on the ground surface at x, in any direction.
+struct LineLoad {
+  double x = 0.0;        // m
+  double force_x = 0.0;  // N/m, + toward +x
+  double force_y = 0.0;  // N/m, + upward (a load pressing on the ground has force_y < 0)
 };
 
 struct Section {
@@ -66,7 +79,11 @@ struct Section {
   std::vector<Material> materials;
   std::optional<Water> water;
   std::vector<Surcharge> surcharges;
+  std::vector<LineLoad> line_loads;
   double seismic_coefficient = 0.0;  // horizontal pseudo-static coefficient kh (force kh*W out of the slope)
+  // vertical pseudo-static coefficient kv: the force kv*W acts upward when kv > 0 (it lightens the soil), downward
+  // when kv < 0; with kh (both at once)
+  double vertical_seismic_coefficient = 0.0;
   std::vector<Reinforcement> reinforcement;  // nails, anchors, geosynthetics, piles (reinforcement.hpp)
 
   double x_min() const;  // m, left end of the section

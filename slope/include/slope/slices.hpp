@@ -41,6 +41,16 @@ struct Slice {
                                  // of the slice ((base_y + top_y) / 2: centroid approximated at mid-height)
   double water_thrust = 0.0;     // N/m, horizontal component of the free-water pressure on the sloping slice top,
                                  // positive in the direction of sliding, acting at (base_x, top_y)
+  double vertical_seismic_force = 0.0;  // N/m, kv * weight, upward, on the slice centre line
+};
+
+// A line load of the section (Section::line_loads) on a sliding mass: on the slice under it.
+struct AppliedLineLoad {
+  std::size_t load = 0;   // index into Section::line_loads
+  std::size_t slice = 0;  // the slice under it
+  Point at;               // m, on the ground
+  double force_x = 0.0;   // N/m, global
+  double force_y = 0.0;   // N/m, upward
 };
 
 struct SlipMass {
@@ -63,6 +73,8 @@ struct SlipMass {
   // The reinforcement elements the slip surface crosses (Section::reinforcement), each at its first crossing from
   // its head, with the force it puts on the mass there.
   std::vector<SupportForce> supports;
+  // The section's line loads that stand on the mass's ground surface.
+  std::vector<AppliedLineLoad> line_loads;
 };
 
 // A vertical tension crack at the upper end of a slip surface (LE practice, e.g. Duncan & Wright 2005, Soil

@@ -1,4 +1,5 @@
-// Reinforcement in limit equilibrium (slope/reinforcement.hpp): the capacity envelope of each element type, a
+// Loads in limit equilibrium besides weight and water: reinforcement (slope/reinforcement.hpp), line loads,
+// trapezoidal strips and the vertical seismic coefficient. The capacity envelope of each element type, a
 // planar wedge held by a nail against the rigid-block closed form (active and passive, in every method that
 // satisfies force equilibrium), the crossing found on circles and polylines, and published cases.
 #include <catch2/catch.hpp>
@@ -14,7 +15,7 @@
 #include "slope/search.hpp"
 #include "slope/slices.hpp"
 
-namespace test_lem_reinforcement {
+namespace test_lem_loads {
 
 using namespace lem_test;
 
@@ -210,9 +211,9 @@ TEST_CASE("Yamagami (2000): a row of micro-piles on the circle of Slide's verifi
   }
 }
 
-}  // namespace test_lem_reinforcement
+}  // namespace test_lem_loads
 
-namespace test_lem_reinforcement {
+namespace test_lem_loads {
 
 TEST_CASE("Duncan & Wright (2005) Fig. 7.28: a fill on rock held by five geogrids, circles from the toe",
           "[slope][published][reinforcement][validation]") {
@@ -251,9 +252,9 @@ TEST_CASE("Duncan & Wright (2005) Fig. 7.28: a fill on rock held by five geogrid
   CHECK(searched(bare, slope::Method::bishop) < 1.0);
 }
 
-}  // namespace test_lem_reinforcement
+}  // namespace test_lem_loads
 
-namespace test_lem_reinforcement {
+namespace test_lem_loads {
 
 TEST_CASE("Pockoski & Duncan (2000) test slope 7: a nailed vertical cut, passive nails with a bond, on Slide's circle",
           "[slope][published][reinforcement][validation]") {
@@ -319,4 +320,104 @@ TEST_CASE("Pockoski & Duncan (2000) test slope 7: a nailed vertical cut, passive
   CHECK(fs_on(*active, slope::Method::spencer) == Approx(fs_on(*mass, slope::Method::spencer)).epsilon(0.01));
 }
 
-}  // namespace test_lem_reinforcement
+}  // namespace test_lem_loads
+
+namespace test_lem_loads {
+
+namespace {
+
+// The wedge of wedge_plane() with external forces: rigid-block equilibrium (as block_factor) with a total force
+// (px, py) on the mass and a vertical seismic coefficient kv (kv W upward) and kh (kh W toward +x, the sliding
+// direction).
+double block_with(double W, double c, double tan_phi, double px, double py, double kh, double kv) {
+  const double a = std::atan(0.5);
+  const double L = std::hypot(20.0, 10.0);
+  const double fx = px + kh * W, fy = py - W * (1.0 - kv);  // every force on the block but the base's
+  const double along = fx * std::cos(a) - fy * std::sin(a);     // toward sliding
+  const double into = -(fx * std::sin(a) + fy * std::cos(a));   // pressing on the base
+  return (c * L + into * tan_phi) / along;
+}
+
+slope::Section wedge_section() {
+  return simple_slope(10.0, 45.0, 20.0, 20.0, 5.0, material("soil", 20.0, 5.0, 25.0));
+}
+
+}  // namespace
+
+TEST_CASE("line loads, trapezoidal strips and k_v on a planar wedge: the rigid-block closed form",
+          "[slope][loads][closed_form]") {
+  const double W = 50.0 * 20e3, c = 5e3, tan_phi = std::tan(radians(25.0));
+  const std::vector<slope::Method> exact{slope::Method::janbu, slope::Method::spencer,
+                                         slope::Method::morgenstern_price, slope::Method::morgenstern_price_constant};
+  auto check = [&](const slope::Section& s, double px, double py, double kh, double kv,
+                   const std::vector<slope::Method>& methods) {
+    std::string reason;
+    const auto mass = slope::slice_polyline(s, wedge_plane(), slope::SliceOptions{}, &reason);
+    INFO(reason);
+    REQUIRE(mass);
+    const double expected = block_with(W, c, tan_phi, px, py, kh, kv);
+    INFO("closed form " << expected);
+    for (slope::Method m : methods) CHECK(fs_on(*mass, m) == Approx(expected).epsilon(1e-9));
+    return expected;
+  };
+  const double bare = check(wedge_section(), 0.0, 0.0, 0.0, 0.0, exact);
+  // A line load of 200 kN/m on the crest at x = 14, 30 degrees from the downward vertical toward the face (+x),
+  // and one behind the mass (x = 5) that must not act.
+  slope::Section lines = wedge_section();
+  const double angle = radians(30.0), px = 200e3 * std::sin(angle), py = -200e3 * std::cos(angle);
+  lines.line_loads.push_back(slope::LineLoad{14.0, px, py});
+  lines.line_loads.push_back(slope::LineLoad{5.0, 0.0, -500e3});
+  CHECK(std::fabs(check(lines, px, py, 0.0, 0.0, exact) - bare) > 0.01);
+  // A trapezoidal strip on the crest, 10 kPa at x = 12 rising to 40 kPa at x = 18 (150 kN/m), and one beyond it.
+  slope::Section strip = wedge_section();
+  strip.surcharges.push_back(slope::Surcharge{12.0, 18.0, 10e3, 40e3});
+  check(strip, 0.0, -150e3, 0.0, 0.0, exact);
+  std::string reason;
+  const auto loaded = slope::slice_polyline(strip, wedge_plane(), slope::SliceOptions{}, &reason);
+  REQUIRE(loaded);
+  double total = 0.0, moment = 0.0;
+  for (const slope::Slice& sl : loaded->slices) {
+    total += sl.surcharge_load;
+    moment += sl.surcharge_load * sl.base_x;
+  }
+  CHECK(total == Approx(150e3).epsilon(1e-12));
+  // its resultant stands at the trapezoid's centroid, x = 12 + 6 (10 + 2 * 40) / (3 (10 + 40)) = 15.6 (to the
+  // slices' centre lines)
+  CHECK(moment / total == Approx(15.6).epsilon(2e-3));
+  // k_v up and down; with k_h too, Janbu (Spencer and Morgenstern-Price find no (F, lambda) on this plane once k_h
+  // acts at the slices' mid-height, with or without k_v)
+  for (double kv : {0.1, -0.1}) {
+    slope::Section quake = wedge_section();
+    quake.vertical_seismic_coefficient = kv;
+    CHECK(std::fabs(check(quake, 0.0, 0.0, 0.0, kv, exact) - bare) > 0.005);
+    quake.seismic_coefficient = 0.05;
+    check(quake, 0.0, 0.0, 0.05, kv, {slope::Method::janbu});
+  }
+}
+
+TEST_CASE("a vertical line load's moment is that of a narrow strip of the same load (Bishop, circle)",
+          "[slope][loads]") {
+  // Moments about the circle's centre: a line load at x is a strip of the same total vanishing in width. The line
+  // load's section carries an empty strip there too, so that both are sliced alike.
+  const slope::Section bare = griffiths_lane_1999();
+  const slope::Circle circle{29.0, 24.0, 24.0};
+  slope::Section line = bare, strip = bare;
+  line.line_loads.push_back(slope::LineLoad{10.0, 0.0, -50e3});
+  line.surcharges.push_back(slope::Surcharge{9.995, 10.005, 0.0});
+  strip.surcharges.push_back(slope::Surcharge{9.995, 10.005, 50e3 / 0.01});
+  std::string reason;
+  const auto with_line = slope::slice_circle(line, circle, slope::SliceOptions{}, &reason);
+  const auto with_strip = slope::slice_circle(strip, circle, slope::SliceOptions{}, &reason);
+  const auto without = slope::slice_circle(bare, circle, slope::SliceOptions{}, &reason);
+  REQUIRE(with_line);
+  REQUIRE(with_strip);
+  REQUIRE(without);
+  REQUIRE(with_line->line_loads.size() == 1);
+  for (slope::Method m : {slope::Method::ordinary, slope::Method::bishop, slope::Method::spencer}) {
+    INFO(slope::method_key(m));
+    CHECK(fs_on(*with_line, m) == Approx(fs_on(*with_strip, m)).epsilon(1e-9));
+    CHECK(fs_on(*with_line, m) < fs_on(*without, m) - 0.01);
+  }
+}
+
+}  // namespace test_lem_loads
