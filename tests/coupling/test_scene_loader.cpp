@@ -16,6 +16,7 @@
 #include "coupling/output/report.hpp"
 #include "coupling/scene/scene.hpp"
 #include "coupling/analyses/pipeline.hpp"
+#include "coupling/analyses/sph_model.hpp"
 #include "sph/fluid/model.hpp"
 #include "sph/mps/settings.hpp"
 #include "sph/soil/model.hpp"
@@ -602,6 +603,61 @@ TEST_CASE("scene: reinforcement is read in kN and kN/m with its type's defaults,
   REQUIRE(left_out.size() == 1);
   CHECK(left_out[0].path == "section.reinforcement");
   CHECK_THAT(left_out[0].name, Catch::Contains("5 reinforcement elements"));
+}
+
+TEST_CASE("scene: line loads, trapezoidal strips and k_v are read in kN/m and kPa, and SPH carries them",
+          "[scene][loads]") {
+  // docs/scene-format.md: section.line_loads[i], section.surcharges[i].pressure_end_kPa,
+  // section.seismic.vertical_coefficient.
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water.json"));
+  scene["section"]["line_loads"] = {{{"x_m", 12.0}, {"force_kN_m", 50.0}, {"angle_deg", 30.0}},
+                                    {{"x_m", 5.0}, {"force_kN_m", 20.0}}};
+  scene["section"]["surcharges"] = {{{"from_x_m", 2.0}, {"to_x_m", 8.0}, {"pressure_kPa", 10.0}, {"pressure_end_kPa", 40.0}}};
+  scene["section"]["seismic"] = {{"vertical_coefficient", -0.05}};
+  const slope::Section read = parse_scene(scene.dump()).section->section;
+  REQUIRE(read.line_loads.size() == 2);
+  CHECK(read.line_loads[0].x == 12.0);
+  CHECK(read.line_loads[0].force_x == Approx(25e3).epsilon(1e-12));  // 50 sin 30, toward +x
+  CHECK(read.line_loads[0].force_y == Approx(-50e3 * std::sqrt(3.0) / 2.0).epsilon(1e-12));
+  CHECK(read.line_loads[1].force_x == 0.0);
+  CHECK(read.line_loads[1].force_y == -20e3);
+  REQUIRE(read.surcharges.size() == 1);
+  CHECK(read.surcharges[0].end_pressure() == 40e3);
+  CHECK(read.surcharges[0].load_on(0.0, 20.0) == Approx(150e3).epsilon(1e-12));
+  CHECK(read.seismic_coefficient == 0.0);
+  CHECK(read.vertical_seismic_coefficient == -0.05);
+  // faults at their paths
+  nlohmann::json bad = scene;
+  bad["section"]["line_loads"][1]["x_m"] = 500.0;
+  CHECK_THROWS_WITH(parse_scene(bad.dump()), Catch::Contains("section.line_loads[1].x_m: must lie on the section"));
+  bad = scene;
+  bad["section"]["seismic"] = nlohmann::json::object();
+  CHECK_THROWS_WITH(parse_scene(bad.dump()), Catch::Contains("section.seismic: give horizontal_coefficient"));
+  bad = scene;
+  bad["section"]["seismic"]["vertical_coefficient"] = 1.0;
+  CHECK_THROWS_WITH(parse_scene(bad.dump()), Catch::Contains("section.seismic.vertical_coefficient"));
+  // SPH carries them: nothing left out unless listed; line_loads may be listed
+  scene["analyses"]["sph"] = {{"particle_spacing_m", 1.0}, {"end_time_s", 1.0}};
+  CHECK(coupling::loads_sph_leaves_out(parse_scene(scene.dump())).empty());
+  scene["analyses"]["sph"]["ignore_loads"] = {"line_loads", "seismic"};
+  const auto left_out = coupling::loads_sph_leaves_out(parse_scene(scene.dump()));
+  REQUIRE(left_out.size() == 2);
+  CHECK(left_out[0].path == "section.line_loads");
+  CHECK(left_out[1].path == "section.seismic");
+  const sph::Model model = coupling::build_sph_model(parse_scene(scene.dump()));
+  CHECK(model.loads.vertical_seismic_coefficient == 0.0);
+  scene["analyses"]["sph"].erase("ignore_loads");
+  const sph::Model carried = coupling::build_sph_model(parse_scene(scene.dump()));
+  CHECK(carried.loads.vertical_seismic_coefficient == -0.05);
+  double down = 0.0, across = 0.0;
+  const auto& fx = carried.particles.field(*carried.loads.surface_force_x);
+  const auto& fy = carried.particles.field(*carried.loads.surface_force_y);
+  for (std::size_t i = 0; i < fx.size(); ++i) {
+    down -= fy[i];
+    across += fx[i];
+  }
+  CHECK(across == Approx(25e3).epsilon(1e-12));
+  CHECK(down == Approx(150e3 + 20e3 + 50e3 * std::sqrt(3.0) / 2.0).epsilon(1e-12));
 }
 
 TEST_CASE("scene: k_h on a section level at both ends is refused for SPH (no direction)", "[scene][sph]") {

@@ -10,6 +10,9 @@
 //  - the fully submerged body equals the dry body of buoyant density (rho - rho_w): same effective stress at rest
 //    within 3 % of the column's buoyant weight (measured 229 Pa of 9810 Pa, 2.3 %);
 //  - a strip surcharge q over the top of the column: sigma_yy = -(rho g d + q), 5 % per row (measured within 2 %);
+//  - a trapezoidal strip (5 to 15 kPa) or a line load (2 kN/m at the middle) on the top: the row averages of
+//    sigma_yy = -(rho g d + resultant / width), 5 % per row (free-slip walls carry no shear);
+//  - k_v = 0.3: sigma_yy = -(1 - k_v) rho g d, 5 % per row;
 //  - k_h: a block on a frictionless floor accelerates at k_h g, 5 % (measured -0.04904 m/s for -0.04905 m/s).
 #include <catch2/catch.hpp>
 
@@ -38,8 +41,8 @@ sph::PiezometricLine level_line(double y) {
 }
 
 // Row averages of the effective and total sigma_yy against the closed form: water table at `table` (none: below
-// the column), a surcharge q (Pa) on the top.
-void check_saturated_profile(const sph::Model& m, double table, double q = 0.0) {
+// the column), a surcharge q (Pa) on the top, the soil's weight times `weight_factor` (1 - k_v).
+void check_saturated_profile(const sph::Model& m, double table, double q = 0.0, double weight_factor = 1.0) {
   const auto& p = m.particles;
   const auto soil = m.soil();
   const double dx = m.settings.particle_spacing;
@@ -58,7 +61,7 @@ void check_saturated_profile(const sph::Model& m, double table, double q = 0.0) 
     const double depth = H - y;
     if (depth < 3 * dx || y < 3 * dx) continue;
     const double submerged = std::max(table - y, 0.0) - std::max(table - H, 0.0);
-    const double exact_effective = -(rho * g * depth + q - gamma_w * submerged);
+    const double exact_effective = -(weight_factor * rho * g * depth + q - gamma_w * submerged);
     const double exact_total = exact_effective - gamma_w * std::max(table - y, 0.0);
     const double got_effective = effective[row] / n, got_total = total[row] / n;
     INFO("table " << table << " m, surcharge " << q << " m, depth " << depth << " m: sigma'_yy " << got_effective << " vs " << exact_effective
@@ -145,6 +148,28 @@ TEST_CASE("loads: a strip surcharge over the whole top of a column adds q to its
   CHECK(loaded == 60);  // the three topmost particles of each of the 20 columns
   REQUIRE(sph::run(m, {}).stopped_because == "end_time");
   check_saturated_profile(m, -1.0, q);
+}
+
+TEST_CASE("loads: a trapezoidal strip or a line load adds its resultant over the width to the mean vertical stress",
+          "[sph][validation][loads]") {
+  // Free-slip walls carry no shear: at rest, the mean sigma_yy of a row is minus the weight above it and the loads'
+  // vertical resultant, over the column's width, however a load spreads below it.
+  const double width = test_column::width;
+  auto strip = elastic_box(sph::GravityMode::sudden, 150.0);  // 5 kPa at the left wall, 15 kPa at the right
+  CHECK(sph::add_strip_load(strip.particles, strip.loads, 0.0, width, 5e3, strip.settings.particle_spacing, 15e3) == 60);
+  REQUIRE(sph::run(strip, {}).stopped_because == "end_time");
+  check_saturated_profile(strip, -1.0, 10e3);
+  auto line = elastic_box(sph::GravityMode::sudden, 150.0);
+  CHECK(sph::add_line_load(line.particles, line.loads, 0.5 * width, 0.0, -2e3, line.settings.particle_spacing) == 9);
+  REQUIRE(sph::run(line, {}).stopped_because == "end_time");
+  check_saturated_profile(line, -1.0, 2e3 / width);
+}
+
+TEST_CASE("loads: k_v lightens the column: sigma_yy = -(1 - k_v) rho g d", "[sph][validation][loads]") {
+  auto m = elastic_box(sph::GravityMode::sudden, 150.0);
+  m.loads.vertical_seismic_coefficient = 0.3;
+  REQUIRE(sph::run(m, {}).stopped_because == "end_time");
+  check_saturated_profile(m, -1.0, 0.0, 0.7);
 }
 
 TEST_CASE("loads: k_h accelerates a block on a frictionless floor at k_h g", "[sph][validation][loads]") {

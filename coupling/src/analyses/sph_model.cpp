@@ -199,7 +199,8 @@ sph::BoxWalls box_walls(double x_min, double x_max, double y_min, double height,
   return box;
 }
 
-// Whether the SPH analysis carries a section load ("water", "surcharges", "seismic"): not listed in ignore_loads.
+// Whether the SPH analysis carries a section load ("water", "surcharges", "line_loads", "seismic"): not listed in
+// ignore_loads.
 bool sph_carries(const SphAnalysis& analysis, const char* load) {
   const auto& ignored = analysis.ignored_loads;
   return std::find(ignored.begin(), ignored.end(), load) == ignored.end();
@@ -292,8 +293,8 @@ void build_body_particles(const std::vector<ParticleBody>& bodies, const std::op
 }
 
 // The section's loads on the SPH model (sph/soil/loads.hpp), except those analyses.sph.ignore_loads leaves out: the
-// piezometric line, k_h toward the lower end of the ground (the direction limit equilibrium slides), the strip
-// surcharges on the ground's particles.
+// piezometric line, k_h toward the lower end of the ground (the direction limit equilibrium slides) and k_v, the
+// strip surcharges and the line loads on the ground's particles.
 void apply_section_loads(const slope::Section& section, const SphAnalysis& analysis, sph::Model& model) {
   if (section.water && sph_carries(analysis, "water")) {
     sph::PiezometricLine line;
@@ -306,10 +307,15 @@ void apply_section_loads(const slope::Section& section, const SphAnalysis& analy
   }
   if (section.seismic_coefficient != 0.0 && sph_carries(analysis, "seismic"))
     model.loads.seismic_coefficient = slope::facing_direction(section) * section.seismic_coefficient;
+  if (sph_carries(analysis, "seismic")) model.loads.vertical_seismic_coefficient = section.vertical_seismic_coefficient;
+  const double dx = model.settings.particle_spacing;
   if (sph_carries(analysis, "surcharges"))
     for (const auto& strip : section.surcharges)
-      sph::add_strip_load(model.particles, model.loads, strip.from_x, strip.to_x, strip.pressure,
-                          model.settings.particle_spacing);
+      sph::add_strip_load(model.particles, model.loads, strip.from_x, strip.to_x, strip.pressure, dx,
+                          strip.pressure_end ? *strip.pressure_end : std::nan(""));
+  if (sph_carries(analysis, "line_loads"))
+    for (const auto& load : section.line_loads)
+      sph::add_line_load(model.particles, model.loads, load.x, load.force_x, load.force_y, dx);
 }
 
 }  // namespace

@@ -101,16 +101,22 @@ std::vector<std::string> loads_carried(const sph::Model& model) {
   if (loads.seismic_coefficient != 0.0)
     out.push_back("pseudo-static k_h = " + format_number(std::fabs(loads.seismic_coefficient)) + " toward " +
                   (loads.seismic_coefficient > 0 ? "+x" : "-x"));
+  if (loads.vertical_seismic_coefficient != 0.0)
+    out.push_back("pseudo-static k_v = " + format_number(std::fabs(loads.vertical_seismic_coefficient)) + " " +
+                  (loads.vertical_seismic_coefficient > 0 ? "upward" : "downward"));
   if (loads.surface_force_y) {
+    const auto& fx = model.particles.field(*loads.surface_force_x);
     const auto& fy = model.particles.field(*loads.surface_force_y);
-    double total = 0.0;
+    double down = 0.0, across = 0.0;
     std::size_t loaded = 0;
-    for (double f : fy) {
-      total -= f;
-      if (f != 0.0) ++loaded;
+    for (std::size_t i = 0; i < fy.size(); ++i) {
+      down -= fy[i];
+      across += fx[i];
+      if (fy[i] != 0.0 || fx[i] != 0.0) ++loaded;
     }
-    out.push_back("surcharges: " + format_number(total / 1000.0) + " kN/m downward on " + std::to_string(loaded) +
-                  " particles under the strips");
+    std::string text = "surcharges: " + format_number(down / 1000.0) + " kN/m downward";
+    if (across != 0.0) text += " and " + format_number(across / 1000.0) + " kN/m toward +x";
+    out.push_back(text + " on " + std::to_string(loaded) + " particles under the strips and line loads");
   }
   return out;
 }

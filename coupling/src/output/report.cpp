@@ -48,6 +48,7 @@ nlohmann::json slice_report(const slope::Section& section, const slope::SlipMass
   s["surcharge_kN_m"] = slice.surcharge_load * to_kilo;
   s["ponded_water_kN_m"] = slice.ponded_water_load * to_kilo;
   s["pore_pressure_kPa"] = slice.pore_pressure * to_kilo;
+  if (slice.vertical_seismic_force != 0.0) s["vertical_seismic_kN_m"] = slice.vertical_seismic_force * to_kilo;
   if (forces != nullptr) {
     s["normal_force_kN_m"] = number(forces->normal * to_kilo);
     s["shear_force_kN_m"] = number(forces->shear * to_kilo);
@@ -143,6 +144,16 @@ nlohmann::json method_report(const slope::Section& section, const slope::Critica
   }
   m["slices"] = std::move(slices);
   if (!section.reinforcement.empty()) m["reinforcement"] = supports_report(section, mass, *result.factor_of_safety);
+  if (!section.line_loads.empty()) {
+    nlohmann::json loads = nlohmann::json::array();
+    for (const slope::AppliedLineLoad& q : mass.line_loads)
+      loads.push_back({{"load", q.load},
+                       {"at_m", point_json(q.at)},
+                       {"slice_from_left", q.slice + 1},
+                       {"force_x_kN_m", q.force_x * to_kilo},
+                       {"force_y_kN_m", q.force_y * to_kilo}});
+    m["line_loads"] = std::move(loads);
+  }
   return m;
 }
 

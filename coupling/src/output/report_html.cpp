@@ -166,11 +166,26 @@ std::string geometry_lines(const slope::Section& s) {
     loads += line + esc(m.name) + "; ";
   }
   for (const slope::Surcharge& q : s.surcharges) {
-    std::snprintf(line, sizeof line, "surcharge %.1f kPa on x = %.2f to %.2f m; ", q.pressure / 1e3, q.from_x, q.to_x);
+    if (q.pressure_end)
+      std::snprintf(line, sizeof line, "surcharge %.1f to %.1f kPa on x = %.2f to %.2f m; ", q.pressure / 1e3,
+                    *q.pressure_end / 1e3, q.from_x, q.to_x);
+    else
+      std::snprintf(line, sizeof line, "surcharge %.1f kPa on x = %.2f to %.2f m; ", q.pressure / 1e3, q.from_x,
+                    q.to_x);
+    loads += line;
+  }
+  for (const slope::LineLoad& q : s.line_loads) {
+    std::snprintf(line, sizeof line, "line load (%.1f, %.1f) kN/m (x, y) at x = %.2f m; ", q.force_x / 1e3,
+                  q.force_y / 1e3, q.x);
     loads += line;
   }
   if (s.seismic_coefficient != 0.0) {
     std::snprintf(line, sizeof line, "pseudo-static k<sub>h</sub> = %.3f; ", s.seismic_coefficient);
+    loads += line;
+  }
+  if (s.vertical_seismic_coefficient != 0.0) {
+    std::snprintf(line, sizeof line, "pseudo-static k<sub>v</sub> = %.3f %s; ", std::fabs(s.vertical_seismic_coefficient),
+                  s.vertical_seismic_coefficient > 0.0 ? "upward" : "downward");
     loads += line;
   }
   out += "<p>Water and loads: " + (loads.empty() ? std::string("none (dry, unloaded)") : loads) + "</p>\n";

@@ -426,7 +426,12 @@ std::string summarize(const Scene& scene) {
       if (m.envelope) out << ", " << slope::describe_envelope(*m.envelope) << " in " << m.name;
     if (!s.surcharges.empty())
       out << ", " << s.surcharges.size() << " surcharge" << (s.surcharges.size() == 1 ? "" : "s");
+    if (!s.line_loads.empty())
+      out << ", " << s.line_loads.size() << " line load" << (s.line_loads.size() == 1 ? "" : "s");
     if (s.seismic_coefficient > 0) out << ", seismic kh = " << format_number(s.seismic_coefficient);
+    if (s.vertical_seismic_coefficient != 0)
+      out << ", kv = " << format_number(std::fabs(s.vertical_seismic_coefficient))
+          << (s.vertical_seismic_coefficient > 0 ? " upward" : " downward");
     if (!s.reinforcement.empty()) {
       std::size_t passive = 0;
       for (const slope::Reinforcement& e : s.reinforcement) passive += e.application == slope::SupportApplication::passive;

@@ -222,6 +222,7 @@ std::vector<slope::Surcharge> read_surcharges(const nlohmann::json& array, const
     const auto from = s.number("from_x_m", Need::required);
     const auto to = s.number("to_x_m", Need::required);
     const auto pressure = s.number("pressure_kPa", Need::required, Bounds::non_negative());
+    const auto pressure_end = s.number("pressure_end_kPa", Need::optional, Bounds::non_negative());
     s.finish();
     if (!from || !to || !pressure) {
       ok = false;
@@ -239,7 +240,35 @@ std::vector<slope::Surcharge> read_surcharges(const nlohmann::json& array, const
       ok = false;
       continue;
     }
-    result.push_back({*from, *to, *pressure * kilo});
+    result.push_back({*from, *to, *pressure * kilo,
+                      pressure_end ? std::optional<double>(*pressure_end * kilo) : std::nullopt});
+  }
+  return result;
+}
+
+// section.line_loads[i]: a force per metre on the ground at x_m, force_kN_m at angle_deg from the downward
+// vertical (+ toward +x).
+std::vector<slope::LineLoad> read_line_loads(const nlohmann::json& array, const std::string& path,
+                                             const SectionExtent& extent, Diagnostics& diagnostics, bool& ok) {
+  std::vector<slope::LineLoad> result;
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    JsonReader r(array[i], index_path(path, i), diagnostics);
+    const auto x = r.number("x_m", Need::required);
+    const auto force = r.number("force_kN_m", Need::required, Bounds::non_negative());
+    const double angle = r.number_or("angle_deg", 0.0, Bounds::closed(-180.0, 180.0));
+    r.finish();
+    if (!x || !force) {
+      ok = false;
+      continue;
+    }
+    if (extent.known && (*x < extent.x_min || *x > extent.x_max)) {
+      diagnostics.error(r.path_of("x_m"), "must lie on the section (x " + range_text(extent.x_min, extent.x_max) +
+                                               " m), got " + format_number(*x));
+      ok = false;
+      continue;
+    }
+    const double a = sphslope::radians(angle);
+    result.push_back({*x, *force * kilo * std::sin(a), -*force * kilo * std::cos(a)});
   }
   return result;
 }
@@ -422,9 +451,18 @@ void read_section_loads(JsonReader& section, const SectionExtent& extent, std::o
     out.reinforcement = read_reinforcement(*elements, section.path_of("reinforcement"), extent, diagnostics,
                                            reinforcement_ok);
   }
+  if (const nlohmann::json* loads = section.array("line_loads", Need::optional, 0, limits::line_loads)) {
+    bool line_loads_ok = true;
+    out.line_loads = read_line_loads(*loads, section.path_of("line_loads"), extent, diagnostics, line_loads_ok);
+  }
   if (auto seismic = section.object("seismic", Need::optional, "an object {\"horizontal_coefficient\": 0.1}")) {
-    out.seismic_coefficient =
-        seismic->number("horizontal_coefficient", Need::required, Bounds::half_open(0.0, 1.0)).value_or(0.0);
+    const auto kh = seismic->number("horizontal_coefficient", Need::optional, Bounds::half_open(0.0, 1.0));
+    const auto kv = seismic->number("vertical_coefficient", Need::optional, Bounds::open(-1.0, 1.0));
+    if (!kh && !kv && seismic->is_object())
+      diagnostics.error(seismic->path(), "give horizontal_coefficient (0 <= kh < 1), vertical_coefficient "
+                                         "(-1 < kv < 1, + upward) or both");
+    out.seismic_coefficient = kh.value_or(0.0);
+    out.vertical_seismic_coefficient = kv.value_or(0.0);
     seismic->finish();
   }
 }

@@ -56,7 +56,7 @@ std::optional<WallSides> read_sides(JsonReader& reader, std::string_view key, Wa
 
 namespace {
 
-const char* const section_load_names[] = {"water", "surcharges", "seismic"};
+const char* const section_load_names[] = {"water", "surcharges", "line_loads", "seismic"};
 
 // analyses.sph.ignore_loads: the section loads the user accepts SPH leaves out (each at most once).
 std::vector<std::string> read_ignored_loads(JsonReader& r) {
@@ -68,7 +68,7 @@ std::vector<std::string> read_ignored_loads(JsonReader& r) {
     const auto name = read_string((*list)[i], path, r.diagnostics());
     if (!name) continue;
     if (std::find(std::begin(section_load_names), std::end(section_load_names), *name) == std::end(section_load_names))
-      r.diagnostics().error(path, "unknown load \"" + *name + "\" (allowed: water, surcharges, seismic)");
+      r.diagnostics().error(path, "unknown load \"" + *name + "\" (allowed: water, surcharges, line_loads, seismic)");
     else if (std::find(names.begin(), names.end(), *name) != names.end())
       r.diagnostics().error(path, "\"" + *name + "\" is listed twice");
     else
@@ -87,7 +87,9 @@ void check_section_loads(const Scene& scene, const SphAnalysis& analysis, Diagno
     const std::string& name = analysis.ignored_loads[k];
     const bool present = name == "water"        ? section.water.has_value()
                          : name == "surcharges" ? !section.surcharges.empty()
-                                                : section.seismic_coefficient != 0.0;
+                         : name == "line_loads" ? !section.line_loads.empty()
+                                                : section.seismic_coefficient != 0.0 ||
+                                                      section.vertical_seismic_coefficient != 0.0;
     if (!present)
       diagnostics.error(index_path("analyses.sph.ignore_loads", k),
                         "the section has no " + name + " to leave out (remove it from the list)");
@@ -113,7 +115,10 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
   if (section.water && listed("water")) loads.push_back({"water", "section.water", why});
   if (!section.surcharges.empty() && listed("surcharges"))
     loads.push_back({"surcharges", "section.surcharges", why});
-  if (section.seismic_coefficient != 0.0 && listed("seismic")) loads.push_back({"seismic", "section.seismic", why});
+  if (!section.line_loads.empty() && listed("line_loads"))
+    loads.push_back({"line_loads", "section.line_loads", why});
+  if ((section.seismic_coefficient != 0.0 || section.vertical_seismic_coefficient != 0.0) && listed("seismic"))
+    loads.push_back({"seismic", "section.seismic", why});
   const auto& materials = scene.section->materials;
   for (std::size_t i = 0; i < materials.size(); ++i)
     if (materials[i].pore_pressure_ratio > 0.0)

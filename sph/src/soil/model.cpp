@@ -61,6 +61,8 @@ void Model::validate() const {
     require(why.empty(), "model.loads.water: " + why);
   }
   require(std::isfinite(loads.seismic_coefficient), "model.loads.seismic_coefficient must be finite");
+  require(std::isfinite(loads.vertical_seismic_coefficient) && std::fabs(loads.vertical_seismic_coefficient) < 1.0,
+          "model.loads.vertical_seismic_coefficient must lie in (-1, 1)");
   for (std::size_t i = 0; i < n; ++i) {
     if (p.material[i] >= materials.size())
       throw std::invalid_argument("model: particle " + std::to_string(p.id[i]) + " has material " +

@@ -405,10 +405,12 @@ Energies SoilStep::energies() const {
   const SoilArrays sa = model_.soil();
   auto& w = *impl_;
   const double gx = model_.settings.gravity_x, gy = model_.settings.gravity_y;
-  // The loads' potentials (sph/soil/loads.hpp): volume times pore pressure, -m kh |g| x, -f.x of a surface force.
+  // The loads' potentials (sph/soil/loads.hpp): volume times pore pressure, -m kh |g| x, -m kv |g| y, -f.x of a
+  // surface force.
   const SoilLoads& loads = model_.loads;
   const PiezometricLine* water = loads.water ? &*loads.water : nullptr;
   const double seismic_ax = loads.seismic_coefficient * std::hypot(gx, gy);
+  const double seismic_ay = loads.vertical_seismic_coefficient * std::hypot(gx, gy);
   const double* fx = loads.surface_force_x ? p.field(*loads.surface_force_x).data() : nullptr;
   const double* fy = loads.surface_force_y ? p.field(*loads.surface_force_y).data() : nullptr;
   Energies e;
@@ -420,6 +422,7 @@ Energies SoilStep::energies() const {
         pw += p.mass[i] * sa.plastic_work[i];
         if (water) pe += p.mass[i] / p.rho[i] * water->pressure(p.x[i], p.y[i]);
         if (seismic_ax != 0.0) pe -= p.mass[i] * seismic_ax * p.x[i];
+        if (seismic_ay != 0.0) pe -= p.mass[i] * seismic_ay * p.y[i];
         if (fx) pe -= fx[i] * p.x[i] + fy[i] * p.y[i];
       },
       e.kinetic, e.potential, e.plastic_dissipation);

@@ -322,7 +322,7 @@ PairSums recorded_pair_sums(std::size_t i, const PairInputs& in, const Kernel& k
 struct LoadTerms {
   const PiezometricLine* water = nullptr;
   const double *fx = nullptr, *fy = nullptr;
-  double factor = 0.0, seismic_ax = 0.0;
+  double factor = 0.0, seismic_ax = 0.0, seismic_ay = 0.0;
   bool active = false;
 
   LoadTerms(Model& model, double load_factor) : factor(load_factor) {
@@ -334,11 +334,14 @@ struct LoadTerms {
       fx = model.particles.field(*l.surface_force_x).data();
       fy = model.particles.field(*l.surface_force_y).data();
     }
-    seismic_ax = factor * l.seismic_coefficient * std::hypot(model.settings.gravity_x, model.settings.gravity_y);
+    const double g = std::hypot(model.settings.gravity_x, model.settings.gravity_y);
+    seismic_ax = factor * l.seismic_coefficient * g;
+    seismic_ay = factor * l.vertical_seismic_coefficient * g;
   }
 
   void add(const ParticleSet& p, std::size_t i, double& ax, double& ay) const {
     ax += seismic_ax;
+    if (seismic_ay != 0.0) ay += seismic_ay;
     if (water) {
       double ux = 0.0, uy = 0.0;
       water->gradient(p.x[i], p.y[i], ux, uy);

@@ -51,6 +51,8 @@ inline constexpr SizeLimit materials{
 // section.surcharges: each strip load is integrated over every slice of every trial surface.
 inline constexpr SizeLimit surcharges{
     1000, "surcharges", "each strip load is integrated over every slice of every trial surface"};
+// section.line_loads: every load is placed on every trial surface.
+inline constexpr SizeLimit line_loads{1000, "line loads", "every line load is placed on every trial surface"};
 // section.reinforcement: every element is intersected with every trial surface.
 inline constexpr SizeLimit reinforcement{
     1000, "reinforcement elements", "every element is intersected with every trial surface of the search"};
