@@ -14,6 +14,7 @@
 
 #include "coupling/scene/json_reader.hpp"
 #include "coupling/output/report.hpp"
+#include "coupling/output/run_files.hpp"
 #include "coupling/scene/scene.hpp"
 #include "coupling/analyses/pipeline.hpp"
 #include "coupling/analyses/sph_model.hpp"
@@ -658,6 +659,37 @@ TEST_CASE("scene: line loads, trapezoidal strips and k_v are read in kN/m and kP
   }
   CHECK(across == Approx(25e3).epsilon(1e-12));
   CHECK(down == Approx(150e3 + 20e3 + 50e3 * std::sqrt(3.0) / 2.0).epsilon(1e-12));
+}
+
+TEST_CASE("scene: the critical seismic coefficient is sought with the method asked for, and reported",
+          "[scene][loads][seismic]") {
+  // docs/scene-format.md, analyses.lem.critical_seismic_coefficient; report.json lem.critical_seismic_coefficient.
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/griffiths_lane_1999.json"));
+  scene["analyses"] = {{"lem", {{"methods", {"bishop", "spencer"}}, {"critical_seismic_coefficient", nlohmann::json::object()}}}};
+  CHECK(parse_scene(scene.dump()).analyses.lem->critical_coefficient_method == slope::Method::bishop);
+  scene["analyses"]["lem"]["critical_seismic_coefficient"]["method"] = "janbu";
+  CHECK_THROWS_WITH(parse_scene(scene.dump()),
+                    Catch::Contains("analyses.lem.critical_seismic_coefficient.method: \"janbu\" is not one of the "
+                                    "methods analysed (allowed: bishop, spencer)"));
+  scene["analyses"]["lem"]["critical_seismic_coefficient"]["method"] = "spencer";
+  const Scene parsed = parse_scene(scene.dump());
+  coupling::WorkflowOptions options;
+  options.mode = coupling::Mode::lem;
+  const coupling::WorkflowResult out = coupling::run_scene(parsed, options);
+  REQUIRE(out.status == coupling::ExitStatus::ok);
+  const nlohmann::json& k = out.report["lem"]["critical_seismic_coefficient"];
+  CHECK(k["method"] == "spencer");
+  CHECK(k["factor_of_safety_without"].get<double>() ==
+        Approx(out.report["lem"]["methods"]["spencer"]["factor_of_safety"].get<double>()).epsilon(1e-12));
+  CHECK(k["factor_of_safety"].get<double>() == Approx(1.0).epsilon(2e-3));
+  CHECK(k["k_c"].get<double>() > 0.1);
+  CHECK(k["k_c"].get<double>() < 0.2);
+  // The surface at k_c, with k_h = k_c on the section, has FS 1 by the same method.
+  slope::Section shaken = parsed.section->section;
+  shaken.seismic_coefficient = k["k_c"].get<double>();
+  const slope::SearchResult again = slope::search_critical(shaken, {slope::Method::spencer}, parsed.analyses.lem->search);
+  REQUIRE(again.methods.front().result.factor_of_safety);
+  CHECK(*again.methods.front().result.factor_of_safety == Approx(1.0).epsilon(2e-3));
 }
 
 TEST_CASE("scene: k_h on a section level at both ends is refused for SPH (no direction)", "[scene][sph]") {

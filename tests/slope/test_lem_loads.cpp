@@ -421,3 +421,28 @@ TEST_CASE("a vertical line load's moment is that of a narrow strip of the same l
 }
 
 }  // namespace test_lem_loads
+
+namespace test_lem_loads {
+
+TEST_CASE("the critical seismic coefficient of a cohesionless slope is the infinite slope's tan(phi' - beta)",
+          "[slope][loads][seismic][closed_form]") {
+  // c' = 0: the critical surfaces are shallow, the infinite slope's FS = (cos b - k sin b) tan phi / (sin b + k cos b),
+  // which is 1 at k = tan(phi - b) (e.g. Kramer 1996, Geotechnical Earthquake Engineering, sec. 10.6). A 20 degree
+  // slope in phi' = 35 deg: k_c = tan 15 deg = 0.2679. Measured 2026-11-29 (Bishop): k_c 0.2689 in 10 searches, FS
+  // without it 1.927 (infinite slope 1.924).
+  const slope::Section s = simple_slope(10.0, 20.0, 20.0, 20.0, 5.0, material("sand", 19.0, 0.0, 35.0));
+  const slope::CriticalCoefficient k = slope::critical_seismic_coefficient(s, slope::Method::bishop, {});
+  INFO(k.why << "; k_c " << k.coefficient.value_or(-1) << " in " << k.searches << " searches, " << k.seconds << " s");
+  REQUIRE(k.coefficient);
+  CHECK(*k.coefficient == Approx(std::tan(radians(15.0))).epsilon(0.02));
+  CHECK(k.factor_of_safety_without == Approx(std::tan(radians(35.0)) / std::tan(radians(20.0))).epsilon(0.02));
+  REQUIRE(k.surface);
+  CHECK(*k.surface->result.factor_of_safety == Approx(1.0).epsilon(2e-3));
+  // A slope already failing without an earthquake has none, and says why.
+  const slope::Section weak = simple_slope(10.0, 20.0, 20.0, 20.0, 5.0, material("sand", 19.0, 0.0, 18.0));
+  const slope::CriticalCoefficient none = slope::critical_seismic_coefficient(weak, slope::Method::bishop, {});
+  CHECK_FALSE(none.coefficient);
+  CHECK_THAT(none.why, Catch::Contains("at most 1 without"));
+}
+
+}  // namespace test_lem_loads

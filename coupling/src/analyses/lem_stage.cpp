@@ -55,11 +55,17 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back("lem: the automatic search found no valid slip circle: " + search.error);
   }
-  LemStageResult result{analysis, {}, analyse_given_surfaces(section, analysis), std::nullopt};
+  LemStageResult result{analysis, {}, analyse_given_surfaces(section, analysis), std::nullopt, std::nullopt};
   if (analysis.noncircular && search.error.empty()) {
     const StageClock::time_point noncircular_start = StageClock::now();
     result.noncircular = slope::search_noncircular(section, search, analysis.search, *analysis.noncircular);
     results.seconds["lem_noncircular"] = seconds_since(noncircular_start);
+  }
+  if (analysis.critical_coefficient_method && search.error.empty()) {
+    const StageClock::time_point k_start = StageClock::now();
+    result.critical_coefficient =
+        slope::critical_seismic_coefficient(section, *analysis.critical_coefficient_method, analysis.search);
+    results.seconds["lem_critical_coefficient"] = seconds_since(k_start);
   }
   if (outcome.status == ExitStatus::ok) {
     bool any = false;

@@ -93,6 +93,9 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
     std::cout << "limit equilibrium: " << result.scene->name << " (" << scene_file.string() << ")\n"
               << coupling::lem_table(lem->analysis, lem->search);
     if (lem->noncircular) std::cout << coupling::noncircular_table(*lem->noncircular);
+    if (lem->critical_coefficient)
+      std::cout << coupling::critical_coefficient_line(*lem->analysis.critical_coefficient_method,
+                                                       *lem->critical_coefficient);
     if (!lem->surfaces.empty()) std::cout << coupling::given_surfaces_table(lem->surfaces);
   }
   if (result.results.srm) print_srm(*result.results.srm);

@@ -212,6 +212,22 @@ nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& anal
   return lem;
 }
 
+nlohmann::json critical_coefficient_report(const slope::Section& section, slope::Method method,
+                                           const slope::CriticalCoefficient& k) {
+  nlohmann::json out = {{"method", std::string(slope::method_key(method))},
+                        {"k_c", optional_number(k.coefficient)},
+                        {"vertical_coefficient", section.vertical_seismic_coefficient},
+                        {"factor_of_safety_without", k.factor_of_safety_without},
+                        {"searches", k.searches},
+                        {"seconds", k.seconds}};
+  if (!k.coefficient) out["why"] = k.why;
+  if (k.surface && k.surface->mass) {
+    out["factor_of_safety"] = optional_number(k.surface->result.factor_of_safety);
+    out["surface"] = surface_report(*k.surface->mass);
+  }
+  return out;
+}
+
 nlohmann::json noncircular_report(const slope::Section& section, const slope::NonCircularOptions& options,
                                   const slope::NonCircularResult& result) {
   nlohmann::json methods = nlohmann::json::object();

@@ -312,6 +312,15 @@ std::string fs_table(const RunResults& results) {
          "warnings; Ordinary is defined for circles and is not searched off them). Search: "
       << fixed(static_cast<double>(lem->search.trial_surfaces), 0) << " trial circles in "
       << fixed(lem->search.seconds, 2) << " s.</p>\n";
+  if (const auto& k = lem->critical_coefficient) {
+    const std::string method(slope::method_key(*lem->analysis.critical_coefficient_method));
+    if (k->coefficient)
+      out << "<p>Critical seismic coefficient (" << esc(method) << "): <b>k<sub>c</sub> = " << fixed(k->coefficient, 4)
+          << "</b>, the horizontal k<sub>h</sub> at which the least factor of safety is 1 (FS "
+          << fixed(k->factor_of_safety_without) << " without it; " << k->searches << " searches).</p>\n";
+    else
+      out << "<p>Critical seismic coefficient (" << esc(method) << "): none &ndash; " << esc(k->why) << ".</p>\n";
+  }
   return out.str();
 }
 

@@ -102,6 +102,9 @@ json lem_block(const Scene& scene, const StageRecord<LemStageResult>& record) {
   const slope::Section& section = scene.section->section;
   json block = lem_report(section, lem.analysis, lem.search, lem.surfaces);
   if (lem.noncircular) block["noncircular"] = noncircular_report(section, *lem.analysis.noncircular, *lem.noncircular);
+  if (lem.critical_coefficient)
+    block["critical_seismic_coefficient"] =
+        critical_coefficient_report(section, *lem.analysis.critical_coefficient_method, *lem.critical_coefficient);
   return block;
 }
 

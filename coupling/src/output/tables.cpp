@@ -48,6 +48,18 @@ std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& re
   return trimmed;
 }
 
+std::string critical_coefficient_line(slope::Method method, const slope::CriticalCoefficient& k) {
+  char line[512];
+  if (k.coefficient)
+    std::snprintf(line, sizeof line, "critical seismic coefficient (%s): k_c = %.4f (FS %.3f without k_h; %d searches "
+                  "in %.2f s)\n", std::string(slope::method_key(method)).c_str(), *k.coefficient,
+                  k.factor_of_safety_without, k.searches, k.seconds);
+  else
+    std::snprintf(line, sizeof line, "critical seismic coefficient (%s): none: %s\n",
+                  std::string(slope::method_key(method)).c_str(), k.why.c_str());
+  return line;
+}
+
 std::string noncircular_table(const slope::NonCircularResult& result) {
   std::string text = "non-circular search (polylines from the critical circles):\n";
   char line[512];

@@ -119,6 +119,28 @@ void read_fs_map(JsonReader& lem, LemAnalysis& result, Diagnostics& diagnostics)
   map->finish();
 }
 
+// analyses.lem.critical_seismic_coefficient {"method"}: seek k_c with this method's search (one of those analysed;
+// default Bishop when analysed, else the first).
+void read_critical_coefficient(JsonReader& lem, LemAnalysis& result, Diagnostics& diagnostics) {
+  auto block = lem.object("critical_seismic_coefficient", Need::optional,
+                          "an object (may be empty: {}), e.g. {\"method\": \"spencer\"}");
+  if (!block) return;
+  const bool has_bishop =
+      std::find(result.methods.begin(), result.methods.end(), slope::Method::bishop) != result.methods.end();
+  if (!result.methods.empty()) result.critical_coefficient_method = has_bishop ? slope::Method::bishop : result.methods[0];
+  if (const auto key = block->string("method", Need::optional)) {
+    const auto method = slope::method_from_key(*key);
+    std::vector<std::string> analysed;
+    for (slope::Method m : result.methods) analysed.emplace_back(slope::method_key(m));
+    if (!method || std::find(result.methods.begin(), result.methods.end(), *method) == result.methods.end())
+      diagnostics.error(block->path_of("method"), "\"" + *key + "\" is not one of the methods analysed (allowed: " +
+                                                      join(analysed) + ")");
+    else
+      result.critical_coefficient_method = *method;
+  }
+  block->finish();
+}
+
 void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics& diagnostics) {
   auto lem = analyses.object("lem", Need::optional, "an object (may be empty: {})");
   if (!lem) return;
@@ -176,6 +198,7 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
     noncircular->finish();
   }
   read_fs_map(*lem, result, diagnostics);
+  read_critical_coefficient(*lem, result, diagnostics);
   read_given_surfaces(*lem, scene.section ? &scene.section->section : nullptr, result.search.slicing,
                       result.surfaces);
   lem->finish();

@@ -71,6 +71,19 @@ struct SearchResult {
 SearchResult search_critical(const Section& section, const std::vector<Method>& methods,
                              const SearchOptions& options);
 
+// The critical (yield) seismic coefficient k_c of the slope (critical_coefficient.cpp): the horizontal k_h at which
+// the least factor of safety of the circular search by `method` is 1, the section's k_v held as it is. Found by the
+// Illinois false-position method on FS_min(k_h) - 1 to 1e-4 in k_h, each evaluation a whole search.
+struct CriticalCoefficient {
+  std::optional<double> coefficient;  // k_c; empty when there is none (`why`)
+  std::string why;                    // FS_min <= 1 without k_h, or > 1 up to k_h = 0.99, or the search failed
+  double factor_of_safety_without = 0.0;  // FS_min at k_h = 0
+  std::optional<CriticalSurface> surface;  // the critical surface at k_c
+  int searches = 0;
+  double seconds = 0.0;
+};
+CriticalCoefficient critical_seismic_coefficient(const Section& section, Method method, const SearchOptions& options);
+
 // Non-circular search (search_noncircular.cpp): a pattern search over the vertices of a polyline, started from
 // each method's critical circle inscribed as `initial_segments` chords; the number of segments doubles after each
 // converged stage up to `segments`. Bishop takes moments about its critical circle's centre; the Ordinary method

@@ -31,6 +31,7 @@ struct LemStageResult {
   slope::SearchResult search;
   std::vector<GivenSurfaceResult> surfaces;
   std::optional<slope::NonCircularResult> noncircular;
+  std::optional<slope::CriticalCoefficient> critical_coefficient;  // analyses.lem.critical_seismic_coefficient
 };
 
 // One stage of a run: its typed result, or the error that stopped it before it had one.

@@ -30,6 +30,11 @@ nlohmann::json method_report(const slope::Section& section, const slope::Critica
 nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& analysis,
                           const slope::SearchResult& result, const std::vector<GivenSurfaceResult>& surfaces = {});
 
+// lem.critical_seismic_coefficient: k_c (null with "why" when there is none), the factor of safety without k_h, the
+// critical surface at k_c.
+nlohmann::json critical_coefficient_report(const slope::Section& section, slope::Method method,
+                                           const slope::CriticalCoefficient& k);
+
 // The "lem.noncircular" block: settings {initial_segments, segments, tolerance}, trial_surfaces, seconds, and
 // methods keyed by method key, each as method_report plus searched, from_circle, circle_factor_of_safety,
 // polyline_factor_of_safety, trial_surfaces and a note when the result is the critical circle.

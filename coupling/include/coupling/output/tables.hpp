@@ -15,6 +15,8 @@ std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& re
 
 // The non-circular search (analyses.lem.noncircular_search): per method its FS, what the surface is, entry and exit.
 std::string noncircular_table(const slope::NonCircularResult& result);
+// "critical seismic coefficient (bishop): k_c = 0.2689 (FS 1.927 without k_h; ...)" or why there is none.
+std::string critical_coefficient_line(slope::Method method, const slope::CriticalCoefficient& k);
 
 // One line per given slip surface (analyses.lem.surfaces) and method: FS, or why there is none.
 std::string given_surfaces_table(const std::vector<GivenSurfaceResult>& surfaces);

@@ -57,6 +57,8 @@ struct LemAnalysis {
   // analyses.lem.fs_map: the safety map's method goes to search.fs_map_method (default Bishop when it is analysed,
   // else the first method); the top of its colour scale (absent: 1.5 x the lowest factor on the map).
   std::optional<double> fs_map_scale_max;
+  // analyses.lem.critical_seismic_coefficient: the method whose search finds k_c (absent: k_c is not sought)
+  std::optional<slope::Method> critical_coefficient_method;
 };
 
 // The analyses the scene asks for, each read once into its typed settings (defaults applied).
