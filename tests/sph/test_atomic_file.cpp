@@ -63,13 +63,22 @@ TEST_CASE("a writer killed at any moment leaves the old file or the new one, nev
   const fs::path file = folder / "checkpoint.bin";
   sph::write_file_atomically(file, version(0));
   int replaced = 0;  // trials after which the file held a version the child wrote: the kills came mid-run
-  for (int trial = 0; trial < 12; ++trial) {
+  for (int trial = 0; trial < 13; ++trial) {
     const pid_t pid = ::fork();
     REQUIRE(pid >= 0);
     if (pid == 0) {
       for (unsigned k = 1;; ++k) sph::write_file_atomically(file, version(k));
     }
-    std::this_thread::sleep_for(std::chrono::microseconds(1500 * trial + 300));
+    if (trial < 12) {
+      std::this_thread::sleep_for(std::chrono::microseconds(1500 * trial + 300));
+    } else {
+      // The last trial kills the writer only once it has replaced the file (at most 20 s): under the sanitizers on
+      // a loaded machine a child can take longer to write its first version than every delay above (seen in CI).
+      const std::string before = file_text(file);
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+      while (file_text(file) == before && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
     ::kill(pid, SIGKILL);
     int status = 0;
     ::waitpid(pid, &status, 0);
