@@ -98,22 +98,36 @@ std::string join(const std::vector<std::string>& words) {
 
 // analyses.lem.fs_map {"method", "colour_scale_max"}: which method the safety map of the search shows (one of
 // those analysed; default Bishop when analysed, else the first) and the top of its colour scale.
-void read_fs_map(JsonReader& lem, LemAnalysis& result, Diagnostics& diagnostics) {
-  std::vector<std::string> analysed;
-  for (slope::Method method : result.methods) analysed.emplace_back(slope::method_key(method));
+// Bishop when it is analysed, else the first method analysed (none when there is none).
+std::optional<slope::Method> default_method(const LemAnalysis& result) {
+  if (result.methods.empty()) return std::nullopt;
   const bool has_bishop =
       std::find(result.methods.begin(), result.methods.end(), slope::Method::bishop) != result.methods.end();
-  if (!result.methods.empty()) result.search.fs_map_method = has_bishop ? slope::Method::bishop : result.methods[0];
+  return has_bishop ? slope::Method::bishop : result.methods[0];
+}
+
+// block.method, which must be one of the methods analysed: into `target` when it is; an error naming the allowed
+// ones when it is not.
+void read_analysed_method(JsonReader& block, const LemAnalysis& result, std::optional<slope::Method>& target,
+                          Diagnostics& diagnostics) {
+  const auto key = block.string("method", Need::optional);
+  if (!key) return;
+  const auto method = slope::method_from_key(*key);
+  if (method && std::find(result.methods.begin(), result.methods.end(), *method) != result.methods.end()) {
+    target = *method;
+    return;
+  }
+  std::vector<std::string> analysed;
+  for (slope::Method m : result.methods) analysed.emplace_back(slope::method_key(m));
+  diagnostics.error(block.path_of("method"),
+                    "\"" + *key + "\" is not one of the methods analysed (allowed: " + join(analysed) + ")");
+}
+
+void read_fs_map(JsonReader& lem, LemAnalysis& result, Diagnostics& diagnostics) {
+  result.search.fs_map_method = default_method(result);
   auto map = lem.object("fs_map", Need::optional, "an object: {\"method\": \"bishop\", \"colour_scale_max\": 2.0}");
   if (!map) return;
-  if (const auto key = map->string("method", Need::optional)) {
-    const auto method = slope::method_from_key(*key);
-    if (!method || std::find(result.methods.begin(), result.methods.end(), *method) == result.methods.end())
-      diagnostics.error(map->path_of("method"), "\"" + *key + "\" is not one of the methods analysed (allowed: " +
-                                                     join(analysed) + ")");
-    else
-      result.search.fs_map_method = *method;
-  }
+  read_analysed_method(*map, result, result.search.fs_map_method, diagnostics);
   if (const auto top = map->number("colour_scale_max", Need::optional, Bounds::positive()))
     result.fs_map_scale_max = *top;
   map->finish();
@@ -125,19 +139,8 @@ void read_critical_coefficient(JsonReader& lem, LemAnalysis& result, Diagnostics
   auto block = lem.object("critical_seismic_coefficient", Need::optional,
                           "an object (may be empty: {}), e.g. {\"method\": \"spencer\"}");
   if (!block) return;
-  const bool has_bishop =
-      std::find(result.methods.begin(), result.methods.end(), slope::Method::bishop) != result.methods.end();
-  if (!result.methods.empty()) result.critical_coefficient_method = has_bishop ? slope::Method::bishop : result.methods[0];
-  if (const auto key = block->string("method", Need::optional)) {
-    const auto method = slope::method_from_key(*key);
-    std::vector<std::string> analysed;
-    for (slope::Method m : result.methods) analysed.emplace_back(slope::method_key(m));
-    if (!method || std::find(result.methods.begin(), result.methods.end(), *method) == result.methods.end())
-      diagnostics.error(block->path_of("method"), "\"" + *key + "\" is not one of the methods analysed (allowed: " +
-                                                      join(analysed) + ")");
-    else
-      result.critical_coefficient_method = *method;
-  }
+  result.critical_coefficient_method = default_method(result);
+  read_analysed_method(*block, result, result.critical_coefficient_method, diagnostics);
   block->finish();
 }
 
