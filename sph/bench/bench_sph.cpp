@@ -17,13 +17,13 @@
 
 namespace {
 
-void run(double target, int steps, sph::TimeIntegration integration) {
-  sph::ColumnCollapseCase c;
+void run(double target, int steps, sph::soil::TimeIntegration integration) {
+  sph::soil::ColumnCollapseCase c;
   c.dx = std::sqrt(c.length * c.height / target);
-  sph::Model model = sph::make_column_collapse(c);
+  sph::soil::Model model = sph::soil::make_column_collapse(c);
   model.settings.use_integration(integration);
-  const std::size_t soil = model.particles.count(sph::ParticleKind::soil);
-  sph::SoilStep stepper(model);
+  const std::size_t soil = model.particles.count(sph::ParticleKind::material);
+  sph::soil::SoilStep stepper(model);
   stepper.initialise();
   // warm-up: let the collapse start so that the particles move and the sort does real work
   for (int k = 0; k < 20; ++k) stepper.advance(stepper.stable_time_step());
@@ -33,7 +33,7 @@ void run(double target, int steps, sph::TimeIntegration integration) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const auto e = stepper.energies();
   const double rate = static_cast<double>(soil) * steps / wall;
-  const bool verlet = integration == sph::TimeIntegration::verlet;
+  const bool verlet = integration == sph::soil::TimeIntegration::verlet;
   std::printf("bench-sph: column collapse, %zu soil + %zu wall particles, dx = %.3g m, h/dx = %.2f, cubic spline, "
               "%s (cfl %.2g, up to %d stress sub-steps)\n",
               soil, model.particles.size() - soil, c.dx, c.h_over_dx, verlet ? "verlet" : "predictor_corrector",
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: bench-sph [soil_particles > 0] [steps >= 1] [verlet|predictor_corrector|both]\n");
     return 2;
   }
-  if (verlet) run(target, steps, sph::TimeIntegration::verlet);
-  if (pc) run(target, steps, sph::TimeIntegration::predictor_corrector);
+  if (verlet) run(target, steps, sph::soil::TimeIntegration::verlet);
+  if (pc) run(target, steps, sph::soil::TimeIntegration::predictor_corrector);
   return 0;
 }

@@ -129,12 +129,12 @@ struct SphState {
   std::map<std::uint32_t, ParticleRow> particles;  // by original id
 };
 
-SphState state_of(const sph::Model& model) {
+SphState state_of(const sph::soil::Model& model) {
   SphState state;
   state.step = model.state.step;
   state.time = model.state.time;
   const sph::ParticleSet& p = model.particles;
-  const sph::ConstSoilArrays soil = model.soil();
+  const sph::soil::ConstSoilArrays soil = model.soil();
   for (std::size_t i = 0; i < p.size(); ++i) {
     ParticleRow row;
     row.id = p.id[i];
@@ -256,7 +256,7 @@ std::size_t particles_missing(const SphState& golden, const SphState& actual) {
 }
 
 // A scene of cases/ at a coarse spacing, with analyses.sph changed by `sph_patch` (a JSON merge patch).
-sph::Model coarse_model(const std::string& case_file, const nlohmann::json& sph_patch) {
+sph::soil::Model coarse_model(const std::string& case_file, const nlohmann::json& sph_patch) {
   nlohmann::json document = read_json(source_dir / "cases" / case_file);
   document["analyses"]["sph"].merge_patch(sph_patch);
   const coupling::Scene scene = coupling::scene_from_json(document, source_dir / "cases" / case_file);
@@ -297,13 +297,13 @@ void check_state_golden(const std::string& golden_file, const SphState& actual, 
 
 void check_sph_golden(const SphGoldenCase& c) {
   Catch::StringMaker<double>::precision = 17;  // failed checks show differences down to the last bit
-  sph::Model model = coarse_model(c.case_file, c.sph_patch);
+  sph::soil::Model model = coarse_model(c.case_file, c.sph_patch);
   sph::RunOptions options;  // no output dir: no files
   options.max_steps = c.steps;
-  const sph::RunSummary summary = sph::run(model, options);
+  const sph::RunSummary summary = sph::soil::run(model, options);
   REQUIRE(summary.stopped_because == "step_limit");
   const std::string what = "SPH state of cases/" + c.case_file + " with analyses.sph patched by " +
-                           c.sph_patch.dump() + ": " + std::to_string(model.particles.count(sph::ParticleKind::soil)) +
+                           c.sph_patch.dump() + ": " + std::to_string(model.particles.count(sph::ParticleKind::material)) +
                            " soil + " + std::to_string(model.particles.count(sph::ParticleKind::wall)) +
                            " wall particles after " + std::to_string(c.steps) + " steps";
   check_state_golden(c.golden_file, state_of(model), what, field_names, sph_tolerance);
@@ -336,7 +336,7 @@ void check_mps_golden(const MpsGoldenCase& c) {
   const sph::RunSummary summary = sph::mps::run(model, options);
   REQUIRE(summary.stopped_because == "step_limit");
   const std::string what = "WC-MPS state of the dry collapse at dx = 2.5 mm (" + c.what + "): " +
-                           std::to_string(model.particles.count(sph::ParticleKind::soil)) + " moving + " +
+                           std::to_string(model.particles.count(sph::ParticleKind::material)) + " moving + " +
                            std::to_string(model.particles.count(sph::ParticleKind::wall)) +
                            " wall and dummy particles after " + std::to_string(c.steps) + " steps";
   check_state_golden(c.golden_file, state_of(model), what, mps_field_names, sph_tolerance);

@@ -235,7 +235,7 @@ namespace {
 // and a tall left wall that the measures must ignore.
 void add_staircase_heap(sph::ParticleSet& p, int n, double dx) {
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n - i; ++j) p.add((i + 0.5) * dx, (j + 0.5) * dx, 1.0, 1000.0, 0, sph::ParticleKind::soil);
+    for (int j = 0; j < n - i; ++j) p.add((i + 0.5) * dx, (j + 0.5) * dx, 1.0, 1000.0, 0, sph::ParticleKind::material);
   for (int i = -3; i < 3 * n; ++i) p.add((i + 0.5) * dx, -0.5 * dx, 1.0, 1000.0, 0, sph::ParticleKind::wall);
   for (int j = 0; j < 4 * n; ++j) p.add(-0.5 * dx, (j + 0.5) * dx, 1.0, 1000.0, 0, sph::ParticleKind::wall);
 }
@@ -259,7 +259,7 @@ TEST_CASE("tank monitors: the surface, the front and the wall height of a heap w
   CHECK(coupling::front_of(p, dx) == Approx(n * dx).epsilon(1e-12));
   CHECK(coupling::contact_front(p, dx) == Approx(n * dx).epsilon(1e-12));
   // a stray particle 5 dx past the heap's last column: the largest x sees it, the front of the body does not
-  p.add((n + 4.5) * dx, 0.5 * dx, 1.0, 1000.0, 0, sph::ParticleKind::soil);
+  p.add((n + 4.5) * dx, 0.5 * dx, 1.0, 1000.0, 0, sph::ParticleKind::material);
   CHECK(coupling::front_of(p, dx) == Approx((n + 5) * dx).epsilon(1e-12));
   CHECK(coupling::contact_front(p, dx) == Approx(n * dx).epsilon(1e-12));
   // the monitors' row: gauges relative to the still water, the front, the wall height at the left wall
@@ -292,30 +292,30 @@ TEST_CASE("farthest_in_contact: the farthest position still within the gap of th
   CHECK(coupling::farthest_in_contact({0.0, 1.0, 2.0}, 0.15) == 0.0);  // no contact at all: the smallest
 }
 
-// sph::measure_deposit (the soil's column collapse): the extent of the deposit from the back wall and the floor, on
+// sph::soil::measure_deposit (the soil's column collapse): the extent of the deposit from the back wall and the floor, on
 // a staircase heap 20 columns wide, with an isolated particle and a pair of particles thrown ahead and above (fewer
 // than 2 neighbours within 1.5 dx: left out) and wall particles (never soil).
 TEST_CASE("deposit measure: run-out and height of a heap, stray particles left out", "[measures][sph]") {
   const double dx = 0.005;
   const int n = 20;
-  sph::Model model;
+  sph::soil::Model model;
   model.settings.particle_spacing = dx;
   add_staircase_heap(model.particles, n, dx);
-  const sph::DepositShape heap = sph::measure_deposit(model);
+  const sph::soil::DepositShape heap = sph::soil::measure_deposit(model);
   CHECK(heap.runout == Approx(n * dx).epsilon(1e-12));
   CHECK(heap.height == Approx(n * dx).epsilon(1e-12));
-  model.particles.add((n + 10.5) * dx, 0.5 * dx, 1.0, 1000.0, 0, sph::ParticleKind::soil);  // alone
-  model.particles.add((n + 20.5) * dx, 0.5 * dx, 1.0, 1000.0, 0, sph::ParticleKind::soil);  // a pair
-  model.particles.add((n + 21.5) * dx, 0.5 * dx, 1.0, 1000.0, 0, sph::ParticleKind::soil);
-  model.particles.add(5.5 * dx, (n + 8.5) * dx, 1.0, 1000.0, 0, sph::ParticleKind::soil);  // thrown up
-  const sph::DepositShape with_strays = sph::measure_deposit(model);
+  model.particles.add((n + 10.5) * dx, 0.5 * dx, 1.0, 1000.0, 0, sph::ParticleKind::material);  // alone
+  model.particles.add((n + 20.5) * dx, 0.5 * dx, 1.0, 1000.0, 0, sph::ParticleKind::material);  // a pair
+  model.particles.add((n + 21.5) * dx, 0.5 * dx, 1.0, 1000.0, 0, sph::ParticleKind::material);
+  model.particles.add(5.5 * dx, (n + 8.5) * dx, 1.0, 1000.0, 0, sph::ParticleKind::material);  // thrown up
+  const sph::soil::DepositShape with_strays = sph::soil::measure_deposit(model);
   CHECK(with_strays.runout == Approx(n * dx).epsilon(1e-12));
   CHECK(with_strays.height == Approx(n * dx).epsilon(1e-12));
   // three in a row ahead: the middle one has two neighbours, so that group counts (its centre is the extent)
-  model.particles.add((n + 22.5) * dx, 0.5 * dx, 1.0, 1000.0, 0, sph::ParticleKind::soil);
-  CHECK(sph::measure_deposit(model).runout == Approx((n + 22) * dx).epsilon(1e-12));
+  model.particles.add((n + 22.5) * dx, 0.5 * dx, 1.0, 1000.0, 0, sph::ParticleKind::material);
+  CHECK(sph::soil::measure_deposit(model).runout == Approx((n + 22) * dx).epsilon(1e-12));
   // measured from another back wall and floor
-  const sph::DepositShape shifted = sph::measure_deposit(model, -dx, 2 * dx);
+  const sph::soil::DepositShape shifted = sph::soil::measure_deposit(model, -dx, 2 * dx);
   CHECK(shifted.height == Approx((n + 1) * dx).epsilon(1e-12));
 }
 

@@ -517,15 +517,15 @@ void check_names(const std::string& key, const sphslope::NameTable<E, N>& names)
 
 TEST_CASE("scene: each setting's names come from one table that the docs list", "[scene]") {
   check_names("kernel", sph::kernel_names);
-  check_names("kernel_gradient", sph::kernel_gradient_names);
-  check_names("time_integration", sph::time_integration_names);
+  check_names("kernel_gradient", sph::soil::kernel_gradient_names);
+  check_names("time_integration", sph::soil::time_integration_names);
   check_names("gravity", sph::gravity_mode_names);
   check_names("regularisation", sph::mps::regularisation_names);
   check_names("interaction_viscosity", sph::mps::interaction_viscosity_names);
   check_names("effective_pressure", sph::mps::effective_pressure_names);
   check_names("pore_pressure", sph::mps::pore_pressure_names);
   check_names("stress_divergence", sph::mps::stress_divergence_names);
-  check_names("artificial_stress", sph::artificial_stress_mode_names);
+  check_names("artificial_stress", sph::soil::artificial_stress_mode_names);
   check_names("pressure", sph::fluid::pressure_mode_names);
   check_names("solver", sph::fluid::linear_solver_names);
   check_names("preconditioner", sph::fluid::preconditioner_names);
@@ -645,10 +645,10 @@ TEST_CASE("scene: line loads, trapezoidal strips and k_v are read in kN/m and kP
   REQUIRE(left_out.size() == 2);
   CHECK(left_out[0].path == "section.line_loads");
   CHECK(left_out[1].path == "section.seismic");
-  const sph::Model model = coupling::build_sph_model(parse_scene(scene.dump()));
+  const sph::soil::Model model = coupling::build_sph_model(parse_scene(scene.dump()));
   CHECK(model.loads.vertical_seismic_coefficient == 0.0);
   scene["analyses"]["sph"].erase("ignore_loads");
-  const sph::Model carried = coupling::build_sph_model(parse_scene(scene.dump()));
+  const sph::soil::Model carried = coupling::build_sph_model(parse_scene(scene.dump()));
   CHECK(carried.loads.vertical_seismic_coefficient == -0.05);
   double down = 0.0, across = 0.0;
   const auto& fx = carried.particles.field(*carried.loads.surface_force_x);

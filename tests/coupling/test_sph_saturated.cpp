@@ -44,10 +44,10 @@ nlohmann::json level_scene(bool ignore_water) {
 }
 
 // The largest displacement of a soil particle from its start (m).
-double largest_displacement(const sph::Model& m) {
+double largest_displacement(const sph::soil::Model& m) {
   double largest = 0.0;
   for (std::size_t i = 0; i < m.particles.size(); ++i)
-    if (m.particles.kind[i] == static_cast<std::uint8_t>(sph::ParticleKind::soil))
+    if (m.particles.kind[i] == static_cast<std::uint8_t>(sph::ParticleKind::material))
       largest = std::max(largest, std::hypot(m.particles.x[i] - m.particles.x0[i], m.particles.y[i] - m.particles.y0[i]));
   return largest;
 }
@@ -58,11 +58,11 @@ TEST_CASE("SPH: particles below the water table weigh the saturated unit weight,
           "and at rest", "[sph][loads][water]") {
   const coupling::Scene scene = coupling::parse_scene(level_scene(false).dump());
   CHECK(coupling::loads_sph_leaves_out(scene).empty());
-  sph::Model model = coupling::build_sph_model(scene);
+  sph::soil::Model model = coupling::build_sph_model(scene);
   const sph::ParticleSet& p = model.particles;
   int below = 0, above = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::soil)) continue;
+    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::material)) continue;
     const bool wet = p.y[i] < table;
     CHECK(p.rho[i] == (wet ? gamma_sat : gamma) / g);
     (wet ? below : above) += 1;
@@ -73,13 +73,13 @@ TEST_CASE("SPH: particles below the water table weigh the saturated unit weight,
   // sigma'_yy at a particle's depth: gamma (10 - y) above the table; gamma 4 + (gamma_sat - gamma_w) (6 - y) below
   // it (the lattice's cells end on the table: the column sums are exact).
   {
-    sph::SoilStep step(model);
+    sph::soil::SoilStep step(model);
     step.initialise();
   }
   const auto soil = model.soil();
   double worst = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::soil)) continue;
+    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::material)) continue;
     const double y = p.y[i];
     const double exact = y >= table ? -gamma * (ground - y)
                                     : -(gamma * (ground - table) + (gamma_sat - gamma_w) * (table - y));
@@ -99,9 +99,9 @@ TEST_CASE("SPH: particles below the water table weigh the saturated unit weight,
   lower["unit_weight_kN_m3"] = gamma_sat / 1e3;
   layered["section"]["materials"] = {upper, lower};
   layered["section"]["profile_lines"].push_back({{"material", "lower"}, {"points_m", {{0, table}, {20, table}}}});
-  sph::Model reference = coupling::build_sph_model(coupling::parse_scene(layered.dump()));
-  REQUIRE(sph::run(model, {}).stopped_because == "end_time");
-  REQUIRE(sph::run(reference, {}).stopped_because == "end_time");
+  sph::soil::Model reference = coupling::build_sph_model(coupling::parse_scene(layered.dump()));
+  REQUIRE(sph::soil::run(model, {}).stopped_because == "end_time");
+  REQUIRE(sph::soil::run(reference, {}).stopped_because == "end_time");
   const double moved = largest_displacement(model), moved_layered = largest_displacement(reference);
   INFO("largest displacement " << moved << " m, drawn as two layers " << moved_layered << " m");
   CHECK(std::fabs(moved - moved_layered) < 0.1 * moved_layered);
@@ -112,7 +112,7 @@ TEST_CASE("SPH: particles below the water table weigh the saturated unit weight,
   double stress_difference = 0.0;
   int compared = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::soil)) continue;
+    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::material)) continue;
     stress_difference = std::max(stress_difference, std::fabs(soil.syy[i] - layered_soil.syy[index_of.at(p.id[i])]));
     ++compared;
   }
@@ -122,9 +122,9 @@ TEST_CASE("SPH: particles below the water table weigh the saturated unit weight,
 
   // Without the water the SPH run has one density, and says so.
   const coupling::Scene dry = coupling::parse_scene(level_scene(true).dump());
-  const sph::Model dry_model = coupling::build_sph_model(dry);
+  const sph::soil::Model dry_model = coupling::build_sph_model(dry);
   for (std::size_t i = 0; i < dry_model.particles.size(); ++i)
-    if (dry_model.particles.kind[i] == static_cast<std::uint8_t>(sph::ParticleKind::soil))
+    if (dry_model.particles.kind[i] == static_cast<std::uint8_t>(sph::ParticleKind::material))
       CHECK(dry_model.particles.rho[i] == gamma / g);
   const auto left_out = coupling::loads_sph_leaves_out(dry);
   REQUIRE(left_out.size() == 2);

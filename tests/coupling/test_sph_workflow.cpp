@@ -250,8 +250,8 @@ TEST_CASE("an SPH run killed at any moment leaves a checkpoint that loads", "[sp
     ::waitpid(pid, &status, 0);
     INFO("trial " << trial);
     REQUIRE(WIFSIGNALED(status));
-    sph::Model model = coupling::build_sph_model(loaded);
-    CHECK_NOTHROW(sph::read_checkpoint((out / "checkpoint.bin").string(), model));
+    sph::soil::Model model = coupling::build_sph_model(loaded);
+    CHECK_NOTHROW(sph::soil::read_checkpoint((out / "checkpoint.bin").string(), model));
     CHECK(model.state.step > 0);
   }
   fs::remove_all(dir);

@@ -9,9 +9,9 @@ namespace test_column {
 
 constexpr double width = 0.5, height = 1.0, density = 2000.0;
 
-inline sph::Model elastic_box(sph::GravityMode mode, double damping, double rho = density, bool side_walls = true) {
-  sph::Model m;
-  sph::Material mat;
+inline sph::soil::Model elastic_box(sph::GravityMode mode, double damping, double rho = density, bool side_walls = true) {
+  sph::soil::Model m;
+  sph::soil::Material mat;
   mat.name = "elastic";
   mat.density = rho;
   mat.youngs_modulus = 5e6;
@@ -23,7 +23,7 @@ inline sph::Model elastic_box(sph::GravityMode mode, double damping, double rho 
   s.h_over_dx = 1.3;
   s.gravity_mode = mode;
   s.damping = damping;
-  s.wall_slip = sph::WallSlip::free_slip;
+  s.wall_slip = sph::soil::WallSlip::free_slip;
   s.end_time = 0.3;
   s.output_interval = 0;
   sph::add_soil(m.particles,

@@ -23,12 +23,12 @@ namespace test_basal_friction {
 namespace {
 
 double closed_form_deceleration() {
-  const double t = std::tan(sph::aluminium_bars().friction_angle_deg * sphslope::pi / 180.0);
+  const double t = std::tan(sph::soil::aluminium_bars().friction_angle_deg * sphslope::pi / 180.0);
   return sphslope::standard_gravity * t / std::sqrt(1.0 + 4.0 / 3.0 * t * t);
 }
 
 bool is_soil(const sph::ParticleSet& p, std::size_t i) {
-  return p.kind[i] == static_cast<std::uint8_t>(sph::ParticleKind::soil);
+  return p.kind[i] == static_cast<std::uint8_t>(sph::ParticleKind::material);
 }
 
 // Mean x-velocity of the soil particles in the middle third of the layer's current extent [m/s].
@@ -52,9 +52,9 @@ double middle_speed(const sph::ParticleSet& p) {
 
 // A layer `rows` particles thick and 1 m long, at rest under its geostatic (K0) stress on a no-slip floor, set
 // sliding at 1 m/s at its middle (x = 1 m) and stretched at `stretch` [1/s] (v = 1 + stretch (x - 1)).
-sph::Model sliding_layer(int rows, double dx, double stretch) {
-  sph::Model m;
-  const sph::Material mat = sph::aluminium_bars();
+sph::soil::Model sliding_layer(int rows, double dx, double stretch) {
+  sph::soil::Model m;
+  const sph::soil::Material mat = sph::soil::aluminium_bars();
   m.materials.push_back(mat);
   auto& s = m.settings;
   s.particle_spacing = dx;
@@ -95,8 +95,8 @@ double least_squares_slope(const std::vector<double>& t, const std::vector<doubl
 // The deceleration of the sliding layer's middle third [m/s^2]: the least-squares slope of its speed over 0.08-0.24 s
 // (after the start-up, before it stops at about 0.3 s), sampled every 5 ms.
 double sliding_deceleration(int rows, double dx, double stretch = 0.0) {
-  sph::Model m = sliding_layer(rows, dx, stretch);
-  sph::SoilStep step(m);
+  sph::soil::Model m = sliding_layer(rows, dx, stretch);
+  sph::soil::SoilStep step(m);
   step.initialise();
   std::vector<double> times, speeds;
   double next = 0.08;

@@ -15,11 +15,11 @@
 namespace test_checkpoint {
 
 namespace {
-sph::Model small_collapse() {
-  sph::ColumnCollapseCase c;
+sph::soil::Model small_collapse() {
+  sph::soil::ColumnCollapseCase c;
   c.dx = 0.01;
   c.end_time = 10.0;
-  auto m = sph::make_column_collapse(c);
+  auto m = sph::soil::make_column_collapse(c);
   m.settings.output_interval = 0.01;
   m.settings.checkpoint_interval_wall_s = 0;  // only the checkpoint on stop
   return m;
@@ -36,21 +36,21 @@ TEST_CASE("resume from a checkpoint gives the same final state as an uninterrupt
   sph::RunOptions oa;
   oa.output_dir = (dir / "a").string();
   oa.max_steps = N;
-  const auto sa = sph::run(a, oa);
+  const auto sa = sph::soil::run(a, oa);
   REQUIRE(sa.stopped_because == "step_limit");
 
   auto b = small_collapse();
   sph::RunOptions ob;
   ob.output_dir = (dir / "b").string();
   ob.max_steps = k;
-  REQUIRE(sph::run(b, ob).stopped_because == "step_limit");
+  REQUIRE(sph::soil::run(b, ob).stopped_because == "step_limit");
   REQUIRE(fs::exists(dir / "b" / "checkpoint.bin"));
 
   auto c = small_collapse();  // a fresh model from the "scene", as after a kill
-  sph::read_checkpoint((dir / "b" / "checkpoint.bin").string(), c);
+  sph::soil::read_checkpoint((dir / "b" / "checkpoint.bin").string(), c);
   REQUIRE(c.state.step == k);
   ob.max_steps = N;
-  const auto sc = sph::run(c, ob);
+  const auto sc = sph::soil::run(c, ob);
   REQUIRE(sc.stopped_because == "step_limit");
   REQUIRE(c.state.step == N);
   CHECK(c.state.time == a.state.time);
@@ -77,7 +77,7 @@ TEST_CASE("resume from a checkpoint gives the same final state as an uninterrupt
     f << "SPHSLOPE-CKPT garbage";
   }
   auto d = small_collapse();
-  CHECK_THROWS_AS(sph::read_checkpoint((dir / "bad.bin").string(), d), std::runtime_error);
+  CHECK_THROWS_AS(sph::soil::read_checkpoint((dir / "bad.bin").string(), d), std::runtime_error);
   fs::remove_all(dir);
 }
 
@@ -92,7 +92,7 @@ TEST_CASE("a blow-up stops the run with a diagnostic naming particle, field and 
   m.particles.vx[5] = 1e4;
   sph::RunOptions o;
   o.max_steps = 50;
-  const auto s = sph::run(m, o);
+  const auto s = sph::soil::run(m, o);
   CHECK(s.stopped_because == "blow_up");
   INFO(s.diagnostic);
   CHECK(s.diagnostic.find("particle") != std::string::npos);
@@ -107,7 +107,7 @@ TEST_CASE("the step gives the same state for 1 and 2 threads (no order-dependent
     m.settings.output_interval = 0;
     sph::RunOptions o;
     o.max_steps = 300;
-    const sph::RunSummary s = sph::run(m, o);
+    const sph::RunSummary s = sph::soil::run(m, o);
     REQUIRE(s.stopped_because == "step_limit");
     return m;
   };

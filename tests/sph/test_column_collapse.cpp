@@ -31,15 +31,15 @@ namespace test_column_collapse {
 
 TEST_CASE("granular column collapse (Bui et al. 2008) deposit matches the experiments' scaling laws",
           "[sph][validation][collapse]") {
-  sph::ColumnCollapseCase c;
+  sph::soil::ColumnCollapseCase c;
   c.dx = 0.005;
   c.end_time = 1.0;
-  sph::Model model = sph::make_column_collapse(c);
+  sph::soil::Model model = sph::soil::make_column_collapse(c);
   model.settings.output_interval = 0;
   sph::RunOptions opt;
-  const auto sum = sph::run(model, opt);
+  const auto sum = sph::soil::run(model, opt);
   REQUIRE(sum.stopped_because == "end_time");
-  const auto d = sph::measure_deposit(model);
+  const auto d = sph::soil::measure_deposit(model);
   std::printf("column collapse dx = %.4f m: run-out %.4f m, height %.4f m, KE_end %.3g J/m, %zu soil particles, "
               "%llu steps, %.0f particle-steps/s\n",
               c.dx, d.runout, d.height, sum.kinetic_energy, sum.soil_particles,
@@ -68,18 +68,18 @@ TEST_CASE("granular column collapse (Bui et al. 2008) deposit matches the experi
 // Resolution study, print only (not part of ctest: hidden tag). SPH_STUDY_DX selects dx [m], SPH_STUDY_CFL the cfl
 // of the default (Verlet) step.
 TEST_CASE("column collapse resolution study", "[.study]") {
-  sph::ColumnCollapseCase c;
+  sph::soil::ColumnCollapseCase c;
   if (const char* e = std::getenv("SPH_STUDY_DX")) c.dx = std::atof(e);
   if (const char* e = std::getenv("SPH_STUDY_HDX")) c.h_over_dx = std::atof(e);
-  if (const char* e = std::getenv("SPH_STUDY_SLIP")) c.wall_slip = std::string(e) == "free" ? sph::WallSlip::free_slip : sph::WallSlip::no_slip;
+  if (const char* e = std::getenv("SPH_STUDY_SLIP")) c.wall_slip = std::string(e) == "free" ? sph::soil::WallSlip::free_slip : sph::soil::WallSlip::no_slip;
   c.end_time = 1.0;
-  sph::Model model = sph::make_column_collapse(c);
+  sph::soil::Model model = sph::soil::make_column_collapse(c);
   model.settings.output_interval = 0.05;
   if (const char* e = std::getenv("SPH_STUDY_CFL")) model.settings.cfl = std::atof(e);
   sph::RunOptions opt;
   if (const char* e = std::getenv("SPH_STUDY_OUT")) opt.output_dir = e;
-  const auto sum = sph::run(model, opt);
-  const auto d = sph::measure_deposit(model);
+  const auto sum = sph::soil::run(model, opt);
+  const auto d = sph::soil::measure_deposit(model);
   std::printf("study dx = %.4f h/dx = %.2f cfl %.3g: run-out %.4f m, height %.4f m, KE_end %.3g, %llu steps, %.3g s wall, %s\n",
               c.dx, c.h_over_dx, model.settings.cfl, d.runout, d.height, sum.kinetic_energy, static_cast<unsigned long long>(sum.steps),
               sum.wall_seconds, sum.stopped_because.c_str());

@@ -9,6 +9,7 @@
 namespace test_constitutive {
 
 using namespace sph;
+using namespace sph::soil;
 
 namespace {
 MaterialConstants soil(double c, double phi, double psi = 0.0) {

@@ -17,9 +17,9 @@ namespace test_elastic_column {
 
 namespace {
 
-sph::Model elastic_column(sph::GravityMode mode, double damping) { return test_column::elastic_box(mode, damping); }
+sph::soil::Model elastic_column(sph::GravityMode mode, double damping) { return test_column::elastic_box(mode, damping); }
 
-void check_profile(const sph::Model& m, double H) {
+void check_profile(const sph::soil::Model& m, double H) {
   const auto& p = m.particles;
   const auto soil = m.soil();
   const double dx = m.settings.particle_spacing, g = 9.81, rho = 2000, k0 = 0.3 / 0.7;
@@ -52,7 +52,7 @@ void check_profile(const sph::Model& m, double H) {
 
 TEST_CASE("elastic column with K0 initial stress stays at sigma_yy = rho g depth", "[sph][validation][column]") {
   auto m = elastic_column(sph::GravityMode::geostatic_k0, 0.0);
-  const auto sum = sph::run(m, {});
+  const auto sum = sph::soil::run(m, {});
   REQUIRE(sum.stopped_because == "end_time");
   check_profile(m, 1.0);
   // and it does not move: settlement below 1 mm (elastic compression is already in the initial state)
@@ -64,7 +64,7 @@ TEST_CASE("elastic column with K0 initial stress stays at sigma_yy = rho g depth
 
 TEST_CASE("elastic column under sudden gravity with damping settles to sigma_yy = rho g depth", "[sph][validation][column]") {
   auto m = elastic_column(sph::GravityMode::sudden, 150.0);
-  const auto sum = sph::run(m, {});
+  const auto sum = sph::soil::run(m, {});
   REQUIRE(sum.stopped_because == "end_time");
   check_profile(m, 1.0);
 }
@@ -74,8 +74,8 @@ TEST_CASE("elastic column study", "[.study]") {
   const double Z = std::getenv("SPH_Z") ? std::atof(std::getenv("SPH_Z")) : 150;
   auto m = elastic_column(std::getenv("SPH_K0") ? sph::GravityMode::geostatic_k0 : sph::GravityMode::sudden, Z);
   m.settings.end_time = T;
-  if (std::getenv("SPH_NOSLIP")) m.settings.wall_slip = sph::WallSlip::no_slip;
-  const auto sum = sph::run(m, {});
+  if (std::getenv("SPH_NOSLIP")) m.settings.wall_slip = sph::soil::WallSlip::no_slip;
+  const auto sum = sph::soil::run(m, {});
   double vmax = 0, uy = 0; int n = 0;
   for (std::size_t i = 0; i < m.particles.size(); ++i) if (m.particles.kind[i] == 0) {
     vmax = std::max(vmax, std::hypot(m.particles.vx[i], m.particles.vy[i]));

@@ -21,9 +21,9 @@ namespace test_gravity_ramp_and_walls {
 namespace {
 
 // Elastic soil column 1 m wide, 2 m high, dx = 0.1 m, walls left, right and bottom (free-slip: a 1-D column).
-sph::Model elastic_column(sph::GravityMode mode, double ramp, double end_time) {
-  sph::Model m;
-  sph::Material soil;
+sph::soil::Model elastic_column(sph::GravityMode mode, double ramp, double end_time) {
+  sph::soil::Model m;
+  sph::soil::Material soil;
   soil.name = "elastic";
   soil.density = 2000;
   soil.youngs_modulus = 10e6;
@@ -34,7 +34,7 @@ sph::Model elastic_column(sph::GravityMode mode, double ramp, double end_time) {
   s.particle_spacing = 0.1;
   s.gravity_mode = mode;
   s.gravity_ramp_time = ramp;
-  s.wall_slip = sph::WallSlip::free_slip;
+  s.wall_slip = sph::soil::WallSlip::free_slip;
   s.end_time = end_time;
   s.output_interval = 0;
   s.checkpoint_interval_wall_s = 0;
@@ -50,8 +50,8 @@ sph::Model elastic_column(sph::GravityMode mode, double ramp, double end_time) {
 }
 
 // Largest kinetic energy seen over the run, stepping by hand.
-double peak_kinetic_energy(sph::Model& m) {
-  sph::SoilStep step(m);
+double peak_kinetic_energy(sph::soil::Model& m) {
+  sph::soil::SoilStep step(m);
   step.initialise();
   double peak = 0;
   while (m.state.time < m.settings.end_time - 1e-12) {
@@ -64,7 +64,7 @@ double peak_kinetic_energy(sph::Model& m) {
 }  // namespace
 
 TEST_CASE("ramped gravity: the factor grows linearly to 1 and is 1 for the other modes", "[sph][gravity]") {
-  sph::Settings s;
+  sph::soil::Settings s;
   s.particle_spacing = 0.1;
   CHECK(s.gravity_factor(0.0) == 1.0);  // sudden
   s.gravity_mode = sph::GravityMode::ramped;
@@ -102,18 +102,18 @@ TEST_CASE("a run interrupted during the gravity ramp resumes bitwise", "[sph][gr
   all.output_dir = (dir / "whole").string();
   all.write_frames = false;
   all.max_steps = 300;
-  REQUIRE(sph::run(whole, all).stopped_because == "step_limit");
+  REQUIRE(sph::soil::run(whole, all).stopped_because == "step_limit");
   REQUIRE(whole.state.time < 0.5);  // the comparison ends inside the ramp
 
   auto first = elastic_column(sph::GravityMode::ramped, 0.5, 1.0);
   sph::RunOptions part = all;
   part.output_dir = (dir / "part").string();
   part.max_steps = 110;
-  REQUIRE(sph::run(first, part).stopped_because == "step_limit");
+  REQUIRE(sph::soil::run(first, part).stopped_because == "step_limit");
   auto resumed = elastic_column(sph::GravityMode::ramped, 0.5, 1.0);
-  sph::read_checkpoint((dir / "part" / "checkpoint.bin").string(), resumed);
+  sph::soil::read_checkpoint((dir / "part" / "checkpoint.bin").string(), resumed);
   part.max_steps = 300;
-  REQUIRE(sph::run(resumed, part).stopped_because == "step_limit");
+  REQUIRE(sph::soil::run(resumed, part).stopped_because == "step_limit");
 
   CHECK(resumed.state.time == whole.state.time);
   std::size_t mismatches = 0;

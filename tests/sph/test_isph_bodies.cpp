@@ -22,7 +22,7 @@ namespace {
 
 using namespace sph::fluid;
 constexpr double kG = sphslope::standard_gravity;
-constexpr auto kFluid = static_cast<std::uint8_t>(sph::ParticleKind::soil);
+constexpr auto kFluid = static_cast<std::uint8_t>(sph::ParticleKind::material);
 
 // The five-point Laplacian on an n x n lattice of spacing h inside a ring of given nodes (P = 0), B = -1/h^2
 // between lattice neighbours, with the source of the manufactured field P = x (1 - x) y (1 - y) sin(3x) (scaled to
@@ -70,7 +70,7 @@ double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b) 
   return d;
 }
 
-double fluid_mass(const Model& m) { return m.particles.total_mass(sph::ParticleKind::soil); }
+double fluid_mass(const Model& m) { return m.particles.total_mass(sph::ParticleKind::material); }
 
 }  // namespace
 
@@ -246,10 +246,10 @@ TEST_CASE("ISPH fluid leaving the domain is removed, its mass accounted, and a r
   opt.max_steps = 160;
   Model straight = build();
   const double mass0 = fluid_mass(straight);
-  const std::size_t fluid0 = straight.particles.count(sph::ParticleKind::soil);
+  const std::size_t fluid0 = straight.particles.count(sph::ParticleKind::material);
   std::size_t removed = 0;
   run(straight, opt, {}, [&](const Step& s, const sph::RunState&) { removed += s.diagnostics().removed_particles; });
-  const std::size_t fluid1 = straight.particles.count(sph::ParticleKind::soil);
+  const std::size_t fluid1 = straight.particles.count(sph::ParticleKind::material);
   std::printf("removal: %zu of %zu fluid particles left x = 0.18 m by t = %.3f s\n", removed, fluid0,
               straight.state.time);
   REQUIRE(removed > 0);
@@ -288,7 +288,7 @@ TEST_CASE("ISPH a splash against a wall runs through with the fluid inside the t
   add_fluid_block(m, 0, 0, a, 2 * a);
   add_tank_walls(m, 0, 2 * a, 0, 10 * a);
   set_hydrostatic_pressure(m, 2 * a - 0.5 * st.particle_spacing);
-  const std::size_t fluid0 = m.particles.count(sph::ParticleKind::soil);
+  const std::size_t fluid0 = m.particles.count(sph::ParticleKind::material);
   std::size_t clamped_steps = 0, outside = 0;
   const double row = 0.5 * st.particle_spacing;  // the walls' first rows: dx/2 beyond the inner faces
   const auto sum = run(m, {}, {}, [&](const Step& s, const sph::RunState&) {
@@ -301,7 +301,7 @@ TEST_CASE("ISPH a splash against a wall runs through with the fluid inside the t
   std::printf("splash at a/15: %s at t = %.3f s, %zu steps with tension clamped, %zu particle-steps outside\n",
               sum.stopped_because.c_str(), m.state.time, clamped_steps, outside);
   CHECK(sum.stopped_because == "end_time");
-  CHECK(m.particles.count(sph::ParticleKind::soil) == fluid0);
+  CHECK(m.particles.count(sph::ParticleKind::material) == fluid0);
   CHECK(outside == 0);
   CHECK(clamped_steps > 0);  // the clamp did act
 }

@@ -83,7 +83,7 @@ TankResult run_tank(PressureMode mode) {
   st.end_time = kTankEnd;
   Model m = make_still_tank(st, width, depth);
   const double mass0 = fluid_mass(m), top0 = top_row_height(m, depth);
-  const std::size_t fluid0 = m.particles.count(sph::ParticleKind::soil);
+  const std::size_t fluid0 = m.particles.count(sph::ParticleKind::material);
   TankResult r;
   const auto sum = run(m, {}, {}, [&](const Step& s, const sph::RunState& rs) {
     r.density_error = s.diagnostics().max_density_error;

@@ -23,9 +23,9 @@ struct StrainRateErrors {
 
 // Largest relative errors of the strain rate recovered from the elastic stress rates of a block of soil (no walls,
 // zero stress) moving with v = (a x + b y, c x + d y).
-StrainRateErrors strain_rate_errors(sph::KernelGradient gradient) {
-  sph::Model m;
-  sph::Material mat;
+StrainRateErrors strain_rate_errors(sph::soil::KernelGradient gradient) {
+  sph::soil::Model m;
+  sph::soil::Material mat;
   mat.name = "elastic";
   mat.density = 2000.0;
   mat.youngs_modulus = 5e6;
@@ -43,7 +43,7 @@ StrainRateErrors strain_rate_errors(sph::KernelGradient gradient) {
     m.particles.vx[i] = a * m.particles.x[i] + b * m.particles.y[i];
     m.particles.vy[i] = c * m.particles.x[i] + d * m.particles.y[i];
   }
-  sph::SoilStep step(m);
+  sph::soil::SoilStep step(m);
   step.evaluate();
   const double E = 5e6, nu = 0.3, G = E / (2 * (1 + nu)), lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
   const auto s = m.soil();
@@ -65,10 +65,10 @@ StrainRateErrors strain_rate_errors(sph::KernelGradient gradient) {
 
 // RMS relative error of sigma_yy against -rho g d over the particles between 0.2 H and 0.8 H of depth (the study's
 // measure, docs/accuracy.md), after the column of elastic_box settled (sudden gravity, damping 150 /s, 0.3 s).
-double column_stress_error(sph::KernelGradient gradient) {
-  sph::Model m = test_column::elastic_box(sph::GravityMode::sudden, 150.0);
+double column_stress_error(sph::soil::KernelGradient gradient) {
+  sph::soil::Model m = test_column::elastic_box(sph::GravityMode::sudden, 150.0);
   m.settings.kernel_gradient = gradient;
-  REQUIRE(sph::run(m, {}).stopped_because == "end_time");
+  REQUIRE(sph::soil::run(m, {}).stopped_because == "end_time");
   const auto s = m.soil();
   double err2 = 0.0, ref2 = 0.0;
   for (std::size_t i = 0; i < m.particles.size(); ++i) {
@@ -86,8 +86,8 @@ double column_stress_error(sph::KernelGradient gradient) {
 
 TEST_CASE("the corrected kernel gradient is exact for a linear velocity field inside, standard at the edges",
           "[sph][kernel_gradient]") {
-  const StrainRateErrors corrected = strain_rate_errors(sph::KernelGradient::corrected);
-  const StrainRateErrors standard = strain_rate_errors(sph::KernelGradient::standard);
+  const StrainRateErrors corrected = strain_rate_errors(sph::soil::KernelGradient::corrected);
+  const StrainRateErrors standard = strain_rate_errors(sph::soil::KernelGradient::standard);
   INFO("worst relative strain-rate error inside: corrected " << corrected.inside << ", standard " << standard.inside
                                                             << "; at the edges " << corrected.edges << ", "
                                                             << standard.edges);
@@ -101,8 +101,8 @@ TEST_CASE("the corrected kernel gradient is exact for a linear velocity field in
 TEST_CASE("the corrected kernel gradient brings the elastic column's stress closer to the closed form",
           "[sph][kernel_gradient][validation]") {
   // dx = 25 mm (H/40), cubic spline, h = 1.3 dx. Measured: 1.48 % standard, 0.55 % corrected (docs/accuracy.md).
-  const double standard = column_stress_error(sph::KernelGradient::standard);
-  const double corrected = column_stress_error(sph::KernelGradient::corrected);
+  const double standard = column_stress_error(sph::soil::KernelGradient::standard);
+  const double corrected = column_stress_error(sph::soil::KernelGradient::corrected);
   INFO("sigma_yy RMS error: standard " << standard << ", corrected " << corrected);
   CHECK(standard > 0.012);
   CHECK(corrected < 0.008);

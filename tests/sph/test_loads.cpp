@@ -32,8 +32,8 @@ constexpr double rho = test_column::density, g = 9.81, gamma_w = 9810.0, H = tes
 
 using test_column::elastic_box;
 
-sph::PiezometricLine level_line(double y) {
-  sph::PiezometricLine line;
+sph::soil::PiezometricLine level_line(double y) {
+  sph::soil::PiezometricLine line;
   line.x = {-1.0, 2.0};
   line.y = {y, y};
   line.unit_weight = gamma_w;
@@ -42,7 +42,7 @@ sph::PiezometricLine level_line(double y) {
 
 // Row averages of the effective and total sigma_yy against the closed form: water table at `table` (none: below
 // the column), a surcharge q (Pa) on the top, the soil's weight times `weight_factor` (1 - k_v).
-void check_saturated_profile(const sph::Model& m, double table, double q = 0.0, double weight_factor = 1.0) {
+void check_saturated_profile(const sph::soil::Model& m, double table, double q = 0.0, double weight_factor = 1.0) {
   const auto& p = m.particles;
   const auto soil = m.soil();
   const double dx = m.settings.particle_spacing;
@@ -73,7 +73,7 @@ void check_saturated_profile(const sph::Model& m, double table, double q = 0.0, 
   CHECK(checked > 30);
 }
 
-double largest_displacement(const sph::Model& m) {
+double largest_displacement(const sph::soil::Model& m) {
   double umax = 0;
   for (std::size_t i = 0; i < m.particles.size(); ++i)
     if (m.particles.kind[i] == 0)
@@ -88,7 +88,7 @@ TEST_CASE("loads: a saturated elastic column settles to the effective and total 
   for (const double table : {0.6, 1.3}) {  // inside the column; ponded 0.3 m above its top
     auto m = elastic_box(sph::GravityMode::sudden, 150.0);
     m.loads.water = level_line(table);
-    const auto sum = sph::run(m, {});
+    const auto sum = sph::soil::run(m, {});
     REQUIRE(sum.stopped_because == "end_time");
     check_saturated_profile(m, table);
   }
@@ -99,7 +99,7 @@ TEST_CASE("loads: a saturated column with its K0 initial stress is at rest", "[s
   // of the pore-pressure gradient balance: the column does not move, and its stress stays that of the closed form.
   auto m = elastic_box(sph::GravityMode::geostatic_k0, 0.0);
   m.loads.water = level_line(0.6);
-  const auto sum = sph::run(m, {});
+  const auto sum = sph::soil::run(m, {});
   REQUIRE(sum.stopped_because == "end_time");
   check_saturated_profile(m, 0.6);
   CHECK(largest_displacement(m) < 1e-3);
@@ -107,14 +107,14 @@ TEST_CASE("loads: a saturated column with its K0 initial stress is at rest", "[s
   auto dry = elastic_box(sph::GravityMode::geostatic_k0, 0.0);
   dry.loads.water = level_line(0.6);
   {
-    sph::SoilStep step(dry);
+    sph::soil::SoilStep step(dry);
     step.initialise();  // the initial stress of the saturated column
   }
   dry.loads.water.reset();
-  REQUIRE(sph::run(dry, {}).stopped_because == "end_time");
+  REQUIRE(sph::soil::run(dry, {}).stopped_because == "end_time");
   // The reference: a dry column with its K0 state moves by the lattice's own settling.
   auto reference = elastic_box(sph::GravityMode::geostatic_k0, 0.0);
-  REQUIRE(sph::run(reference, {}).stopped_because == "end_time");
+  REQUIRE(sph::soil::run(reference, {}).stopped_because == "end_time");
   INFO("largest displacement: saturated " << largest_displacement(m) << " m, its stress without the water force "
        << largest_displacement(dry) << " m, dry column " << largest_displacement(reference) << " m");
   CHECK(largest_displacement(m) < 1.1 * largest_displacement(reference));
@@ -125,8 +125,8 @@ TEST_CASE("loads: the submerged column equals the dry column of buoyant density"
   auto wet = elastic_box(sph::GravityMode::sudden, 150.0);
   wet.loads.water = level_line(1.5);
   auto buoyant = elastic_box(sph::GravityMode::sudden, 150.0, rho - gamma_w / g);
-  REQUIRE(sph::run(wet, {}).stopped_because == "end_time");
-  REQUIRE(sph::run(buoyant, {}).stopped_because == "end_time");
+  REQUIRE(sph::soil::run(wet, {}).stopped_because == "end_time");
+  REQUIRE(sph::soil::run(buoyant, {}).stopped_because == "end_time");
   const auto a = wet.soil(), b = buoyant.soil();
   std::map<std::uint32_t, std::size_t> index_of;
   for (std::size_t i = 0; i < buoyant.particles.size(); ++i) index_of[buoyant.particles.id[i]] = i;
@@ -144,9 +144,9 @@ TEST_CASE("loads: a strip surcharge over the whole top of a column adds q to its
           "[sph][validation][loads]") {
   const double q = 10e3;  // Pa: half the weight of the column
   auto m = elastic_box(sph::GravityMode::sudden, 150.0);
-  const std::size_t loaded = sph::add_strip_load(m.particles, m.loads, -1.0, 2.0, q, m.settings.particle_spacing);
+  const std::size_t loaded = sph::soil::add_strip_load(m.particles, m.loads, -1.0, 2.0, q, m.settings.particle_spacing);
   CHECK(loaded == 60);  // the three topmost particles of each of the 20 columns
-  REQUIRE(sph::run(m, {}).stopped_because == "end_time");
+  REQUIRE(sph::soil::run(m, {}).stopped_because == "end_time");
   check_saturated_profile(m, -1.0, q);
 }
 
@@ -156,19 +156,19 @@ TEST_CASE("loads: a trapezoidal strip or a line load adds its resultant over the
   // vertical resultant, over the column's width, however a load spreads below it.
   const double width = test_column::width;
   auto strip = elastic_box(sph::GravityMode::sudden, 150.0);  // 5 kPa at the left wall, 15 kPa at the right
-  CHECK(sph::add_strip_load(strip.particles, strip.loads, 0.0, width, 5e3, strip.settings.particle_spacing, 15e3) == 60);
-  REQUIRE(sph::run(strip, {}).stopped_because == "end_time");
+  CHECK(sph::soil::add_strip_load(strip.particles, strip.loads, 0.0, width, 5e3, strip.settings.particle_spacing, 15e3) == 60);
+  REQUIRE(sph::soil::run(strip, {}).stopped_because == "end_time");
   check_saturated_profile(strip, -1.0, 10e3);
   auto line = elastic_box(sph::GravityMode::sudden, 150.0);
-  CHECK(sph::add_line_load(line.particles, line.loads, 0.5 * width, 0.0, -2e3, line.settings.particle_spacing) == 9);
-  REQUIRE(sph::run(line, {}).stopped_because == "end_time");
+  CHECK(sph::soil::add_line_load(line.particles, line.loads, 0.5 * width, 0.0, -2e3, line.settings.particle_spacing) == 9);
+  REQUIRE(sph::soil::run(line, {}).stopped_because == "end_time");
   check_saturated_profile(line, -1.0, 2e3 / width);
 }
 
 TEST_CASE("loads: k_v lightens the column: sigma_yy = -(1 - k_v) rho g d", "[sph][validation][loads]") {
   auto m = elastic_box(sph::GravityMode::sudden, 150.0);
   m.loads.vertical_seismic_coefficient = 0.3;
-  REQUIRE(sph::run(m, {}).stopped_because == "end_time");
+  REQUIRE(sph::soil::run(m, {}).stopped_because == "end_time");
   check_saturated_profile(m, -1.0, 0.0, 0.7);
 }
 
@@ -178,7 +178,7 @@ TEST_CASE("loads: k_h accelerates a block on a frictionless floor at k_h g", "[s
   auto m = elastic_box(sph::GravityMode::geostatic_k0, 0.0, rho, false);
   m.loads.seismic_coefficient = -0.1;
   m.settings.end_time = 0.05;
-  REQUIRE(sph::run(m, {}).stopped_because == "end_time");
+  REQUIRE(sph::soil::run(m, {}).stopped_because == "end_time");
   double momentum = 0, mass = 0;
   for (std::size_t i = 0; i < m.particles.size(); ++i)
     if (m.particles.kind[i] == 0) {

@@ -42,7 +42,7 @@ struct Lattice {
   sph::CellSortedSet sorted;
   Lattice(int nx, int ny) {
     for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) set.add((i + 0.5) * dx, (j + 0.5) * dx, 1.5e-3, 1500.0, 0, sph::ParticleKind::soil);
+      for (int i = 0; i < nx; ++i) set.add((i + 0.5) * dx, (j + 0.5) * dx, 1.5e-3, 1500.0, 0, sph::ParticleKind::material);
     sorted.reserve(set);
     sorted.sort(set, re);
   }
@@ -460,7 +460,7 @@ TEST_CASE("mps static effective pressure of eqs. 18-19 is rho_b g times the dept
   sph::ParticleSet set;
   for (int k = 0; k < 10; ++k)
     for (int j = 0; j < 20 - k; ++j)
-      set.add((k + 0.5) * dx, (j + 0.5) * dx, 1.5e-3, 1500.0, 0, sph::ParticleKind::soil);
+      set.add((k + 0.5) * dx, (j + 0.5) * dx, 1.5e-3, 1500.0, 0, sph::ParticleKind::material);
   auto index = [&](int k, int j) {
     for (std::size_t i = 0; i < set.size(); ++i)
       if (std::abs(set.x[i] - (k + 0.5) * dx) < 1e-9 && std::abs(set.y[i] - (j + 0.5) * dx) < 1e-9) return i;
@@ -558,7 +558,7 @@ TEST_CASE("mps settings validate and name the setting that is wrong", "[mps]") {
 
 TEST_CASE("mps fields register once in the particle set", "[mps]") {
   sph::ParticleSet set;
-  set.add(0.0, 0.0, 1.0, 1500.0, 0, sph::ParticleKind::soil);
+  set.add(0.0, 0.0, 1.0, 1500.0, 0, sph::ParticleKind::material);
   const sph::mps::Fields a = sph::mps::Fields::register_in(set);
   const sph::mps::Fields b = sph::mps::Fields::register_in(set);
   CHECK(set.field_count() == 9);  // pressure, the two listing positions and six derived fields

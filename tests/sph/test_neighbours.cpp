@@ -21,7 +21,7 @@ sph::ParticleSet scattered(std::size_t n, double x_lo, double x_hi, double y_lo,
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> ux(x_lo, x_hi), uy(y_lo, y_hi);
   sph::ParticleSet set;
-  for (std::size_t i = 0; i < n; ++i) set.add(ux(rng), uy(rng), 1.0, 1000.0, 0, sph::ParticleKind::soil);
+  for (std::size_t i = 0; i < n; ++i) set.add(ux(rng), uy(rng), 1.0, 1000.0, 0, sph::ParticleKind::material);
   return set;
 }
 

@@ -9,7 +9,7 @@
 namespace test_settings_and_fill {
 
 TEST_CASE("invalid settings are refused with a message naming the setting", "[sph][settings]") {
-  sph::Settings s;
+  sph::soil::Settings s;
   s.particle_spacing = 0.01;
   CHECK_NOTHROW(s.validate());
   s.h_over_dx = 0;
@@ -20,13 +20,13 @@ TEST_CASE("invalid settings are refused with a message naming the setting", "[sp
   s.particle_spacing = 0.01;
   s.cfl = 2;
   CHECK_THROWS_WITH(s.validate(), Catch::Contains("cfl"));
-  sph::Material m;
+  sph::soil::Material m;
   m.poisson_ratio = 0.5;
   CHECK_THROWS_WITH(m.validate(), Catch::Contains("poisson_ratio"));
 }
 
 TEST_CASE("memory estimate grows linearly and is sensible", "[sph][settings]") {
-  const auto a = sph::estimate_memory_bytes(100000), b = sph::estimate_memory_bytes(200000);
+  const auto a = sph::soil::estimate_memory_bytes(100000), b = sph::soil::estimate_memory_bytes(200000);
   CHECK(b > a);
   CHECK(a > 100000 * 200);    // at least the state arrays
   CHECK(a < 100000 * 2000);   // and not absurd
@@ -55,16 +55,16 @@ TEST_CASE("polygon fill is cell-centred and walls cover the kernel support", "[s
 }
 
 TEST_CASE("time-step estimate equals the stepper's bound at rest", "[sph][settings]") {
-  sph::Model m;
-  m.materials.push_back(sph::Material{});
+  sph::soil::Model m;
+  m.materials.push_back(sph::soil::Material{});
   m.settings.particle_spacing = 0.1;
   sph::add_soil(m.particles, sph::lattice_points_in_region(0, 0, 1, 1, 0.1, [](double, double) { return true; }), 0.1, 0,
                 m.materials[0].density);
-  const double c = sph::MaterialConstants::from(m.materials[0]).sound_speed;
+  const double c = sph::soil::MaterialConstants::from(m.materials[0]).sound_speed;
   // the default cfl 0.8 (Verlet), h = 1.2 dx, alpha = 0.1
-  CHECK(sph::time_step_estimate(m) == Approx(0.8 * 0.12 / (c * 1.12)).epsilon(1e-12));
-  m.settings.use_integration(sph::TimeIntegration::predictor_corrector);
-  CHECK(sph::time_step_estimate(m) == Approx(0.2 * 0.12 / (c * 1.12)).epsilon(1e-12));
+  CHECK(sph::soil::time_step_estimate(m) == Approx(0.8 * 0.12 / (c * 1.12)).epsilon(1e-12));
+  m.settings.use_integration(sph::soil::TimeIntegration::predictor_corrector);
+  CHECK(sph::soil::time_step_estimate(m) == Approx(0.2 * 0.12 / (c * 1.12)).epsilon(1e-12));
 }
 
 }  // namespace test_settings_and_fill

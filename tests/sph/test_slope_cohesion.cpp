@@ -17,8 +17,8 @@ namespace {
 
 double max_displacement_after(double cohesion, double t_end, sph::GravityMode mode = sph::GravityMode::geostatic_k0,
                                double youngs = 100e6, double dx = 0.5, double phi = 20) {
-  sph::Model m;
-  sph::Material soil;
+  sph::soil::Model m;
+  sph::soil::Material soil;
   soil.name = "slope soil";
   soil.density = 2100;
   soil.youngs_modulus = youngs;
@@ -41,7 +41,7 @@ double max_displacement_after(double cohesion, double t_end, sph::GravityMode mo
   box.height = 12;
   box.right = false;
   sph::add_box_walls(m.particles, box, s.particle_spacing, s.smoothing_length(), 0, soil.density);
-  const auto sum = sph::run(m, {});
+  const auto sum = sph::soil::run(m, {});
   INFO(sum.diagnostic);
   REQUIRE(sum.stopped_because == "end_time");
   double umax = 0;

@@ -45,9 +45,9 @@ double scaled_max_wave_operator(double h_over_dx) {
 
 // A purely elastic block (1 m x 0.5 m, E = 5 MPa) under sudden gravity in a free-slip box: it rings with the
 // P-wave; no plasticity or viscosity beyond the default artificial viscosity.
-sph::Model ringing_block(sph::TimeIntegration integration) {
-  sph::Model m;
-  sph::Material mat;
+sph::soil::Model ringing_block(sph::soil::TimeIntegration integration) {
+  sph::soil::Model m;
+  sph::soil::Material mat;
   mat.name = "elastic";
   mat.density = 2000;
   mat.youngs_modulus = 5e6;
@@ -57,7 +57,7 @@ sph::Model ringing_block(sph::TimeIntegration integration) {
   auto& s = m.settings;
   s.use_integration(integration);
   s.particle_spacing = 0.025;
-  s.wall_slip = sph::WallSlip::free_slip;
+  s.wall_slip = sph::soil::WallSlip::free_slip;
   s.output_interval = 0;
   sph::add_soil(m.particles,
                 sph::lattice_points_in_region(0, 0, 0.5, 1.0, s.particle_spacing, [](double, double) { return true; }),
@@ -73,9 +73,9 @@ sph::Model ringing_block(sph::TimeIntegration integration) {
 
 // Runs `steps` steps at the given cfl (set after the stepper validated the model: above the accepted range on
 // purpose) and returns the largest speed seen (infinity once the run is no longer finite).
-double largest_speed(sph::TimeIntegration integration, double cfl, int steps) {
-  sph::Model m = ringing_block(integration);
-  sph::SoilStep step(m);
+double largest_speed(sph::soil::TimeIntegration integration, double cfl, int steps) {
+  sph::soil::Model m = ringing_block(integration);
+  sph::soil::SoilStep step(m);
   step.initialise();
   m.settings.cfl = cfl;
   double vmax = 0;
@@ -91,7 +91,7 @@ double largest_speed(sph::TimeIntegration integration, double cfl, int steps) {
 
 TEST_CASE("time step: the dispersion bound of the verlet step lies above the largest accepted cfl for both kernels",
           "[sph][time_step]") {
-  const double viscosity_factor = 1.0 + 1.2 * sph::ArtificialViscosity{}.alpha;
+  const double viscosity_factor = 1.0 + 1.2 * sph::soil::ArtificialViscosity{}.alpha;
   for (const double ratio : {1.0, 1.2, 1.3, 1.5, 2.0}) {
     INFO("h/dx = " << ratio);
     const double cubic = scaled_max_wave_operator<sph::CubicSplineKernel>(ratio);
@@ -101,8 +101,8 @@ TEST_CASE("time step: the dispersion bound of the verlet step lies above the lar
     CHECK(wendland == Approx(1.1).margin(0.06));
     for (const double scaled : {cubic, wendland}) {
       const double bound = 2.0 * viscosity_factor / scaled;
-      CHECK(bound > 1.2 * sph::max_cfl(sph::TimeIntegration::verlet));     // 20 % margin at the accepted maximum
-      CHECK(bound > 1.9 * sph::default_cfl(sph::TimeIntegration::verlet));  // the default keeps about half
+      CHECK(bound > 1.2 * sph::soil::max_cfl(sph::soil::TimeIntegration::verlet));     // 20 % margin at the accepted maximum
+      CHECK(bound > 1.9 * sph::soil::default_cfl(sph::soil::TimeIntegration::verlet));  // the default keeps about half
     }
   }
 }
@@ -110,15 +110,15 @@ TEST_CASE("time step: the dispersion bound of the verlet step lies above the lar
 TEST_CASE("time step: the verlet step rings stably at its largest accepted cfl and diverges above the dispersion bound",
           "[sph][time_step]") {
   // The dispersion bound for the cubic spline at h = 1.2 dx is cfl 2.1 (test above): 1.6 is accepted, 2.6 is not.
-  const double stable = largest_speed(sph::TimeIntegration::verlet, sph::max_cfl(sph::TimeIntegration::verlet), 1000);
+  const double stable = largest_speed(sph::soil::TimeIntegration::verlet, sph::soil::max_cfl(sph::soil::TimeIntegration::verlet), 1000);
   CHECK(stable < 1.0);  // a 1 m elastic column under sudden gravity: v ~ g H / c_P ~ 0.2 m/s
-  CHECK(largest_speed(sph::TimeIntegration::verlet, 2.6, 1000) > 10.0);  // fifty times the physical speed
+  CHECK(largest_speed(sph::soil::TimeIntegration::verlet, 2.6, 1000) > 10.0);  // fifty times the physical speed
 }
 
 TEST_CASE("time step: the predictor-corrector step is stable at its default and diverges below the verlet default",
           "[sph][time_step]") {
-  CHECK(largest_speed(sph::TimeIntegration::predictor_corrector, 0.2, 1000) < 1.0);
-  CHECK(largest_speed(sph::TimeIntegration::predictor_corrector, 1.0, 1000) > 10.0);
+  CHECK(largest_speed(sph::soil::TimeIntegration::predictor_corrector, 0.2, 1000) < 1.0);
+  CHECK(largest_speed(sph::soil::TimeIntegration::predictor_corrector, 1.0, 1000) > 10.0);
 }
 
 namespace {
@@ -128,15 +128,15 @@ struct CollapseEnergy {
 };
 
 // The aluminium-bar collapse of Bui et al. (2008) at dx = 10 mm to 1 s with the given integration and cfl.
-CollapseEnergy collapse_energy(sph::TimeIntegration integration, double cfl) {
-  sph::ColumnCollapseCase c;
+CollapseEnergy collapse_energy(sph::soil::TimeIntegration integration, double cfl) {
+  sph::soil::ColumnCollapseCase c;
   c.dx = 0.01;
-  sph::Model m = sph::make_column_collapse(c);
+  sph::soil::Model m = sph::soil::make_column_collapse(c);
   m.settings.use_integration(integration);
   m.settings.stress_substeps = 1;  // one stress update per step: the energy audit of each integration's own update
   m.settings.cfl = cfl;
   m.settings.output_interval = 0;
-  sph::SoilStep step(m);
+  sph::soil::SoilStep step(m);
   step.initialise();
   const double start = step.energies().potential;
   while (m.state.time < c.end_time) {
@@ -144,7 +144,7 @@ CollapseEnergy collapse_energy(sph::TimeIntegration integration, double cfl) {
     REQUIRE(step.check_health().ok);
   }
   const sph::Energies e = step.energies();
-  return {start - e.potential, e.plastic_dissipation, e.kinetic, sph::measure_deposit(m).runout};
+  return {start - e.potential, e.plastic_dissipation, e.kinetic, sph::soil::measure_deposit(m).runout};
 }
 
 }  // namespace
@@ -157,9 +157,9 @@ TEST_CASE("time step: the plastic work of a granular collapse stays below the en
   // stresses, the audit holds at every step. What is left of the step's effect is the return's own first-order
   // dissipation (a stress moving along the curved cone overshoots it by O(dt^2) per step): here the plastic work
   // is 0.745, 0.839 and 0.754 of the released energy at verlet 0.4, verlet 1.6 and predictor-corrector 0.2.
-  const CollapseEnergy small = collapse_energy(sph::TimeIntegration::verlet, 0.4);
-  const CollapseEnergy large = collapse_energy(sph::TimeIntegration::verlet, 1.6);
-  const CollapseEnergy pc = collapse_energy(sph::TimeIntegration::predictor_corrector, 0.2);
+  const CollapseEnergy small = collapse_energy(sph::soil::TimeIntegration::verlet, 0.4);
+  const CollapseEnergy large = collapse_energy(sph::soil::TimeIntegration::verlet, 1.6);
+  const CollapseEnergy pc = collapse_energy(sph::soil::TimeIntegration::predictor_corrector, 0.2);
   for (const CollapseEnergy& e : {small, large, pc}) {
     INFO("released " << e.released << " J/m, plastic " << e.plastic << " J/m, kinetic " << e.kinetic
                      << " J/m, run-out " << e.runout << " m");
@@ -177,14 +177,14 @@ namespace {
 // The collapse of collapse_energy at verlet cfl 1.6 with the stress update in `substeps` sub-steps: the largest
 // kinetic energy over the run (J/m) and the front of the deposit (third-furthest soil particle, m).
 std::pair<double, double> collapse_with_substeps(double cfl, int substeps) {
-  sph::ColumnCollapseCase c;
+  sph::soil::ColumnCollapseCase c;
   c.dx = 0.01;
-  sph::Model m = sph::make_column_collapse(c);
-  m.settings.integration = sph::TimeIntegration::verlet;
+  sph::soil::Model m = sph::soil::make_column_collapse(c);
+  m.settings.integration = sph::soil::TimeIntegration::verlet;
   m.settings.cfl = cfl;
   m.settings.stress_substeps = substeps;
   m.settings.output_interval = 0;
-  sph::SoilStep step(m);
+  sph::soil::SoilStep step(m);
   step.initialise();
   double peak = 0;
   while (m.state.time < c.end_time) {
@@ -221,20 +221,20 @@ TEST_CASE("time step: a particle that stays elastic takes the one stress update 
           "[sph][time_step][substeps]") {
   // The same column of collapse_with_substeps made elastic: no particle yields, so 16 sub-steps change nothing.
   const auto run = [](int substeps) {
-    sph::ColumnCollapseCase c;
+    sph::soil::ColumnCollapseCase c;
     c.dx = 0.01;
-    sph::Model m = sph::make_column_collapse(c);
+    sph::soil::Model m = sph::soil::make_column_collapse(c);
     for (auto& mat : m.materials) mat.plastic = false;
-    m.settings.integration = sph::TimeIntegration::verlet;
+    m.settings.integration = sph::soil::TimeIntegration::verlet;
     m.settings.cfl = 1.6;
     m.settings.stress_substeps = substeps;
     m.settings.output_interval = 0;
-    sph::SoilStep step(m);
+    sph::soil::SoilStep step(m);
     step.initialise();
     for (int k = 0; k < 300; ++k) step.advance(step.stable_time_step());
     return m;
   };
-  const sph::Model one = run(1), sub = run(16);
+  const sph::soil::Model one = run(1), sub = run(16);
   const auto a = one.soil(), b = sub.soil();
   std::size_t differ = 0;
   for (std::size_t i = 0; i < one.particles.size(); ++i)
@@ -247,13 +247,13 @@ TEST_CASE("time step: a particle that stays elastic takes the one stress update 
 }
 
 TEST_CASE("time step: a stress update in sub-steps is refused with the predictor-corrector", "[sph][time_step]") {
-  sph::Settings s;
-  s.use_integration(sph::TimeIntegration::predictor_corrector);
+  sph::soil::Settings s;
+  s.use_integration(sph::soil::TimeIntegration::predictor_corrector);
   s.particle_spacing = 0.01;
   s.stress_substeps = 4;
   CHECK_THROWS_WITH(s.validate(), Catch::Contains("needs the verlet time integration"));
-  s.integration = sph::TimeIntegration::verlet;
-  s.cfl = sph::default_cfl(s.integration);
+  s.integration = sph::soil::TimeIntegration::verlet;
+  s.cfl = sph::soil::default_cfl(s.integration);
   CHECK_NOTHROW(s.validate());
   s.stress_substeps = 65;
   CHECK_THROWS_WITH(s.validate(), Catch::Contains("[1, 64]"));

@@ -40,7 +40,7 @@ sph::fluid::Model build_isph_model(const IsphAnalysis& a) {
   return model;
 }
 
-double fluid_mass(const sph::ParticleSet& p) { return p.total_mass(sph::ParticleKind::soil); }  // kind 0: fluid
+double fluid_mass(const sph::ParticleSet& p) { return p.total_mass(sph::ParticleKind::material); }  // kind 0: fluid
 
 double gravity_of(const IsphAnalysis& a) { return std::hypot(a.settings.gravity_x, a.settings.gravity_y); }
 
@@ -49,7 +49,7 @@ void echo_settings(const IsphAnalysis& a, const sph::fluid::Model& model, IsphSt
   result.kernel = sphslope::name_of(sph::kernel_names, a.settings.kernel);
   result.particle_spacing = a.settings.particle_spacing;
   result.smoothing_length = a.settings.smoothing_length();
-  result.fluid_particles = model.particles.count(sph::ParticleKind::soil);
+  result.fluid_particles = model.particles.count(sph::ParticleKind::material);
   result.wall_particles = model.particles.size() - result.fluid_particles;
   result.fluid_mass_start = fluid_mass(model.particles);
 }
@@ -137,7 +137,7 @@ void finish_result(const IsphAnalysis& a, const sph::fluid::Model& model, const 
   result.past_walls_most = std::max(crossing.most(), result.past_walls_end);
   result.past_walls_first_time = crossing.first_time();
   result.still_tank = still_tank_check(model, a);
-  result.fluid_removed = model.fluid_particles_built - model.particles.count(sph::ParticleKind::soil);
+  result.fluid_removed = model.fluid_particles_built - model.particles.count(sph::ParticleKind::material);
   result.fluid_mass_removed = model.fluid_mass_built - result.fluid_mass_end;
   result.fluid_energy_end = fluid_energy(model);
   const std::optional<FrontReference>& ref = a.outputs.front_reference;

@@ -39,7 +39,7 @@ sph::mps::Model build_mps_model(const MpsAnalysis& a) {
   return model;
 }
 
-double moving_mass(const sph::ParticleSet& p) { return p.total_mass(sph::ParticleKind::soil); }  // kind 0
+double moving_mass(const sph::ParticleSet& p) { return p.total_mass(sph::ParticleKind::material); }  // kind 0
 
 // The mass of the moving particles of material m inside the tank (its walls' inner faces, up to any height).
 double phase_mass_in_tank(const sph::ParticleSet& p, std::uint16_t m, const Tank& tank) {
@@ -112,7 +112,7 @@ MpsStageResult run_mps(const MpsAnalysis& a, const WorkflowOptions& options) {
   const double dx = a.settings.particle_spacing;
   MpsStageResult result;
   echo_settings(a, result);
-  result.moving_particles = model.particles.count(sph::ParticleKind::soil);
+  result.moving_particles = model.particles.count(sph::ParticleKind::material);
   result.wall_particles = model.particles.size() - result.moving_particles;
   result.mass_start = moving_mass(model.particles);
   for (std::uint16_t m = 0; m < a.materials.size(); ++m)

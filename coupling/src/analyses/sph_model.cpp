@@ -23,8 +23,8 @@ namespace coupling {
 
 namespace {
 
-sph::Material to_sph_material(const SoilMaterial& m) {
-  sph::Material out;
+sph::soil::Material to_sph_material(const SoilMaterial& m) {
+  sph::soil::Material out;
   out.name = m.name;
   out.density = m.density();
   out.youngs_modulus = m.youngs_modulus.value_or(0.0);
@@ -66,7 +66,7 @@ std::size_t wall_estimate(double width, double height, const WallSides& sides, d
 
 // Why a case of this many particles must be refused (particle or memory limit), or nothing.
 std::optional<std::string> size_refusal(const SphAnalysis& analysis, std::size_t particles) {
-  const std::size_t bytes = sph::estimate_memory_bytes(particles);
+  const std::size_t bytes = sph::soil::estimate_memory_bytes(particles);
   const std::string count = particles >= particle_count_cap ? std::string("more than 1e15")
                                                             : "about " + std::to_string(particles);
   if (analysis.max_particles > 0 && particles > analysis.max_particles) {
@@ -88,14 +88,14 @@ void refuse_if_too_large(const SphAnalysis& analysis, std::size_t particles) {
 }
 
 // Time step and planned step count from the materials and settings alone (no particles needed).
-void plan_steps(const std::vector<sph::Material>& materials, const sph::Settings& settings, SphPlan& plan) {
-  sph::Model model;
+void plan_steps(const std::vector<sph::soil::Material>& materials, const sph::soil::Settings& settings, SphPlan& plan) {
+  sph::soil::Model model;
   model.materials = materials;
   model.settings = settings;
   plan.p_wave_speed = 0.0;
   for (const auto& m : materials)
-    plan.p_wave_speed = std::max(plan.p_wave_speed, sph::MaterialConstants::from(m).sound_speed);
-  plan.time_step = sph::time_step_estimate(model);
+    plan.p_wave_speed = std::max(plan.p_wave_speed, sph::soil::MaterialConstants::from(m).sound_speed);
+  plan.time_step = sph::soil::time_step_estimate(model);
   plan.planned_steps = settings.end_time / plan.time_step;
 }
 
@@ -134,7 +134,7 @@ SectionFill fill_section(const slope::Section& section, double dx) {
 std::optional<SphPlan> plan_sph(const Scene& scene, const SphAnalysis& analysis) {
   SphPlan plan;
   const double dx = analysis.settings.particle_spacing;
-  std::vector<sph::Material> materials;
+  std::vector<sph::soil::Material> materials;
   if (scene.section) {
     const auto& section = scene.section->section;
     for (const auto& m : scene.section->materials) {
@@ -160,7 +160,7 @@ std::optional<SphPlan> plan_sph(const Scene& scene, const SphAnalysis& analysis)
     return std::nullopt;
   }
   if (materials.empty()) return std::nullopt;
-  plan.memory_bytes = sph::estimate_memory_bytes(plan.soil_particles + plan.wall_particles);
+  plan.memory_bytes = sph::soil::estimate_memory_bytes(plan.soil_particles + plan.wall_particles);
   plan_steps(materials, analysis.settings, plan);
   return plan;
 }
@@ -217,7 +217,7 @@ double particle_density(const SoilMaterial& material, const slope::Section& sect
 }
 
 // A slope section: its soil on the cell-centred lattice and the walls of the section box.
-void build_section_particles(const SceneSection& scene_section, const SphAnalysis& analysis, sph::Model& model,
+void build_section_particles(const SceneSection& scene_section, const SphAnalysis& analysis, sph::soil::Model& model,
                              SphSize& counted) {
   const double dx = model.settings.particle_spacing, h = model.settings.smoothing_length();
   const auto& section = scene_section.section;
@@ -236,7 +236,7 @@ void build_section_particles(const SceneSection& scene_section, const SphAnalysi
     const double density = particle_density(scene_section.materials[fill.materials[i]], section, water_carried,
                                             fill.points[i].x, fill.points[i].y);
     model.particles.add(fill.points[i].x, fill.points[i].y, density * dx * dx, density,
-                        static_cast<std::uint16_t>(fill.materials[i]), sph::ParticleKind::soil);
+                        static_cast<std::uint16_t>(fill.materials[i]), sph::ParticleKind::material);
   }
   counted.soil_particles = fill.points.size();
   const sph::BoxWalls box = box_walls(section.x_min(), section.x_min() + dx * std::floor(width / dx + 1e-9),
@@ -246,7 +246,7 @@ void build_section_particles(const SceneSection& scene_section, const SphAnalysi
 }
 
 // The soil of one body: the lattice points strictly inside its polygon.
-std::size_t add_body(const ParticleBody& body, const sph::Point& anchor, sph::Model& model) {
+std::size_t add_body(const ParticleBody& body, const sph::Point& anchor, sph::soil::Model& model) {
   const double dx = model.settings.particle_spacing;
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   CGAL::Polygon_2<Kernel> polygon;
@@ -269,7 +269,7 @@ std::size_t add_body(const ParticleBody& body, const sph::Point& anchor, sph::Mo
 
 // A particle scene: every body on one lattice, and the wall box when there is one.
 void build_body_particles(const std::vector<ParticleBody>& bodies, const std::optional<WallBox>& walls,
-                          const SphAnalysis& analysis, sph::Model& model, SphSize& counted) {
+                          const SphAnalysis& analysis, sph::soil::Model& model, SphSize& counted) {
   const double dx = model.settings.particle_spacing, h = model.settings.smoothing_length();
   double area = 0.0;
   for (const auto& body : bodies) area += polygon_area(body.polygon);
@@ -295,9 +295,9 @@ void build_body_particles(const std::vector<ParticleBody>& bodies, const std::op
 // The section's loads on the SPH model (sph/soil/loads.hpp), except those analyses.sph.ignore_loads leaves out: the
 // piezometric line, k_h toward the lower end of the ground (the direction limit equilibrium slides) and k_v, the
 // strip surcharges and the line loads on the ground's particles.
-void apply_section_loads(const slope::Section& section, const SphAnalysis& analysis, sph::Model& model) {
+void apply_section_loads(const slope::Section& section, const SphAnalysis& analysis, sph::soil::Model& model) {
   if (section.water && sph_carries(analysis, "water")) {
-    sph::PiezometricLine line;
+    sph::soil::PiezometricLine line;
     for (const auto& p : section.water->piezometric_line) {
       line.x.push_back(p.x);
       line.y.push_back(p.y);
@@ -311,19 +311,19 @@ void apply_section_loads(const slope::Section& section, const SphAnalysis& analy
   const double dx = model.settings.particle_spacing;
   if (sph_carries(analysis, "surcharges"))
     for (const auto& strip : section.surcharges)
-      sph::add_strip_load(model.particles, model.loads, strip.from_x, strip.to_x, strip.pressure, dx,
+      sph::soil::add_strip_load(model.particles, model.loads, strip.from_x, strip.to_x, strip.pressure, dx,
                           strip.pressure_end ? *strip.pressure_end : std::nan(""));
   if (sph_carries(analysis, "line_loads"))
     for (const auto& load : section.line_loads)
-      sph::add_line_load(model.particles, model.loads, load.x, load.force_x, load.force_y, dx);
+      sph::soil::add_line_load(model.particles, model.loads, load.x, load.force_x, load.force_y, dx);
 }
 
 }  // namespace
 
-sph::Model build_sph_model(const Scene& scene, SphSize* size) {
+sph::soil::Model build_sph_model(const Scene& scene, SphSize* size) {
   const std::optional<SphAnalysis>& analysis = scene.analyses.sph;
   if (!analysis) throw SceneError({"analyses.sph: missing (the scene asks for no SPH analysis)"});
-  sph::Model model;
+  sph::soil::Model model;
   model.settings = analysis->settings;
   SphSize counted;
   if (scene.section) {
@@ -334,7 +334,7 @@ sph::Model build_sph_model(const Scene& scene, SphSize* size) {
   } else {
     throw SceneError({"section: missing (an SPH analysis needs a \"section\" or \"bodies\")"});
   }
-  counted.memory_bytes = sph::estimate_memory_bytes(model.particles.size());
+  counted.memory_bytes = sph::soil::estimate_memory_bytes(model.particles.size());
   if (size) *size = counted;
   return model;
 }

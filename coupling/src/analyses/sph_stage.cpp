@@ -91,9 +91,9 @@ void refuse_before_start(const Scene& scene, const SphAnalysis& analysis) {
 
 // The model's size, kernel, wave speed, time step and gravity, and the plan on the log.
 // The loads of the model besides its weight, one sentence each, so that a reader of the report can check them.
-std::vector<std::string> loads_carried(const sph::Model& model) {
+std::vector<std::string> loads_carried(const sph::soil::Model& model) {
   std::vector<std::string> out;
-  const sph::SoilLoads& loads = model.loads;
+  const sph::soil::SoilLoads& loads = model.loads;
   if (loads.water)
     out.push_back("pore water below the piezometric line (gamma_w = " +
                   format_number(loads.water->unit_weight / 1000.0) +
@@ -121,13 +121,13 @@ std::vector<std::string> loads_carried(const sph::Model& model) {
   return out;
 }
 
-SphModelFacts model_facts(const sph::Model& model, const SphSize& size, const SphAnalysis& analysis,
+SphModelFacts model_facts(const sph::soil::Model& model, const SphSize& size, const SphAnalysis& analysis,
                           std::ostream* log) {
   SphModelFacts f;
   for (const auto& m : model.materials)
-    f.p_wave_speed_m_s = std::max(f.p_wave_speed_m_s, sph::MaterialConstants::from(m).sound_speed);
+    f.p_wave_speed_m_s = std::max(f.p_wave_speed_m_s, sph::soil::MaterialConstants::from(m).sound_speed);
   f.smoothing_length_m = model.settings.smoothing_length();
-  f.time_step_estimate_s = sph::time_step_estimate(model);
+  f.time_step_estimate_s = sph::soil::time_step_estimate(model);
   const double planned_steps = model.settings.end_time / f.time_step_estimate_s;
   f.planned_steps = std::llround(planned_steps);
   f.particles = model.particles.size();
@@ -153,12 +153,12 @@ SphModelFacts model_facts(const sph::Model& model, const SphSize& size, const Sp
 }
 
 // --resume: the model continues from the run folder's checkpoint.
-void resume_from_checkpoint(const SphStageOptions& options, sph::Model& model) {
+void resume_from_checkpoint(const SphStageOptions& options, sph::soil::Model& model) {
   if (!options.output_dir) throw SceneError({"--resume needs the run folder (-o DIR) that holds checkpoint.bin"});
   const auto checkpoint = *options.output_dir / "checkpoint.bin";
   if (!std::filesystem::exists(checkpoint))
     throw SceneError({"--resume: no checkpoint at " + checkpoint.string() + " (start the run without --resume)"});
-  sph::read_checkpoint(checkpoint.string(), model);
+  sph::soil::read_checkpoint(checkpoint.string(), model);
   if (options.log)
     *options.log << "sph: resuming at t = " << model.state.time << " s (step " << model.state.step << ")\n";
 }
@@ -174,7 +174,7 @@ sph::RunOptions run_options_of(const SphAnalysis& analysis, const SphStageOption
 
 
 // Final energies and the energy balance, and the warnings of the run (loads left out, energy created).
-void check_energies(const Scene& scene, const sph::Model& model, SphStageResult& result) {
+void check_energies(const Scene& scene, const sph::soil::Model& model, SphStageResult& result) {
   const sph::RunSummary& summary = result.summary;
   result.energies_finite = std::isfinite(summary.kinetic_energy) && std::isfinite(summary.potential_energy) &&
                            std::isfinite(summary.plastic_dissipation);
@@ -209,13 +209,13 @@ void judge_run(SphStageResult& result) {
 }
 
 // The soil particles at the end, for surface extraction.
-ParticleSnapshot soil_snapshot(const sph::Model& model) {
+ParticleSnapshot soil_snapshot(const sph::soil::Model& model) {
   const auto& p = model.particles;
-  const sph::ConstSoilArrays soil = model.soil();
+  const sph::soil::ConstSoilArrays soil = model.soil();
   ParticleSnapshot snapshot;
   snapshot.spacing = model.settings.particle_spacing;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::soil)) continue;
+    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::material)) continue;
     snapshot.x.push_back(p.x[i]);
     snapshot.y.push_back(p.y[i]);
     snapshot.x0.push_back(p.x0[i]);
@@ -252,14 +252,14 @@ SphStageResult run_sph_stage(const Scene& scene, const SphStageOptions& options)
   const SphAnalysis& analysis = *scene.analyses.sph;
   refuse_before_start(scene, analysis);
   SphSize size;
-  sph::Model model = build_sph_model(scene, &size);
+  sph::soil::Model model = build_sph_model(scene, &size);
 
   SphStageResult result;
   result.model = model_facts(model, size, analysis, options.log);
   const sph::RunOptions run_options = run_options_of(analysis, options);
   if (options.resume) resume_from_checkpoint(options, model);
 
-  result.summary = sph::run(model, run_options, run_callbacks(options.log, "sph"));
+  result.summary = sph::soil::run(model, run_options, run_callbacks(options.log, "sph"));
   check_energies(scene, model, result);
   if (options.log)
     for (const auto& w : result.warnings) *options.log << "sph: warning: " << w << "\n";

@@ -134,7 +134,7 @@ SrmPlan plan_trials(const SceneSection& scene_section, const SrmOptions& options
 double max_soil_displacement(const sph::ParticleSet& p) {
   double worst = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::soil)) continue;
+    if (p.kind[i] != static_cast<std::uint8_t>(sph::ParticleKind::material)) continue;
     worst = std::max(worst, std::hypot(p.x[i] - p.x0[i], p.y[i] - p.y0[i]));
   }
   return worst;
@@ -189,7 +189,7 @@ void log_trial(const SrmTrial& trial, double factor, std::ostream* log) {
 // The failure oracle of the bisection: one damped SPH run of the slope with every strength divided by F.
 class TrialRunner {
  public:
-  TrialRunner(const sph::Model& pristine, const SrmPlan& plan, std::ostream* log, SrmJournal* journal)
+  TrialRunner(const sph::soil::Model& pristine, const SrmPlan& plan, std::ostream* log, SrmJournal* journal)
       : pristine_(pristine), plan_(plan), log_(log), journal_(journal) {
     for (const auto& m : pristine.materials) {
       cohesion_.push_back(m.cohesion);
@@ -204,10 +204,10 @@ class TrialRunner {
         if (log_) *log_ << "srm: F = " << format_number(factor) << ": from " << "srm_trials.json (finished before)\n";
         return *done;
       }
-    sph::Model model = reduced_model(factor);
+    sph::soil::Model model = reduced_model(factor);
     if (journal_) {
       if (journal_->can_continue(factor)) {
-        sph::read_checkpoint(journal_->checkpoint().string(), model);
+        sph::soil::read_checkpoint(journal_->checkpoint().string(), model);
         if (log_)
           *log_ << "srm: F = " << format_number(factor) << ": continuing at t = " << model.state.time << " s\n";
       }
@@ -218,7 +218,7 @@ class TrialRunner {
     sph::RunCallbacks callbacks;
     callbacks.interrupt = [&] { return interrupted = interrupt_pending(); };
     callbacks.observers.push_back(&displacement);
-    const sph::RunSummary summary = sph::run(model, run_options(), callbacks);
+    const sph::RunSummary summary = sph::soil::run(model, run_options(), callbacks);
     if (interrupted)
       throw std::runtime_error("interrupted during the trial at F = " + format_number(factor) +
                                (journal_ ? "; its state is saved: continue with --resume (same scene, same -o DIR)"
@@ -237,8 +237,8 @@ class TrialRunner {
   }
 
  private:
-  sph::Model reduced_model(double factor) const {
-    sph::Model model = pristine_;
+  sph::soil::Model reduced_model(double factor) const {
+    sph::soil::Model model = pristine_;
     for (std::size_t k = 0; k < model.materials.size(); ++k) {
       model.materials[k].cohesion = cohesion_[k] / factor;
       model.materials[k].friction_angle_deg = reduce_angle_deg(friction_[k], factor);
@@ -257,7 +257,7 @@ class TrialRunner {
     return options;
   }
 
-  const sph::Model& pristine_;
+  const sph::soil::Model& pristine_;
   const SrmPlan& plan_;
   std::ostream* log_;
   SrmJournal* journal_;  // null: no output folder
@@ -280,7 +280,7 @@ SrmBracket initial_bracket(const SrmOptions& options, std::optional<double> lem_
 }
 
 // What the trials depend on: a journal written for other values cannot be resumed.
-nlohmann::json journal_fingerprint(const sph::Model& pristine, const SrmPlan& plan, const SrmBracket& bracket,
+nlohmann::json journal_fingerprint(const sph::soil::Model& pristine, const SrmPlan& plan, const SrmBracket& bracket,
                                    const SrmOptions& options) {
   nlohmann::json strengths = nlohmann::json::array();
   for (const auto& m : pristine.materials)
@@ -313,7 +313,7 @@ SrmResult run_strength_reduction(const Scene& scene, const SrmOptions& options, 
   if (!scene.section || !scene.analyses.sph) throw SceneError({"analyses.srm: needs a slope section and analyses.sph"});
 
   SphSize size;
-  sph::Model pristine = build_sph_model(scene, &size);
+  sph::soil::Model pristine = build_sph_model(scene, &size);
   const SrmPlan plan = plan_trials(*scene.section, options);
   pristine.settings.gravity_mode = sph::GravityMode::geostatic_k0;
   pristine.settings.damping = plan.damping;

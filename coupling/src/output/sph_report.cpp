@@ -13,7 +13,7 @@ void write_model(const SphModelFacts& f, nlohmann::json& report) {
   report["particle_spacing_m"] = f.particle_spacing_m;
   report["smoothing_length_m"] = f.smoothing_length_m;
   report["kernel"] = sphslope::name_of(sph::kernel_names, f.kernel);
-  report["kernel_gradient"] = sphslope::name_of(sph::kernel_gradient_names, f.kernel_gradient);
+  report["kernel_gradient"] = sphslope::name_of(sph::soil::kernel_gradient_names, f.kernel_gradient);
   report["stress_substeps"] = f.stress_substeps;
   report["p_wave_speed_m_s"] = f.p_wave_speed_m_s;
   report["time_step_estimate_s"] = f.time_step_estimate_s;

@@ -169,14 +169,14 @@ void read_choice(JsonReader& r, std::string_view key, const char* what, const sp
                                             "\" (allowed: " + sphslope::names_listed(names) + ")");
 }
 
-void read_choices(JsonReader& r, sph::Settings& s) {
+void read_choices(JsonReader& r, sph::soil::Settings& s) {
   read_choice(r, "kernel", "kernel", sph::kernel_names, s.kernel);
-  read_choice(r, "kernel_gradient", "kernel gradient", sph::kernel_gradient_names, s.kernel_gradient);
-  read_choice(r, "time_integration", "time integration", sph::time_integration_names, s.integration);
+  read_choice(r, "kernel_gradient", "kernel gradient", sph::soil::kernel_gradient_names, s.kernel_gradient);
+  read_choice(r, "time_integration", "time integration", sph::soil::time_integration_names, s.integration);
   read_choice(r, "gravity", "gravity mode", sph::gravity_mode_names, s.gravity_mode);
 }
 
-void read_artificial_viscosity(JsonReader& r, sph::Settings& s) {
+void read_artificial_viscosity(JsonReader& r, sph::soil::Settings& s) {
   auto viscosity = r.object("artificial_viscosity", Need::optional);
   if (!viscosity) return;
   s.viscosity.alpha = viscosity->number_or("alpha", s.viscosity.alpha, Bounds::non_negative());
@@ -184,10 +184,10 @@ void read_artificial_viscosity(JsonReader& r, sph::Settings& s) {
   viscosity->finish();
 }
 
-void read_artificial_stress(JsonReader& r, sph::Settings& s) {
+void read_artificial_stress(JsonReader& r, sph::soil::Settings& s) {
   auto stress = r.object("artificial_stress", Need::optional);
   if (!stress) return;
-  read_choice(*stress, "mode", "mode", sph::artificial_stress_mode_names, s.artificial_stress.mode);
+  read_choice(*stress, "mode", "mode", sph::soil::artificial_stress_mode_names, s.artificial_stress.mode);
   s.artificial_stress.epsilon = stress->number_or("epsilon", s.artificial_stress.epsilon, Bounds::closed(0.0, 1.0));
   s.artificial_stress.exponent = stress->number_or("exponent", s.artificial_stress.exponent, Bounds::positive());
   stress->finish();
@@ -202,9 +202,9 @@ std::optional<long> read_section_walls(JsonReader& r, SphAnalysis& a) {
   wall_layers = walls->integer("layers", Need::optional, Bounds::closed(1, 50));
   if (const auto slip = walls->string("slip", Need::optional)) {
     if (*slip == "no_slip") {
-      a.settings.wall_slip = sph::WallSlip::no_slip;
+      a.settings.wall_slip = sph::soil::WallSlip::no_slip;
     } else if (*slip == "free_slip") {
-      a.settings.wall_slip = sph::WallSlip::free_slip;
+      a.settings.wall_slip = sph::soil::WallSlip::free_slip;
     } else {
       r.diagnostics().error(walls->path_of("slip"), "unknown slip \"" + *slip + "\" (allowed: no_slip, free_slip)");
     }
@@ -215,12 +215,12 @@ std::optional<long> read_section_walls(JsonReader& r, SphAnalysis& a) {
 
 // Stopping, checkpoint and the limits that refuse a case before it starts.
 void read_run_limits(JsonReader& r, SphAnalysis& a) {
-  sph::Settings& s = a.settings;
-  s.cfl = r.number_or("cfl", sph::default_cfl(s.integration), Bounds{0.0, false, sph::max_cfl(s.integration), true});
-  s.stress_substeps = sph::default_stress_substeps(s.integration);
+  sph::soil::Settings& s = a.settings;
+  s.cfl = r.number_or("cfl", sph::soil::default_cfl(s.integration), Bounds{0.0, false, sph::soil::max_cfl(s.integration), true});
+  s.stress_substeps = sph::soil::default_stress_substeps(s.integration);
   if (const auto n = r.integer("stress_substeps", Need::optional, Bounds::closed(1, 64))) {
     s.stress_substeps = static_cast<int>(*n);
-    if (*n > 1 && s.integration != sph::TimeIntegration::verlet)
+    if (*n > 1 && s.integration != sph::soil::TimeIntegration::verlet)
       r.diagnostics().error(r.path_of("stress_substeps"),
                             "a stress update in " + std::to_string(*n) + " sub-steps needs \"time_integration\": "
                             "\"verlet\" (the predictor-corrector updates the stress twice per step); give 1 or "
@@ -237,7 +237,7 @@ void read_run_limits(JsonReader& r, SphAnalysis& a) {
 }
 
 // Gravity ramp: only with "ramped"; default 10 % of the simulated time; full gravity must be reached.
-bool resolve_gravity_ramp(JsonReader& r, std::optional<double> ramp, sph::Settings& s) {
+bool resolve_gravity_ramp(JsonReader& r, std::optional<double> ramp, sph::soil::Settings& s) {
   if (ramp && s.gravity_mode != sph::GravityMode::ramped) {
     r.diagnostics().error(r.path_of("gravity_ramp_s"),
                           "is only used with \"gravity\": \"ramped\" (remove it, or set "
@@ -260,7 +260,7 @@ bool resolve_gravity_ramp(JsonReader& r, std::optional<double> ramp, sph::Settin
 
 // Wall thickness: the kernel support 2h must be covered, or soil beside a wall misses part of its neighbourhood.
 bool resolve_wall_layers(std::optional<long> wall_layers, SphAnalysis& a, Diagnostics& diagnostics) {
-  const sph::Settings& s = a.settings;
+  const sph::soil::Settings& s = a.settings;
   const int layers_needed = sph::wall_layers_for(s.particle_spacing, s.smoothing_length());
   if (!wall_layers) {
     a.wall_layers = layers_needed;
@@ -286,7 +286,7 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   JsonReader r(block, "analyses.sph", diagnostics);
   const std::size_t errors_before = diagnostics.size();
   SphAnalysis a;
-  sph::Settings& s = a.settings;
+  sph::soil::Settings& s = a.settings;
   const auto spacing = r.number("particle_spacing_m", Need::required, Bounds::positive());
   const auto end_time = r.number("end_time_s", Need::required, Bounds::positive());
   s.h_over_dx = r.number_or("smoothing_length_ratio", s.h_over_dx,

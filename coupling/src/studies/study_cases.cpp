@@ -106,7 +106,7 @@ CaseSetup elastic_column_case(CaseSetup setup, const Scene& scene, double x0, do
     throw SceneError({"study: walls: the elastic-column reference (closed-form stress of a laterally confined "
                       "column) needs left, right and bottom walls touching the column (walls.x_range_m = [" +
                       format_number(x0) + ", " + format_number(x1) + "], bottom_y_m = " + format_number(y0) + ")"});
-  if (analysis->settings.wall_slip != sph::WallSlip::free_slip)
+  if (analysis->settings.wall_slip != sph::soil::WallSlip::free_slip)
     throw SceneError({"study: analyses.sph.walls.slip: the elastic-column reference needs frictionless walls "
                       "(\"free_slip\"); with no-slip walls the closed form does not hold"});
   const double k0 = setup.poisson_ratio / (1.0 - setup.poisson_ratio);

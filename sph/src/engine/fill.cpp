@@ -140,7 +140,7 @@ std::size_t add_soil(ParticleSet& particles, const std::vector<Point>& points, d
                      double density) {
   if (!(dx > 0) || !(density > 0)) throw std::invalid_argument("add_soil: dx and density must be > 0");
   particles.reserve(particles.size() + points.size());
-  for (const auto& p : points) particles.add(p.x, p.y, density * dx * dx, density, material, ParticleKind::soil);
+  for (const auto& p : points) particles.add(p.x, p.y, density * dx * dx, density, material, ParticleKind::material);
   return points.size();
 }
 

@@ -253,7 +253,7 @@ class Loop {
     const Energies e = t_.stepper.energies();
     RunSummary sum;
     sum.particles = t_.particles.size();
-    sum.soil_particles = t_.particles.count(ParticleKind::soil);
+    sum.soil_particles = t_.particles.count(ParticleKind::material);
     sum.reason = reason_;
     sum.stopped_because = key_;
     sum.diagnostic = diagnostic_;
@@ -327,19 +327,19 @@ RunSummary run_loop(RunTarget& target, const RunOptions& options, const RunCallb
 double moving_energy_floor(const ParticleSet& p, const EngineSettings& st) {
   double ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil)) {
+    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::material)) {
       ymin = std::min(ymin, p.y[i]);
       ymax = std::max(ymax, p.y[i]);
     }
   const double g = std::hypot(st.gravity_x, st.gravity_y);
-  return 0.01 * p.total_mass(ParticleKind::soil) * g * std::max(ymax - ymin, st.particle_spacing);
+  return 0.01 * p.total_mass(ParticleKind::material) * g * std::max(ymax - ymin, st.particle_spacing);
 }
 
 Energies moving_energies(const ParticleSet& p, const EngineSettings& st) {
   Energies e;
   double v2_max = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != static_cast<std::uint8_t>(ParticleKind::soil)) continue;
+    if (p.kind[i] != static_cast<std::uint8_t>(ParticleKind::material)) continue;
     const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
     e.kinetic += 0.5 * p.mass[i] * v2;
     e.potential -= p.mass[i] * (st.gravity_x * p.x[i] + st.gravity_y * p.y[i]);

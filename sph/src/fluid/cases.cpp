@@ -25,7 +25,7 @@ double front_position(const Model& model) {
   const ParticleSet& p = model.particles;
   double front = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil)) front = std::max(front, p.x[i]);
+    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::material)) front = std::max(front, p.x[i]);
   return front + 0.5 * model.settings.particle_spacing;
 }
 

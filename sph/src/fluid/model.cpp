@@ -61,7 +61,7 @@ std::size_t add_fluid_block(Model& model, double x_min, double y_min, double x_m
                                                [&](double x, double y) { return clear_of_solids(model, x, y); });
   model.particles.reserve(model.particles.size() + points.size());
   for (const Point& p : points)
-    model.particles.add(p.x, p.y, st.particle_mass(), st.rest_density, 0, ParticleKind::soil);
+    model.particles.add(p.x, p.y, st.particle_mass(), st.rest_density, 0, ParticleKind::material);
   model.fluid_particles_built += points.size();
   model.fluid_mass_built += static_cast<double>(points.size()) * st.particle_mass();
   return points.size();

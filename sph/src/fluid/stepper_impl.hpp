@@ -13,7 +13,7 @@ namespace sph::fluid {
 
 namespace detail {
 using Index = std::int64_t;
-constexpr std::uint8_t kFluid = static_cast<std::uint8_t>(ParticleKind::soil);
+constexpr std::uint8_t kFluid = static_cast<std::uint8_t>(ParticleKind::material);
 // The candidates of a step reach this many spacings beyond the kernel support: complete at r* while no particle
 // moves more than half of it in the temporary move (V** dt, about cfl dx).
 constexpr double kSkinOverDx = 0.5;

@@ -79,7 +79,7 @@ std::size_t add_block(Model& model, double x_min, double y_min, double x_max, do
   model.particles.reserve(model.particles.size() + points.size());
   for (const Point& p : points)
     model.particles.add(p.x, p.y, model.particle_mass(material), model.density_of(material), material,
-                        ParticleKind::soil);
+                        ParticleKind::material);
   return points.size();
 }
 

@@ -14,7 +14,7 @@ namespace sph::mps {
 
 namespace {
 using Index = std::int64_t;  // OpenMP loop index
-constexpr std::uint8_t kMoving = static_cast<std::uint8_t>(ParticleKind::soil);
+constexpr std::uint8_t kMoving = static_cast<std::uint8_t>(ParticleKind::material);
 // The candidates' margin beyond r_e in spacings: at the time step of eq. 30 (cfl 0.2, c0 >= 10 |u|max) a particle
 // moves at most 0.02 dx per step, so the candidates last at least a dozen steps.
 constexpr double list_skin = 0.5;

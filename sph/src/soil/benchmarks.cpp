@@ -6,7 +6,7 @@
 #include "sph/engine/fill.hpp"
 #include "sph/engine/neighbour_search.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 Material aluminium_bars() {
   Material al;
@@ -73,4 +73,4 @@ DepositShape measure_deposit(const Model& model, double floor_y, double back_wal
   return d;
 }
 
-}  // namespace sph
+}  // namespace sph::soil

@@ -1,6 +1,6 @@
 #include "sph/soil/checkpoint.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 namespace {
 CheckpointFingerprint fingerprint(const Model& model) {
@@ -10,11 +10,11 @@ CheckpointFingerprint fingerprint(const Model& model) {
 }  // namespace
 
 void write_checkpoint(const std::string& path, const Model& model) {
-  write_checkpoint(path, model.particles, model.state, fingerprint(model));
+  sph::write_checkpoint(path, model.particles, model.state, fingerprint(model));
 }
 
 void read_checkpoint(const std::string& path, Model& model) {
-  read_checkpoint(path, model.particles, model.state, fingerprint(model));
+  sph::read_checkpoint(path, model.particles, model.state, fingerprint(model));
 }
 
-}  // namespace sph
+}  // namespace sph::soil

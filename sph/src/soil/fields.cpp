@@ -1,6 +1,6 @@
 #include "sph/soil/fields.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 SoilFields SoilFields::register_in(ParticleSet& set) {
   auto state = [&](const char* name, bool vtu) { return set.add_field({name, true, vtu}); };
@@ -48,4 +48,4 @@ SoilArrays::SoilArrays(ParticleSet& s, const SoilFields& f)
 ConstSoilArrays::ConstSoilArrays(const ParticleSet& s, const SoilFields& f)
     : ConstSoilArrays(SoilArrays(const_cast<ParticleSet&>(s), f)) {}
 
-}  // namespace sph
+}  // namespace sph::soil

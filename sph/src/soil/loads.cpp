@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-namespace sph {
+namespace sph::soil {
 
 namespace {
 
@@ -70,10 +70,10 @@ std::map<long long, std::vector<std::size_t>> soil_columns(ParticleSet& p, SoilL
   }
   x_min = INFINITY;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil)) x_min = std::min(x_min, p.x[i]);
+    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::material)) x_min = std::min(x_min, p.x[i]);
   std::map<long long, std::vector<std::size_t>> columns;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil))
+    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::material))
       columns[static_cast<long long>(std::floor((p.x[i] - x_min) / dx + 0.5))].push_back(i);
   return columns;
 }
@@ -135,4 +135,4 @@ std::size_t add_line_load(ParticleSet& p, SoilLoads& loads, double x, double for
   return loaded;
 }
 
-}  // namespace sph
+}  // namespace sph::soil

@@ -4,7 +4,7 @@
 #include "sph/engine/require.hpp"
 #include "sphslope/units.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 void Material::validate() const {
   const std::string m = "material '" + name + "': ";
@@ -52,4 +52,4 @@ MaterialConstants MaterialConstants::from(const Material& m) {
   return c;
 }
 
-}  // namespace sph
+}  // namespace sph::soil

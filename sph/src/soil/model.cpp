@@ -11,7 +11,7 @@
 #include "sph/soil/soil_step.hpp"
 #include "terms.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 double default_cfl(TimeIntegration integration) {
   return integration == TimeIntegration::verlet ? 0.8 : 0.2;
@@ -55,7 +55,7 @@ void Model::validate() const {
   bool sizes_ok = true;
   const_cast<ParticleSet&>(p).for_each_array([&](auto& a) { sizes_ok = sizes_ok && a.size() == n; });
   require(sizes_ok, "model: particle arrays have inconsistent sizes");
-  require(p.count(ParticleKind::soil) > 0, "model: no soil particles");
+  require(p.count(ParticleKind::material) > 0, "model: no soil particles");
   if (loads.water) {
     const std::string why = loads.water->error();
     require(why.empty(), "model.loads.water: " + why);
@@ -93,7 +93,7 @@ double time_step_estimate(const Model& model) {
   for (const auto& m : model.materials) c_max = std::max(c_max, MaterialConstants::from(m).sound_speed);
   if (!(c_max > 0)) throw std::invalid_argument("model: no materials");
   const Settings& s = model.settings;
-  return soil_terms::courant_time_step(s.cfl, s.smoothing_length(), c_max, s.viscosity.alpha, s.viscosity.beta, 0.0);
+  return terms::courant_time_step(s.cfl, s.smoothing_length(), c_max, s.viscosity.alpha, s.viscosity.beta, 0.0);
 }
 
 std::size_t estimate_memory_bytes(std::size_t n) {
@@ -113,4 +113,4 @@ std::size_t estimate_memory_bytes(std::size_t n) {
   return state + workspace + CellList::estimate_bytes(n) + output + pairs + (std::size_t{1} << 20);
 }
 
-}  // namespace sph
+}  // namespace sph::soil

@@ -3,7 +3,7 @@
 #include "sph/soil/checkpoint.hpp"
 #include "sph/soil/soil_step.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 RunSummary run(Model& model, const RunOptions& options, const RunCallbacks& callbacks) {
   SoilStep stepper(model);
@@ -12,4 +12,4 @@ RunSummary run(Model& model, const RunOptions& options, const RunCallbacks& call
   return run_loop(target, options, callbacks);
 }
 
-}  // namespace sph
+}  // namespace sph::soil

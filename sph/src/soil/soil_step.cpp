@@ -10,13 +10,13 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace sph {
+namespace sph::soil {
 
 namespace {
 constexpr std::size_t kBlock = 1024;  // fixed block size: reductions are independent of the thread count
 
 using Index = std::int64_t;
-using namespace soil_detail;
+using namespace detail;
 
 template <class F>
 void block_sums(const std::vector<std::uint32_t>& idx, std::vector<double>& a, std::vector<double>& b,
@@ -111,7 +111,7 @@ void SoilStep::apply_geostatic_stress() {
   const double dx = model_.settings.particle_spacing;
   std::vector<std::uint32_t> soil;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil)) soil.push_back(static_cast<std::uint32_t>(i));
+    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::material)) soil.push_back(static_cast<std::uint32_t>(i));
   if (soil.empty()) return;
   double xmin = p.x[soil[0]];
   for (auto i : soil) xmin = std::min(xmin, p.x[i]);
@@ -192,7 +192,7 @@ double SoilStep::stable_time_step() const {
   }
   const Settings& st = model_.settings;
   const double vmax = std::sqrt(v2max);
-  const double dt_c = soil_terms::courant_time_step(st.cfl, h_, c_max_, st.viscosity.alpha, st.viscosity.beta, vmax);
+  const double dt_c = terms::courant_time_step(st.cfl, h_, c_max_, st.viscosity.alpha, st.viscosity.beta, vmax);
   const double amax = std::sqrt(a2max);
   const double dt_a = amax > 0 ? st.acceleration_safety * std::sqrt(h_ / amax) : std::numeric_limits<double>::infinity();
   return std::min(dt_c, dt_a);
@@ -395,7 +395,7 @@ std::vector<DerivedField> SoilStep::derived_outputs() const {
   const ParticleSet& p = model_.particles;
   DerivedField pore{"pore_pressure", std::vector<double>(p.size())};
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil))
+    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::material))
       pore.values[i] = model_.loads.water->pressure(p.x[i], p.y[i]);
   return {pressure, pore};
 }
@@ -485,4 +485,4 @@ Health SoilStep::check_health() const {
   return h;
 }
 
-}  // namespace sph
+}  // namespace sph::soil

@@ -7,9 +7,9 @@
 #include "sph/engine/cell_sort.hpp"
 #include "sph/soil/soil_step.hpp"
 
-namespace sph {
+namespace sph::soil {
 
-namespace soil_detail {
+namespace detail {
 // One evaluation of the rates at the particles' current state (sort by cell, walls, pair loop): the combined
 // evaluation writes every rate; the Verlet step splits it into the kinematic rates (density, stress, XSPH; with the
 // sort) and the forces (acceleration).
@@ -17,9 +17,9 @@ using Evaluator = void (*)(SoilStep&, Model&, SoilStep::Impl&);
 struct Evaluators {
   Evaluator all = nullptr, kinematics = nullptr, forces = nullptr;
 };
-}  // namespace soil_detail
+}  // namespace detail
 
-namespace soil_detail {
+namespace detail {
 // The pairs found by the Verlet step's kinematic pass, read back by its forces pass (no particle moves between the
 // two passes): each soil particle's neighbours j with r_ij and F(r_ij) (grad_i W_ij = F x_ij), in the order of the
 // candidate scan, so that the forces' sums are bitwise those of a new scan. Entries go to the buffer of the thread
@@ -37,7 +37,7 @@ struct PairCache {
   std::vector<Buffer> buffers;
   std::vector<std::uint32_t> thread, first, count;
 };
-}  // namespace soil_detail
+}  // namespace detail
 
 struct SoilStep::Impl {
   CellSortedSet sorted;  // the particles sorted by cell, and the cell list
@@ -55,8 +55,8 @@ struct SoilStep::Impl {
   std::vector<double> lxx, lyy, lexy, lwxy;
   std::vector<double> bxx, bxy, byy;  // corrected kernel gradient: B_i (symmetric)
   std::vector<double> block_a, block_b, block_c;
-  soil_detail::Evaluators eval;
-  soil_detail::PairCache pairs;  // the Verlet step's pairs, from its kinematic pass to its forces pass
+  detail::Evaluators eval;
+  detail::PairCache pairs;  // the Verlet step's pairs, from its kinematic pass to its forces pass
   double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
   double gravity_x = 0.0, gravity_y = 0.0;  // gravity of the current evaluation (ramped: at its time), m/s^2
   double load_factor = 0.0;                 // the fraction of the loads acting at that time (as of gravity)
@@ -69,7 +69,7 @@ struct SoilStep::Impl {
   }
 };
 
-namespace soil_detail {
+namespace detail {
 
 Evaluators select_evaluators(KernelType kernel, bool artificial_stress, bool xsph, bool corrected_gradient);
 
@@ -93,5 +93,5 @@ struct HalfStep {
         sxy0(p.field(w.sxy0).data()) {}
 };
 
-}  // namespace soil_detail
-}  // namespace sph
+}  // namespace detail
+}  // namespace sph::soil

@@ -7,10 +7,10 @@
 
 #include <cmath>
 
-namespace sph::soil_detail {
+namespace sph::soil::detail {
 
 namespace {
-using namespace soil_terms;
+using namespace terms;
 using Index = std::int64_t;
 }  // namespace
 
@@ -18,7 +18,7 @@ void index_kinds(const ParticleSet& p, SoilStep::Impl& w) {
   w.soil.clear();
   w.walls.clear();
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const bool soil = p.kind[i] == static_cast<std::uint8_t>(ParticleKind::soil);
+    const bool soil = p.kind[i] == static_cast<std::uint8_t>(ParticleKind::material);
     w.is_soil[i] = soil ? 1.0 : 0.0;
     (soil ? w.soil : w.walls).push_back(static_cast<std::uint32_t>(i));
   }
@@ -462,4 +462,4 @@ Evaluators select_evaluators(KernelType kernel, bool artificial_stress, bool xsp
   return evaluators_for<WendlandC2Kernel>(artificial_stress, xsph, corrected_gradient);
 }
 
-}  // namespace sph::soil_detail
+}  // namespace sph::soil::detail

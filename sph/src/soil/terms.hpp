@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sph::soil_terms {
+namespace sph::soil::terms {
 
 // The geometry of a pair within the kernel support: x_ij, r and grad_i W_ij [K1, K2].
 struct PairGeometry {
@@ -66,4 +66,4 @@ inline double courant_time_step(double cfl, double h, double c_max, double alpha
 // [X] XSPH (Monaghan 1992): the pair's weight m_j / rho_bar W_ij in v_i += chi sum_j (m_j/rho_bar) (v_j - v_i) W_ij.
 inline double xsph_weight(double mj, double rho_bar, double w_r) { return mj / rho_bar * w_r; }
 
-}  // namespace sph::soil_terms
+}  // namespace sph::soil::terms

@@ -38,7 +38,7 @@ std::vector<std::string> sph_refusals(const SphAnalysis& analysis, const SphPlan
 // Builds the particle model of a validated scene, with the section's loads (water, surcharges, seismic) except those
 // listed in analyses.sph.ignore_loads. Throws SceneError (path "analyses.sph.particle_spacing_m")
 // when the case would exceed the memory limit or the particle limit, before allocating particles.
-sph::Model build_sph_model(const Scene& scene, SphSize* size = nullptr);
+sph::soil::Model build_sph_model(const Scene& scene, SphSize* size = nullptr);
 
 // Soil particle positions of a slope section on the cell-centred lattice of spacing dx anchored at the
 // section's lower-left corner, with the material of each (the profile line that is the top of its layer).

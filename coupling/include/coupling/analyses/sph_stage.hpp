@@ -25,7 +25,7 @@ struct SphModelFacts {
   std::size_t particles = 0, soil_particles = 0, wall_particles = 0;
   double particle_spacing_m = 0, smoothing_length_m = 0;
   sph::KernelType kernel = sph::KernelType::cubic_spline;
-  sph::KernelGradient kernel_gradient = sph::KernelGradient::standard;  // analyses.sph.kernel_gradient
+  sph::soil::KernelGradient kernel_gradient = sph::soil::KernelGradient::standard;  // analyses.sph.kernel_gradient
   int stress_substeps = 1;          // analyses.sph.stress_substeps
   double p_wave_speed_m_s = 0, time_step_estimate_s = 0;
   long long planned_steps = 0;

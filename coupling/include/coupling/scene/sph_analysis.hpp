@@ -36,7 +36,7 @@ struct WallBox {
 };
 
 struct SphAnalysis {
-  sph::Settings settings;               // SI
+  sph::soil::Settings settings;               // SI
   WallSides section_walls;              // slope scenes: which sides of the section box carry walls
   int wall_layers = 0;                  // wall thickness in particle layers (at least the kernel support 2h)
   double quasi_static_speed = 0.0;      // m/s; stop once every particle is slower (0: run to end_time_s)

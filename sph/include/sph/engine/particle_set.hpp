@@ -13,8 +13,10 @@
 
 namespace sph {
 
-// What a particle is. Physics interpret kind 0 as their moving material (soil, fluid, sediment).
-enum class ParticleKind : std::uint8_t { soil = 0, wall = 1 };
+// What a particle is, for every physics: `material` is the continuum the physics integrates (the soil model's soil,
+// the fluid's water, the MPS's grains and water), `wall` a boundary particle (fixed walls, and the fluid's rigid
+// bodies). Stored as 0 and 1 in checkpoints and frames.
+enum class ParticleKind : std::uint8_t { material = 0, wall = 1 };
 
 using FieldId = std::uint32_t;
 

@@ -2,7 +2,7 @@
 // Reference problems shared by the tests and the benchmark program (no file I/O, no slopes).
 #include "sph/soil/model.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 // Granular column collapse of Bui et al. (2008), IJNAMG 32:1537, aluminium bars:
 // column `length` x `height` (0.2 m x 0.1 m) resting on a rigid floor against a back wall at x = 0,
@@ -31,4 +31,4 @@ struct DepositShape {
 // Deposit extent; particles with fewer than 2 soil neighbours within 1.5 dx (isolated splashes) are ignored.
 DepositShape measure_deposit(const Model& model, double floor_y = 0.0, double back_wall_x = 0.0);
 
-}  // namespace sph
+}  // namespace sph::soil

@@ -6,7 +6,7 @@
 #include "sph/engine/checkpoint.hpp"
 #include "sph/soil/model.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 void write_checkpoint(const std::string& path, const Model& model);
 
@@ -15,4 +15,4 @@ void write_checkpoint(const std::string& path, const Model& model);
 // file is truncated/corrupt.
 void read_checkpoint(const std::string& path, Model& model);
 
-}  // namespace sph
+}  // namespace sph::soil

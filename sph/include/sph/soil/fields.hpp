@@ -5,7 +5,7 @@
 // sigma_zz is the out-of-plane normal stress (plane strain).
 #include "sph/engine/particle_set.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 struct SoilFields {
   FieldId sxx, syy, szz, sxy;           // stress [Pa]; walls: extrapolated from the soil
@@ -37,4 +37,4 @@ struct ConstSoilArrays {
         plastic_work(a.plastic_work), wall_nx(a.wall_nx), wall_ny(a.wall_ny) {}
 };
 
-}  // namespace sph
+}  // namespace sph::soil

@@ -17,7 +17,7 @@
 
 #include "sph/engine/particle_set.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 struct PiezometricLine {
   std::vector<double> x, y;     // m, vertices, x strictly increasing; the line is level beyond its ends
@@ -61,4 +61,4 @@ std::size_t add_strip_load(ParticleSet& particles, SoilLoads& loads, double from
 std::size_t add_line_load(ParticleSet& particles, SoilLoads& loads, double x, double force_x, double force_y,
                           double dx);
 
-}  // namespace sph
+}  // namespace sph::soil

@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-namespace sph {
+namespace sph::soil {
 
 struct Material {
   std::string name = "soil";
@@ -196,4 +196,4 @@ inline ReturnResult return_to_yield_surface(const MaterialConstants& mc, Stress&
   return res;
 }
 
-}  // namespace sph
+}  // namespace sph::soil

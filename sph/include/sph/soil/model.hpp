@@ -14,7 +14,7 @@
 #include "sph/soil/fields.hpp"
 #include "sph/soil/loads.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 enum class WallSlip {
   no_slip,    // wall ghost velocity = -(Shepard average of neighbouring soil velocity)
@@ -128,4 +128,4 @@ double time_step_estimate(const Model& model);
 // its step workspace, neighbour search, output buffers). Use it to refuse a case before allocating.
 std::size_t estimate_memory_bytes(std::size_t n_particles);
 
-}  // namespace sph
+}  // namespace sph::soil

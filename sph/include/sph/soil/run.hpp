@@ -5,8 +5,8 @@
 #include "sph/engine/run_loop.hpp"
 #include "sph/soil/model.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 RunSummary run(Model& model, const RunOptions& options, const RunCallbacks& callbacks = {});
 
-}  // namespace sph
+}  // namespace sph::soil

@@ -18,7 +18,7 @@
 #include "sph/soil/model.hpp"
 #include "sph/engine/neighbour_search.hpp"
 
-namespace sph {
+namespace sph::soil {
 
 class SoilStep : public Stepper {
  public:
@@ -76,4 +76,4 @@ class SoilStep : public Stepper {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace sph
+}  // namespace sph::soil
