@@ -71,8 +71,7 @@ SoilStep::SoilStep(Model& model) : model_(model), impl_(std::make_unique<Impl>()
   w.soil.reserve(n);
   w.walls.reserve(n);
   const double dx = st.particle_spacing;
-  w.eval = select_evaluators(st.kernel, artificial_stress_, st.xsph.enabled,
-                             st.kernel_gradient == KernelGradient::corrected);
+  w.eval = select_evaluators(st.kernel);
   w.w_dx = st.kernel == KernelType::cubic_spline ? CubicSplineKernel(h_).value(dx) : WendlandC2Kernel(h_).value(dx);
   if (!(w.w_dx > 0)) throw std::invalid_argument("settings.h_over_dx too small: W(dx) = 0");
 }

@@ -71,7 +71,7 @@ struct SoilStep::Impl {
 
 namespace detail {
 
-Evaluators select_evaluators(KernelType kernel, bool artificial_stress, bool xsph, bool corrected_gradient);
+Evaluators select_evaluators(KernelType kernel);
 
 // Rebuilds the soil/wall index lists for the current particle order.
 void index_kinds(const ParticleSet& p, SoilStep::Impl& w);

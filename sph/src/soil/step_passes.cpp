@@ -168,20 +168,31 @@ void correction_pass(const ParticleSet& p, SoilStep::Impl& w, const Kernel& kern
   }
 }
 
+// The options of the pair terms, fixed for a run. They are run-time flags, not template parameters: the pair loop is
+// compiled once per kernel and pass (6 copies, where one per combination of the options made 48), at no measurable
+// cost per step (docs/performance.md, "Soil pair loop").
+struct PairOptions {
+  bool artificial_stress = false;  // the artificial stress term (Model::uses_artificial_stress)
+  bool xsph = false;               // the XSPH velocity correction (Settings::xsph)
+  bool corrected = false;          // the corrected kernel gradient (Settings::kernel_gradient)
+};
+
 // What the pair sums read, gathered once per evaluation (after the sort, the wall pass and the prepare pass).
 struct PairInputs {
   const double *x, *y, *vx, *vy, *rho, *mass;
   const double *pxx, *pyy, *pxy, *vol, *snd, *rxx, *ryy, *rxy, *is_soil;  // prepare_pass
   const double *bxx, *bxy, *byy;                                           // correction_pass (corrected gradient)
   double h, support2, eta2, alpha, beta, inv_w_dx, as_n;
+  PairOptions options;
 
-  PairInputs(const ParticleSet& p, const SoilStep::Impl& w, const Settings& st, double h_, double support)
+  PairInputs(const ParticleSet& p, const SoilStep::Impl& w, const Settings& st, double h_, double support,
+             const PairOptions& options_)
       : x(p.x.data()), y(p.y.data()), vx(p.vx.data()), vy(p.vy.data()), rho(p.rho.data()), mass(p.mass.data()),
         pxx(w.pxx.data()), pyy(w.pyy.data()), pxy(w.pxy.data()), vol(w.volume.data()), snd(w.sound.data()),
         rxx(w.rxx.data()), ryy(w.ryy.data()), rxy(w.rxy.data()), is_soil(w.is_soil.data()), bxx(w.bxx.data()),
         bxy(w.bxy.data()), byy(w.byy.data()), h(h_),
         support2(support * support), eta2(st.viscosity.eta_factor * h_ * h_), alpha(st.viscosity.alpha),
-        beta(st.viscosity.beta), inv_w_dx(1.0 / w.w_dx), as_n(st.artificial_stress.exponent) {}
+        beta(st.viscosity.beta), inv_w_dx(1.0 / w.w_dx), as_n(st.artificial_stress.exponent), options(options_) {}
 };
 
 // The sums over the neighbours of one particle.
@@ -197,13 +208,12 @@ inline PairGeometry corrected(const PairGeometry& g, double bxx, double bxy, dou
 
 // The forces of a pair with the corrected gradient: m_j [(P_i - Pi/2 I + f^n R_i) B_i + (P_j - Pi/2 I + f^n R_j) B_j]
 // grad_i W_ij, P = sigma/rho^2: antisymmetric in i and j, exact for a linear stress field in a regular interior.
-template <bool kArtificialStress>
-void corrected_momentum(std::size_t i, std::uint32_t j, const PairInputs& in, double pi_ij, double fn,
-                        const PairGeometry& gi, const PairGeometry& gj, PairSums& sum) {
+inline void corrected_momentum(std::size_t i, std::uint32_t j, const PairInputs& in, double pi_ij, double fn,
+                               const PairGeometry& gi, const PairGeometry& gj, PairSums& sum) {
   const double half = 0.5 * pi_ij;
   double ixx = in.pxx[i] - half, iyy = in.pyy[i] - half, ixy = in.pxy[i];
   double jxx = in.pxx[j] - half, jyy = in.pyy[j] - half, jxy = in.pxy[j];
-  if constexpr (kArtificialStress) {
+  if (in.options.artificial_stress) {
     ixx += fn * in.rxx[i]; iyy += fn * in.ryy[i]; ixy += fn * in.rxy[i];
     jxx += fn * in.rxx[j]; jyy += fn * in.ryy[j]; jxy += fn * in.rxy[j];
   }
@@ -212,9 +222,10 @@ void corrected_momentum(std::size_t i, std::uint32_t j, const PairInputs& in, do
 }
 
 // The pair terms of particle i: the kinematic terms [C, L, X] when kRates, the forces [AV, AS, M] when kForces
-// (both: the combined evaluation, in the order its results were pinned with); kCorrected: with the corrected kernel
-// gradient (Settings::kernel_gradient). add() takes one neighbour within the support: x_ij, r_ij^2, r_ij and F(r_ij).
-template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces, bool kCorrected>
+// (both: the combined evaluation, in the order its results were pinned with); the options (artificial stress, XSPH,
+// corrected kernel gradient) from the inputs. add() takes one neighbour within the support: x_ij, r_ij^2, r_ij and
+// F(r_ij).
+template <class Kernel, bool kRates, bool kForces>
 struct PairTerms {
   const PairInputs& in;
   const Kernel& kernel;
@@ -224,7 +235,7 @@ struct PairTerms {
   PairTerms(std::size_t i_, const PairInputs& in_, const Kernel& kernel_)
       : in(in_), kernel(kernel_), i(i_), xi(in_.x[i_]), yi(in_.y[i_]), vxi(in_.vx[i_]), vyi(in_.vy[i_]),
         rhoi(in_.rho[i_]), ci(in_.snd[i_]), pxxi(in_.pxx[i_]), pyyi(in_.pyy[i_]), pxyi(in_.pxy[i_]) {
-    if constexpr (kArtificialStress) {
+    if (in.options.artificial_stress) {
       rxxi = in.rxx[i]; ryyi = in.ryy[i]; rxyi = in.rxy[i];
     }
   }
@@ -234,7 +245,8 @@ struct PairTerms {
     const double dvx = vxi - in.vx[j], dvy = vyi - in.vy[j];  // v_i - v_j (a wall: its ghost velocity)
     const double mj = in.mass[j];
     const double rho_bar = mean_density(rhoi, in.rho[j]);
-    if constexpr (kCorrected) {
+    const bool artificial_stress = in.options.artificial_stress;
+    if (in.options.corrected) {
       const PairGeometry gi = corrected(g, in.bxx[i], in.bxy[i], in.byy[i]);
       if constexpr (kRates) {
         sum.drho += continuity(mj, vxi - in.is_soil[j] * in.vx[j], vyi - in.is_soil[j] * in.vy[j], gi);
@@ -242,23 +254,25 @@ struct PairTerms {
       }
       if constexpr (kForces) {
         const double pi_ij = artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
-        const double fn = kArtificialStress ? artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n) : 0.0;
-        corrected_momentum<kArtificialStress>(i, j, in, pi_ij, fn, gi, corrected(g, in.bxx[j], in.bxy[j], in.byy[j]),
-                                              sum);
+        const double fn = artificial_stress ? artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n) : 0.0;
+        corrected_momentum(i, j, in, pi_ij, fn, gi, corrected(g, in.bxx[j], in.bxy[j], in.byy[j]), sum);
       }
-    } else if constexpr (kRates) {
+      if constexpr (kRates) add_xsph(mj, rho_bar, r, dvx, dvy, sum);
+      return;
+    }
+    if constexpr (kRates) {
       // [C] with the walls' own velocity (at rest): with the no-slip ghost velocity -v_avg here, a particle sliding
       // down a wall next to the free surface, whose wall neighbours above see only it, lost density at a rate
       // ~ 2 v |grad W| until it went negative (docs/stability.md).
       sum.drho += continuity(mj, vxi - in.is_soil[j] * in.vx[j], vyi - in.is_soil[j] * in.vy[j], g);
       sum.gradient.add(in.vol[j], dvx, dvy, g);
     }
-    if constexpr (kForces && !kCorrected) {
+    if constexpr (kForces) {
       const double pi_ij = artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
       double txx = pxxi + in.pxx[j] - pi_ij;
       double tyy = pyyi + in.pyy[j] - pi_ij;
       double txy = pxyi + in.pxy[j];
-      if constexpr (kArtificialStress) {
+      if (artificial_stress) {
         const double fn = artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n);
         txx += fn * (rxxi + in.rxx[j]);
         tyy += fn * (ryyi + in.ryy[j]);
@@ -266,20 +280,24 @@ struct PairTerms {
       }
       momentum(mj, txx, tyy, txy, g, sum.ax, sum.ay);
     }
-    if constexpr (kXsph && kRates) {
-      const double wv = xsph_weight(mj, rho_bar, kernel.value(r));
-      sum.xsph_x -= wv * dvx;
-      sum.xsph_y -= wv * dvy;
-    }
+    if constexpr (kRates) add_xsph(mj, rho_bar, r, dvx, dvy, sum);
+  }
+
+  // [X] the XSPH sum, when the run has it.
+  void add_xsph(double mj, double rho_bar, double r, double dvx, double dvy, PairSums& sum) const {
+    if (!in.options.xsph) return;
+    const double wv = xsph_weight(mj, rho_bar, kernel.value(r));
+    sum.xsph_x -= wv * dvx;
+    sum.xsph_y -= wv * dvy;
   }
 };
 
 // Gathers the pair terms of particle i over the candidates of its cell neighbourhood; with a buffer, records each
 // pair within the support in it (the Verlet step's kinematic pass, for its forces pass).
-template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces, bool kCorrected>
+template <class Kernel, bool kRates, bool kForces>
 PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, const CellList& cells,
                    PairCache::Buffer* record) {
-  const PairTerms<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected> terms(i, in, kernel);
+  const PairTerms<Kernel, kRates, kForces> terms(i, in, kernel);
   PairSums sum;
   IndexRange ranges[3];
   const int nr = cells.candidate_ranges(i, ranges);
@@ -302,10 +320,10 @@ PairSums pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, co
 }
 
 // The same sums over the `count` pairs recorded from `first` in a buffer.
-template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces, bool kCorrected>
+template <class Kernel, bool kRates, bool kForces>
 PairSums recorded_pair_sums(std::size_t i, const PairInputs& in, const Kernel& kernel, const PairCache::Buffer& buffer,
                             std::size_t first, std::size_t count) {
-  const PairTerms<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected> terms(i, in, kernel);
+  const PairTerms<Kernel, kRates, kForces> terms(i, in, kernel);
   PairSums sum;
   const std::uint32_t* js = buffer.j.data() + first;
   const double *rs = buffer.r.data() + first, *fs = buffer.f.data() + first;
@@ -357,17 +375,20 @@ struct LoadTerms {
 
 // The rates of every soil particle; pairs are gathered from the perspective of i (no write conflicts). kRates: sorts
 // by cell first and writes the density and stress rates (and XSPH); kForces: writes the acceleration.
-template <class Kernel, bool kArtificialStress, bool kXsph, bool kRates, bool kForces, bool kCorrected>
+template <class Kernel, bool kRates, bool kForces>
 void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   ParticleSet& p = model.particles;
   const Settings& st = model.settings;
+  const PairOptions options{self.artificial_stress_enabled(), st.xsph.enabled,
+                            st.kernel_gradient == KernelGradient::corrected};
   const Kernel kernel(self.smoothing_length());
   if constexpr (kRates) sort_and_index(model, w, kernel.support());
   wall_pass(model, w, kernel);
-  prepare_pass(model, w, self.material_constants(), kArtificialStress && kForces, st.artificial_stress.epsilon);
-  if constexpr (kCorrected) correction_pass(p, w, kernel);
+  prepare_pass(model, w, self.material_constants(), options.artificial_stress && kForces,
+               st.artificial_stress.epsilon);
+  if (options.corrected) correction_pass(p, w, kernel);
   const SoilArrays sa = model.soil();  // after the sort: it may have swapped the arrays' buffers
-  const PairInputs in(p, w, st, kernel.h(), kernel.support());
+  const PairInputs in(p, w, st, kernel.h(), kernel.support(), options);
   const double chi = st.xsph.chi;
   const double gx = w.gravity_x, gy = w.gravity_y, damping = st.damping;
   const LoadTerms loads(model, w.load_factor);
@@ -389,18 +410,18 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
     const auto kk = static_cast<std::size_t>(k);
     PairSums sum;
     if constexpr (kRecorded) {
-      sum = recorded_pair_sums<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected>(
+      sum = recorded_pair_sums<Kernel, kRates, kForces>(
           i, in, kernel, cache.buffers[cache.thread[kk]], cache.first[kk], cache.count[kk]);
     } else if constexpr (kRecord) {
       const auto t = static_cast<std::size_t>(omp_get_thread_num());
       PairCache::Buffer& buffer = cache.buffers[t];
       const std::size_t first = buffer.j.size();
-      sum = pair_sums<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected>(i, in, kernel, cells, &buffer);
+      sum = pair_sums<Kernel, kRates, kForces>(i, in, kernel, cells, &buffer);
       cache.thread[kk] = static_cast<std::uint32_t>(t);
       cache.first[kk] = static_cast<std::uint32_t>(first);
       cache.count[kk] = static_cast<std::uint32_t>(buffer.j.size() - first);
     } else {
-      sum = pair_sums<Kernel, kArtificialStress, kXsph, kRates, kForces, kCorrected>(i, in, kernel, cells, nullptr);
+      sum = pair_sums<Kernel, kRates, kForces>(i, in, kernel, cells, nullptr);
     }
     if constexpr (kForces) {
       const double vxi = p.vx[i], vyi = p.vy[i];
@@ -426,7 +447,7 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
       sa.dsxy[i] = sr.rate.xy;
       sa.dplastic_strain[i] = sr.plastic_strain_rate;
       sa.dplastic_work[i] = sr.plastic_work_rate / p.rho[i];
-      if constexpr (kXsph) {
+      if (options.xsph) {
         w.xsph_dx[i] = chi * sum.xsph_x;
         w.xsph_dy[i] = chi * sum.xsph_y;
       }
@@ -434,32 +455,16 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   }
 }
 
-template <class Kernel, bool kArtificialStress, bool kXsph, bool kCorrected>
-Evaluators evaluators() {
-  return {&evaluate_rates<Kernel, kArtificialStress, kXsph, true, true, kCorrected>,
-          &evaluate_rates<Kernel, kArtificialStress, kXsph, true, false, kCorrected>,
-          &evaluate_rates<Kernel, kArtificialStress, kXsph, false, true, kCorrected>};
-}
-
-template <class Kernel, bool kCorrected>
-Evaluators evaluators_for(bool artificial_stress, bool xsph) {
-  if (artificial_stress)
-    return xsph ? evaluators<Kernel, true, true, kCorrected>() : evaluators<Kernel, true, false, kCorrected>();
-  return xsph ? evaluators<Kernel, false, true, kCorrected>() : evaluators<Kernel, false, false, kCorrected>();
-}
-
 template <class Kernel>
-Evaluators evaluators_for(bool artificial_stress, bool xsph, bool corrected) {
-  return corrected ? evaluators_for<Kernel, true>(artificial_stress, xsph)
-                   : evaluators_for<Kernel, false>(artificial_stress, xsph);
+Evaluators evaluators() {
+  return {&evaluate_rates<Kernel, true, true>, &evaluate_rates<Kernel, true, false>,
+          &evaluate_rates<Kernel, false, true>};
 }
 
 }  // namespace
 
-Evaluators select_evaluators(KernelType kernel, bool artificial_stress, bool xsph, bool corrected_gradient) {
-  if (kernel == KernelType::cubic_spline)
-    return evaluators_for<CubicSplineKernel>(artificial_stress, xsph, corrected_gradient);
-  return evaluators_for<WendlandC2Kernel>(artificial_stress, xsph, corrected_gradient);
+Evaluators select_evaluators(KernelType kernel) {
+  return kernel == KernelType::cubic_spline ? evaluators<CubicSplineKernel>() : evaluators<WendlandC2Kernel>();
 }
 
 }  // namespace sph::soil::detail
