@@ -14,9 +14,7 @@ StageOutcome run_compare_stage(const Scene& scene, StageContext& context) {
   const StageClock::time_point start = StageClock::now();
   const LemStageResult* lem = results.lem_result();
   if (!results.sph_final_state || !lem || !scene.section) {
-    outcome.status = ExitStatus::failed;
-    outcome.errors.push_back("compare: needs both a finished SPH run and a limit-equilibrium result");
-    record.error = outcome.errors.back();
+    outcome.fail("compare: needs both a finished SPH run and a limit-equilibrium result", record.error);
     return outcome;
   }
   const ComparisonOptions& options = *scene.analyses.compare;

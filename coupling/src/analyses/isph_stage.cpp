@@ -204,9 +204,7 @@ StageOutcome run_isph_stage(const Scene& scene, StageContext& context) {
     }
     record.result = std::move(result);
   } catch (const std::exception& error) {
-    outcome.status = ExitStatus::failed;
-    outcome.errors.push_back(std::string("isph: ") + error.what());
-    record.error = outcome.errors.back();
+    outcome.fail(std::string("isph: ") + error.what(), record.error);
   }
   results.seconds["isph"] = seconds_since(start);
   return outcome;

@@ -35,9 +35,7 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
   try {
     search = slope::search_critical(section, analysis.methods, analysis.search);
   } catch (const std::exception& error) {
-    outcome.status = ExitStatus::failed;
-    outcome.errors.push_back(std::string("lem: the limit-equilibrium search failed: ") + error.what());
-    record.error = outcome.errors.back();
+    outcome.fail(std::string("lem: the limit-equilibrium search failed: ") + error.what(), record.error);
     results.seconds["lem"] = seconds_since(start);
     return outcome;
   }

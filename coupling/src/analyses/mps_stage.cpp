@@ -179,9 +179,7 @@ StageOutcome run_mps_stage(const Scene& scene, StageContext& context) {
     }
     record.result = std::move(result);
   } catch (const std::exception& error) {
-    outcome.status = ExitStatus::failed;
-    outcome.errors.push_back(std::string("mps: ") + error.what());
-    record.error = outcome.errors.back();
+    outcome.fail(std::string("mps: ") + error.what(), record.error);
   }
   results.seconds["mps"] = seconds_since(start);
   return outcome;

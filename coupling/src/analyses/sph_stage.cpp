@@ -291,9 +291,7 @@ StageOutcome run_sph_analysis_stage(const Scene& scene, StageContext& context) {
     outcome.errors = error.messages();
     return outcome;
   } catch (const std::exception& error) {
-    outcome.status = ExitStatus::failed;
-    outcome.errors.push_back(std::string("sph: ") + error.what());
-    record.error = outcome.errors.back();
+    outcome.fail(std::string("sph: ") + error.what(), record.error);
     results.seconds["sph"] = seconds_since(start);
     return outcome;
   }

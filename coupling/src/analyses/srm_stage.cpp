@@ -62,9 +62,7 @@ StageOutcome run_srm_stage(const Scene& scene, StageContext& context) {
     outcome.errors = error.messages();
     return outcome;
   } catch (const std::exception& error) {
-    outcome.status = ExitStatus::failed;
-    outcome.errors.push_back(std::string("srm: ") + error.what());
-    record.error = outcome.errors.back();
+    outcome.fail(std::string("srm: ") + error.what(), record.error);
   }
   results.seconds["srm"] = seconds_since(start);
   return outcome;

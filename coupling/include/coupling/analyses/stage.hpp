@@ -24,6 +24,13 @@ namespace coupling {
 struct StageOutcome {
   ExitStatus status = ExitStatus::ok;
   std::vector<std::string> errors;  // invalid input: JSON-path messages; failed: reasons; not accepted: criteria
+
+  // A stage that stopped without a result: failed, for `reason` ("<stage>: why"), which its record keeps as well.
+  void fail(std::string reason, std::string& record_error) {
+    status = ExitStatus::failed;
+    errors.push_back(std::move(reason));
+    record_error = errors.back();
+  }
 };
 
 // What the stages of one run share.
