@@ -488,21 +488,25 @@ TEST_CASE("scene: a saturated unit weight is read in kN/m3, SPH leaves it out on
 
 namespace {
 
-// The row of docs/scene-format.md's tables that documents `key` ("| `key` | ...").
-std::string documented_row(const std::string& key) {
+// The row of docs/scene-format.md's tables that documents `key` ("| `key` | ..."): the first one, or the first after
+// the heading `section` (e.g. "### `analyses.mps`") when a key is documented in several sections.
+std::string documented_row(const std::string& key, const std::string& section = {}) {
   std::ifstream docs(fs::path(test_paths::source_dir()) / "docs/scene-format.md");
   std::string line;
-  while (std::getline(docs, line))
-    if (line.rfind("| `" + key + "` |", 0) == 0) return line;
+  bool in_section = section.empty();
+  while (std::getline(docs, line)) {
+    if (!in_section) in_section = line == section;
+    if (in_section && line.rfind("| `" + key + "` |", 0) == 0) return line;
+  }
   return {};
 }
 
 // Every name of the table reads back to its value and is listed in the key's row of the docs, as `name` or
 // "name"; the scene reader and the report take their names from the same table.
 template <class E, std::size_t N>
-void check_names(const std::string& key, const sphslope::NameTable<E, N>& names) {
+void check_names(const std::string& key, const sphslope::NameTable<E, N>& names, const std::string& section = {}) {
   INFO(key);
-  const std::string row = documented_row(key);
+  const std::string row = documented_row(key, section);
   REQUIRE_FALSE(row.empty());
   for (const sphslope::Named<E>& entry : names) {
     const std::string name(entry.name);
@@ -533,6 +537,7 @@ TEST_CASE("scene: each setting's names come from one table that the docs list", 
   check_names("type", slope::support_type_names);
   check_names("direction", slope::support_direction_names);
   check_names("application", slope::support_application_names);
+  check_names("materials", sph::mps::material_type_names, "### `analyses.mps`");
   // The reader's message lists the same names.
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water_sph.json"));
   scene["analyses"]["sph"]["kernel"] = "gaussian";

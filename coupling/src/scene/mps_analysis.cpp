@@ -41,10 +41,11 @@ void read_numerics(JsonReader& r, sph::mps::Settings& s) {
 MpsMaterial read_mps_material(JsonReader& m) {
   MpsMaterial out;
   out.name = m.string("name", Need::required).value_or("");
-  const std::string type = m.string("type", Need::required).value_or("");
-  if (type == "water") {
+  const std::string type_name = m.string("type", Need::required).value_or("");
+  const auto type = sphslope::value_named(sph::mps::material_type_names, type_name);
+  if (type == sph::mps::Material::Type::water) {
     out.material = sph::mps::Material::water(m.number_or("viscosity_Pa_s", 1.0e-3, Bounds::non_negative()));
-  } else if (type == "granular") {
+  } else if (type == sph::mps::Material::Type::granular) {
     sph::mps::HerschelBulkley hb;
     hb.consistency = m.number_or("consistency_Pa_sN", hb.consistency, Bounds::non_negative());
     hb.flow_index = m.number_or("flow_index", hb.flow_index, Bounds{0.0, false, 2.0, true});
@@ -55,8 +56,10 @@ MpsMaterial read_mps_material(JsonReader& m) {
     out.material.grain_volume_fraction =
         m.number_or("grain_volume_fraction", out.material.grain_volume_fraction, Bounds{0.0, false, 1.0, true});
   } else {
-    if (!type.empty())
-      m.diagnostics().error(m.path_of("type"), "expected \"granular\" or \"water\", got \"" + type + "\"");
+    if (!type_name.empty())
+      m.diagnostics().error(m.path_of("type"), "expected " +
+                                                   sphslope::names_listed(sph::mps::material_type_names, true) +
+                                                   ", got \"" + type_name + "\"");
     // without a known type the other keys cannot be checked: one error, not one per key
     for (const char* key : {"viscosity_Pa_s", "consistency_Pa_sN", "flow_index", "regularisation_growth_s",
                             "friction_angle_deg", "cohesion_kPa", "grain_volume_fraction"})

@@ -36,6 +36,9 @@ struct Material {
   // Throws std::invalid_argument naming the parameter when a value is out of its range.
   void validate() const;
 };
+// The material types' names in scene files (analyses.mps.materials[i].type).
+inline constexpr sphslope::NameTable<Material::Type, 2> material_type_names{
+    {{"granular", Material::Type::granular}, {"water", Material::Type::water}}};
 
 struct Model {
   // Validates the settings and the materials (at least one). Throws std::invalid_argument.
