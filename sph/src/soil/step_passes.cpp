@@ -169,8 +169,8 @@ void correction_pass(const ParticleSet& p, SoilStep::Impl& w, const Kernel& kern
 }
 
 // The options of the pair terms, fixed for a run. They are run-time flags, not template parameters: the pair loop is
-// compiled once per kernel and pass (6 copies, where one per combination of the options made 48), at no measurable
-// cost per step (docs/performance.md, "Soil pair loop").
+// compiled once per kernel and pass (6 copies, where one per combination of the options made 48), with no cost that
+// side-by-side runs resolve (about 1 % on the collapse; docs/performance.md, "Soil pair loop").
 struct PairOptions {
   bool artificial_stress = false;  // the artificial stress term (Model::uses_artificial_stress)
   bool xsph = false;               // the XSPH velocity correction (Settings::xsph)
