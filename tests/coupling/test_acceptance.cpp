@@ -12,6 +12,7 @@
 #include "coupling/compare/acceptance.hpp"
 #include "coupling/compare/comparison.hpp"
 #include "coupling/output/comparison_report.hpp"
+#include "coupling/scene/scene_schema.hpp"
 #include "test_support.hpp"
 
 namespace test_acceptance {
@@ -102,7 +103,10 @@ TEST_CASE("acceptance: the reader names what is wrong", "[compare][acceptance][s
                               "metres") != std::string::npos);
 
   Diagnostics d3;
-  coupling::read_acceptance({{"methods", {"janbu"}}, {"overlap_min", 1.5}}, computed, d3);
+  // As in a scene: the schema's checks first (overlap_min's bounds are the schema's), then the reader's.
+  const nlohmann::json acceptance = {{"methods", {"janbu"}}, {"overlap_min", 1.5}};
+  coupling::validate_against_schema({{"analyses", {{"compare", {{"acceptance", acceptance}}}}}}, d3);
+  coupling::read_acceptance(acceptance, computed, d3);
   const std::string text = all_messages(d3);
   CHECK(text.find("analyses.compare.acceptance.methods[0]: method \"janbu\" is not computed") != std::string::npos);
   CHECK(text.find("analyses.compare.acceptance.overlap_min: must be in [0, 1]") != std::string::npos);

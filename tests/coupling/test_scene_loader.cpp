@@ -529,15 +529,15 @@ TEST_CASE("scene: each setting's names come from one table that the docs list", 
   check_names("effective_pressure", sph::mps::effective_pressure_names);
   check_names("pore_pressure", sph::mps::pore_pressure_names);
   check_names("stress_divergence", sph::mps::stress_divergence_names);
-  check_names("artificial_stress", sph::soil::artificial_stress_mode_names);
+  check_names("mode", sph::soil::artificial_stress_mode_names, "### `analyses.sph`");
   check_names("pressure", sph::fluid::pressure_mode_names);
   check_names("solver", sph::fluid::linear_solver_names);
   check_names("preconditioner", sph::fluid::preconditioner_names);
-  check_names("motion", sph::fluid::motion_law_names);
+  check_names("law", sph::fluid::motion_law_names);
   check_names("type", slope::support_type_names);
   check_names("direction", slope::support_direction_names);
   check_names("application", slope::support_application_names);
-  check_names("materials", sph::mps::material_type_names, "### `analyses.mps`");
+  check_names("type", sph::mps::material_type_names, "#### `analyses.mps.materials[i]`");
   // The reader's message lists the same names.
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(fs::path(test_paths::source_dir()) / "cases/two_layer_water_sph.json"));
   scene["analyses"]["sph"]["kernel"] = "gaussian";

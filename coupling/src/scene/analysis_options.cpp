@@ -9,8 +9,8 @@ namespace {
 
 // A length criterion is given in metres ("<name>_max_m") or in particle spacings ("<name>_max_spacings"), not both.
 std::optional<LengthLimit> read_length_limit(JsonReader& r, const std::string& name) {
-  const auto metres = r.number(name + "_max_m", Need::optional, Bounds::non_negative());
-  const auto spacings = r.number(name + "_max_spacings", Need::optional, Bounds::non_negative());
+  const auto metres = r.number(name + "_max_m", Need::optional);
+  const auto spacings = r.number(name + "_max_spacings", Need::optional);
   if (metres && spacings) {
     r.diagnostics().error(r.path_of(name + "_max_spacings"),
                           "give the limit either in metres (" + name + "_max_m) or in particle spacings, not both");
@@ -56,8 +56,8 @@ std::optional<AcceptanceCriteria> read_acceptance(const nlohmann::json& block, c
   c.exit_offset = read_length_limit(r, "exit_offset");
   c.mean_normal_distance = read_length_limit(r, "mean_normal_distance");
   c.max_normal_distance = read_length_limit(r, "max_normal_distance");
-  c.min_overlap = r.number("overlap_min", Need::optional, Bounds::closed(0.0, 1.0));
-  c.max_fs_difference = r.number("fs_difference_max", Need::optional, Bounds::non_negative());
+  c.min_overlap = r.number("overlap_min", Need::optional);
+  c.max_fs_difference = r.number("fs_difference_max", Need::optional);
   r.finish();
   const bool any = c.entry_offset || c.exit_offset || c.mean_normal_distance || c.max_normal_distance ||
                    c.min_overlap || c.max_fs_difference;
@@ -76,8 +76,8 @@ std::optional<ComparisonOptions> read_comparison_options(const nlohmann::json& b
   const std::size_t errors_before = diagnostics.size();
   ComparisonOptions options;
   options.band.plastic_strain_threshold =
-      r.number_or("plastic_strain_threshold", options.band.plastic_strain_threshold, Bounds::positive());
-  options.band.bin_width = r.number_or("bin_width_m", 0.0, Bounds::non_negative());
+      r.number_or("plastic_strain_threshold", options.band.plastic_strain_threshold);
+  options.band.bin_width = r.number_or("bin_width_m", 0.0);
   if (const auto configuration = r.string("configuration", Need::optional)) {
     if (*configuration == "initial" || *configuration == "current") {
       options.band.initial_configuration = *configuration == "initial";
@@ -86,7 +86,7 @@ std::optional<ComparisonOptions> read_comparison_options(const nlohmann::json& b
                         "unknown configuration \"" + *configuration + "\" (allowed: initial, current)");
     }
   }
-  options.displacement_threshold = r.number_or("displacement_threshold_m", 0.0, Bounds::non_negative());
+  options.displacement_threshold = r.number_or("displacement_threshold_m", 0.0);
   if (const nlohmann::json* acceptance = r.raw("acceptance", Need::optional, "an object"))
     options.acceptance = read_acceptance(*acceptance, lem_methods, diagnostics);
   r.finish();
@@ -98,7 +98,7 @@ std::optional<SrmOptions> read_srm_options(const nlohmann::json& block, Diagnost
   JsonReader r(block, "analyses.srm", diagnostics);
   const std::size_t errors_before = diagnostics.size();
   SrmOptions o;
-  o.tolerance = r.number_or("tolerance", o.tolerance, Bounds::open(0.0, 1.0));
+  o.tolerance = r.number_or("tolerance", o.tolerance);
   if (const nlohmann::json* bracket = r.raw("bracket", Need::optional)) {
     const std::string path = r.path_of("bracket");
     if (auto pair = read_pair(*bracket, path, diagnostics, "[lo, hi]")) {
@@ -110,12 +110,11 @@ std::optional<SrmOptions> read_srm_options(const nlohmann::json& block, Diagnost
         o.bracket = *pair;
     }
   }
-  o.failure_displacement_m = r.number("failure_displacement_m", Need::optional, Bounds::positive());
-  o.max_time_s = r.number("max_time_s", Need::optional, Bounds::positive());
-  o.damping_per_s = r.number("damping_per_s", Need::optional, Bounds::non_negative());
-  o.rest_speed_m_s = r.number("rest_speed_m_s", Need::optional, Bounds::positive());
-  if (const auto trials = r.integer("max_trials", Need::optional, Bounds::closed(2.0, 200.0)))
-    o.max_trials = static_cast<int>(*trials);
+  o.failure_displacement_m = r.number("failure_displacement_m", Need::optional);
+  o.max_time_s = r.number("max_time_s", Need::optional);
+  o.damping_per_s = r.number("damping_per_s", Need::optional);
+  o.rest_speed_m_s = r.number("rest_speed_m_s", Need::optional);
+  o.max_trials = static_cast<int>(r.integer_or("max_trials", o.max_trials));
   r.finish();
   if (diagnostics.size() != errors_before) return std::nullopt;
   return o;

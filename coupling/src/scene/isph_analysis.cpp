@@ -9,19 +9,19 @@ namespace coupling {
 namespace {
 
 void read_numerics(JsonReader& r, sph::fluid::Settings& s) {
-  if (auto v = r.number("particle_spacing_m", Need::required, Bounds::positive())) s.particle_spacing = *v;
-  if (auto v = r.number("end_time_s", Need::required, Bounds::positive())) s.end_time = *v;
+  if (auto v = r.number("particle_spacing_m", Need::required)) s.particle_spacing = *v;
+  if (auto v = r.number("end_time_s", Need::required)) s.end_time = *v;
   s.h_over_dx = r.number_or("h_over_dx", s.h_over_dx,
                             Bounds::closed(sph::EngineSettings::h_over_dx_min, sph::EngineSettings::h_over_dx_max));
-  s.output_interval = r.number_or("output_interval_s", s.output_interval, Bounds::non_negative());
-  s.rest_density = r.number_or("rest_density_kg_m3", s.rest_density, Bounds::positive());
-  s.viscosity = r.number_or("viscosity_Pa_s", s.viscosity, Bounds::non_negative());
-  s.surface_beta = r.number_or("surface_beta", s.surface_beta, Bounds::open(0.0, 1.0));
+  s.output_interval = r.number_or("output_interval_s", s.output_interval);
+  s.rest_density = r.number_or("rest_density_kg_m3", s.rest_density);
+  s.viscosity = r.number_or("viscosity_Pa_s", s.viscosity);
+  s.surface_beta = r.number_or("surface_beta", s.surface_beta);
   s.wall_clearance =
       r.number_or("wall_clearance", s.wall_clearance, Bounds::half_open(0.0, sph::fluid::Settings::max_wall_clearance));
   s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, sph::fluid::Settings::max_cfl, true});
-  s.max_time_step = r.number_or("max_time_step_s", s.max_time_step, Bounds::non_negative());
-  s.solver_tolerance = r.number_or("solver_tolerance", s.solver_tolerance, Bounds::open(0.0, 1.0));
+  s.max_time_step = r.number_or("max_time_step_s", s.max_time_step);
+  s.solver_tolerance = r.number_or("solver_tolerance", s.solver_tolerance);
   read_named(r, "pressure", sph::fluid::pressure_mode_names, s.pressure_mode);
   read_named(r, "preconditioner", sph::fluid::preconditioner_names, s.preconditioner);
   read_named(r, "solver", sph::fluid::linear_solver_names, s.solver);

@@ -51,8 +51,8 @@ void read_motion(JsonReader& m, sph::fluid::RigidBody& body) {
   if (body.motion == Motion::free) {
     // gravity and the fluid's force: nothing more to read
   } else if (body.motion == Motion::ln_cosh) {
-    body.initial_acceleration = m.number("initial_acceleration_m_s2", Need::required, Bounds::positive()).value_or(0);
-    body.terminal_speed = m.number("terminal_speed_m_s", Need::required, Bounds::positive()).value_or(0);
+    body.initial_acceleration = m.number("initial_acceleration_m_s2", Need::required).value_or(0);
+    body.terminal_speed = m.number("terminal_speed_m_s", Need::required).value_or(0);
   } else {  // Motion::table
     const nlohmann::json* t = m.array("time_s", Need::required, 2, limits::polyline_points);
     const nlohmann::json* s = m.array("travel_m", Need::required, 2, limits::polyline_points);
@@ -64,7 +64,7 @@ void read_motion(JsonReader& m, sph::fluid::RigidBody& body) {
       return;
     }
     for (std::size_t k = 0; k < t->size(); ++k) {
-      const auto tk = read_number((*t)[k], index_path(m.path_of("time_s"), k), m.diagnostics(), Bounds::non_negative());
+      const auto tk = read_number((*t)[k], index_path(m.path_of("time_s"), k), m.diagnostics());
       const auto sk = read_number((*s)[k], index_path(m.path_of("travel_m"), k), m.diagnostics());
       if (!tk || !sk) return;
       if (!body.table_time.empty() && !(*tk > body.table_time.back())) {
@@ -80,8 +80,7 @@ void read_motion(JsonReader& m, sph::fluid::RigidBody& body) {
 }  // namespace
 
 void read_isph_geometry(JsonReader& isph, IsphAnalysis& a) {
-  const double percent = isph.number_or("bed_slope_percent", 0.0,
-                                        Bounds::closed(-kMaxBedSlopePercent, kMaxBedSlopePercent));
+  const double percent = isph.number_or("bed_slope_percent", 0.0);
   a.bed_slope = percent / 100.0;
   const double theta = std::atan(a.bed_slope);
   a.settings.gravity_x = sphslope::standard_gravity * std::sin(theta);
@@ -104,13 +103,13 @@ void read_isph_geometry(JsonReader& isph, IsphAnalysis& a) {
     IsphBody body;
     body.name = b.string("name", Need::optional).value_or("body " + std::to_string(i));
     const bool polygon = read_polygon_in_tank(b, a.tank, "a body", body.polygon);
-    body.body.density = b.number_or("density_kg_m3", body.body.density, Bounds::positive());
-    const double direction = b.number("direction_deg", Need::required, Bounds::closed(-360.0, 360.0)).value_or(0.0);
+    body.body.density = b.number_or("density_kg_m3", body.body.density);
+    const double direction = b.number("direction_deg", Need::required).value_or(0.0);
     body.body.direction_x = std::cos(direction * sphslope::degree);
     body.body.direction_y = std::sin(direction * sphslope::degree);
     body.body.stop_travel =
-        b.number_or("stop_after_m", std::numeric_limits<double>::infinity(), Bounds::positive());
-    body.body.start_time = b.number_or("start_time_s", 0.0, Bounds::non_negative());
+        b.number_or("stop_after_m", std::numeric_limits<double>::infinity());
+    body.body.start_time = b.number_or("start_time_s", 0.0);
     if (auto m = b.object("motion", Need::required)) {
       read_motion(*m, body.body);
       m->finish();

@@ -21,13 +21,13 @@ std::optional<FrontReference> read_front_reference(JsonReader& isph) {
                                                      "\" (the tabulated front the program holds), got \"" + *data +
                                                      "\"");
     f.data = *data;
-    if (auto a = r->number("column_width_m", Need::required, Bounds::positive())) f.column_width = *a;
+    if (auto a = r->number("column_width_m", Need::required)) f.column_width = *a;
   } else if (r->has("column_width_m")) {
     r->diagnostics().error(r->path_of("column_width_m"), "given without \"data\" (the width scales its table)");
   }
   const bool dam = r->has("ritter_dam_x_m"), depth = r->has("ritter_depth_m");
   f.ritter_dam_x = r->number("ritter_dam_x_m", Need::optional);
-  f.ritter_depth = r->number("ritter_depth_m", Need::optional, Bounds::positive());
+  f.ritter_depth = r->number("ritter_depth_m", Need::optional);
   if (dam != depth)
     r->diagnostics().error(r->path_of(dam ? "ritter_depth_m" : "ritter_dam_x_m"),
                            "missing (Ritter's front needs both ritter_dam_x_m and ritter_depth_m)");

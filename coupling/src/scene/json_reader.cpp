@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "coupling/scene/scene_schema.hpp"
+
 namespace coupling {
 
 void Diagnostics::error(std::string_view path, std::string_view message) {
@@ -132,6 +134,7 @@ std::string closest_match(std::string_view word, const std::vector<std::string>&
 
 std::optional<double> read_number(const nlohmann::json& value, const std::string& path, Diagnostics& diagnostics,
                                   const Bounds& bounds) {
+  if (diagnostics.skip_invalid(path)) return std::nullopt;
   if (!value.is_number()) {
     const bool any = !bounds.min && !bounds.max;
     diagnostics.error(path, std::string("expected a number") + (any ? "" : " (" + bounds.describe() + ")") + ", got " +
@@ -152,6 +155,7 @@ std::optional<double> read_number(const nlohmann::json& value, const std::string
 
 std::optional<long> read_integer(const nlohmann::json& value, const std::string& path, Diagnostics& diagnostics,
                                  const Bounds& bounds) {
+  if (diagnostics.skip_invalid(path)) return std::nullopt;
   const bool whole = value.is_number_integer() || value.is_number_unsigned() ||
                      (value.is_number_float() && std::isfinite(value.get<double>()) &&
                       std::floor(value.get<double>()) == value.get<double>());
@@ -171,6 +175,7 @@ std::optional<long> read_integer(const nlohmann::json& value, const std::string&
 
 std::optional<std::string> read_string(const nlohmann::json& value, const std::string& path,
                                        Diagnostics& diagnostics, bool non_empty) {
+  if (diagnostics.skip_invalid(path)) return std::nullopt;
   if (!value.is_string()) {
     diagnostics.error(path, "expected a string, got " + got(value));
     return std::nullopt;
@@ -185,6 +190,7 @@ std::optional<std::string> read_string(const nlohmann::json& value, const std::s
 
 std::optional<std::pair<double, double>> read_pair(const nlohmann::json& value, const std::string& path,
                                                    Diagnostics& diagnostics, std::string_view what) {
+  if (diagnostics.skip_invalid(path)) return std::nullopt;
   if (!value.is_array() || value.size() != 2) {
     diagnostics.error(path, "expected " + std::string(what) + " (an array of two numbers), got " +
                                 (value.is_array() ? "an array of " + std::to_string(value.size()) + " elements"
@@ -200,6 +206,7 @@ std::optional<std::pair<double, double>> read_pair(const nlohmann::json& value, 
 bool within_size_limit(const nlohmann::json& value, const std::string& path, const SizeLimit& limit,
                        Diagnostics& diagnostics) {
   if (value.size() <= limit.max) return true;
+  if (diagnostics.skip_invalid(path)) return false;
   diagnostics.error(path, "too many " + std::string(limit.what) + " (got " + std::to_string(value.size()) +
                               "; at most " + std::to_string(limit.max) + " allowed: " + std::string(limit.reason) +
                               ")");
@@ -207,12 +214,49 @@ bool within_size_limit(const nlohmann::json& value, const std::string& path, con
 }
 
 JsonReader::JsonReader(const nlohmann::json& value, std::string path, Diagnostics& diagnostics)
-    : path_(std::move(path)), diagnostics_(&diagnostics) {
+    : JsonReader(value, path, diagnostics, schema_node_at(path).json()) {}
+
+JsonReader::JsonReader(const nlohmann::json& value, std::string path, Diagnostics& diagnostics,
+                       const nlohmann::ordered_json* schema)
+    : schema_(schema), path_(std::move(path)), diagnostics_(&diagnostics) {
   if (value.is_object()) {
     object_ = &value;
   } else {
-    diagnostics_->error(path_, "expected an object, got " + got(value));
+    report(path_, "expected an object, got " + got(value));
   }
+}
+
+void JsonReader::report(std::string_view path, std::string_view message) const {
+  if (!diagnostics_->skip_invalid(path)) diagnostics_->error(path, message);
+}
+
+void JsonReader::schema_disagrees(std::string_view path, std::string_view detail) const {
+  diagnostics_->error(path, "the program and its scene schema (docs/scene.schema.json) disagree: " +
+                                std::string(detail) + " (a fault of sphslope, not of the scene)");
+}
+
+void JsonReader::check_default(std::string_view key, double fallback) const {
+  const SchemaNode node = SchemaNode(schema_).property(key);
+  const nlohmann::ordered_json* given = node ? node.default_value() : nullptr;
+  if (given == nullptr) return;
+  if (!given->is_number() || given->get<double>() != fallback)
+    schema_disagrees(path_of(key), "the schema's default is " + given->dump() + ", the program's " +
+                                       format_number(fallback));
+}
+
+void check_names_against_schema(const JsonReader& parent, std::string_view key, const std::vector<std::string>& names,
+                                std::string_view current) {
+  const SchemaNode node = SchemaNode(parent.schema()).property(key);
+  if (!node) return;
+  if (node.enum_names() != names) {
+    std::string program;
+    for (const std::string& name : names) program += (program.empty() ? "" : ", ") + name;
+    parent.schema_disagrees(parent.path_of(key), "the program's names are " + program);
+  }
+  const nlohmann::ordered_json* given = node.default_value();
+  if (given != nullptr && !(given->is_string() && given->get<std::string>() == current))
+    parent.schema_disagrees(parent.path_of(key),
+                            "the schema's default is " + given->dump() + ", the program's \"" + std::string(current) + "\"");
 }
 
 bool JsonReader::has(std::string_view key) {
@@ -229,40 +273,51 @@ const nlohmann::json* JsonReader::find(std::string_view key, Need need, std::str
   if (object_ == nullptr) return nullptr;
   const auto it = object_->find(key);
   if (it == object_->end()) {
-    if (need == Need::required) diagnostics_->error(path_of(key), "missing (required: " + std::string(expected) + ")");
+    if (need == Need::required) report(path_of(key), "missing (required: " + std::string(expected) + ")");
     return nullptr;
   }
   return &*it;
 }
 
 const nlohmann::json* JsonReader::raw(std::string_view key, Need need, std::string_view expected) {
-  return find(key, need, expected);
+  const nlohmann::json* value = find(key, need, expected);
+  return value == nullptr || diagnostics_->skip_invalid(path_of(key)) ? nullptr : value;
 }
 
 std::optional<double> JsonReader::number(std::string_view key, Need need, const Bounds& bounds) {
   const bool any = !bounds.min && !bounds.max;
-  const nlohmann::json* value = find(key, need, any ? std::string("a number") : "a number " + bounds.describe());
+  const SchemaNode node = SchemaNode(schema_).property(key);
+  const nlohmann::json* value =
+      find(key, need, node ? node.expected() : any ? std::string("a number") : "a number " + bounds.describe());
   if (value == nullptr) return std::nullopt;
   return read_number(*value, path_of(key), *diagnostics_, bounds);
 }
 
 double JsonReader::number_or(std::string_view key, double fallback, const Bounds& bounds) {
+  if (object_ != nullptr && !object_->contains(key)) check_default(key, fallback);
   return number(key, Need::optional, bounds).value_or(fallback);
 }
 
 std::optional<long> JsonReader::integer(std::string_view key, Need need, const Bounds& bounds) {
   const bool any = !bounds.min && !bounds.max;
+  const SchemaNode node = SchemaNode(schema_).property(key);
   const nlohmann::json* value =
-      find(key, need, any ? std::string("a whole number") : "a whole number " + bounds.describe());
+      find(key, need, node ? node.expected() : any ? std::string("a whole number") : "a whole number " + bounds.describe());
   if (value == nullptr) return std::nullopt;
   return read_integer(*value, path_of(key), *diagnostics_, bounds);
+}
+
+long JsonReader::integer_or(std::string_view key, long fallback) {
+  if (object_ != nullptr && !object_->contains(key)) check_default(key, static_cast<double>(fallback));
+  return integer(key, Need::optional).value_or(fallback);
 }
 
 std::optional<bool> JsonReader::boolean(std::string_view key, Need need) {
   const nlohmann::json* value = find(key, need, "true or false");
   if (value == nullptr) return std::nullopt;
+  if (diagnostics_->skip_invalid(path_of(key))) return std::nullopt;
   if (!value->is_boolean()) {
-    diagnostics_->error(path_of(key), "expected true or false, got " + got(*value));
+    report(path_of(key), "expected true or false, got " + got(*value));
     return std::nullopt;
   }
   return value->get<bool>();
@@ -276,24 +331,24 @@ std::optional<std::string> JsonReader::string(std::string_view key, Need need, b
 
 std::optional<JsonReader> JsonReader::object(std::string_view key, Need need, std::string_view expected) {
   const nlohmann::json* value = find(key, need, expected);
-  if (value == nullptr) return std::nullopt;
+  if (value == nullptr || diagnostics_->skip_invalid(path_of(key))) return std::nullopt;
   if (!value->is_object()) {
-    diagnostics_->error(path_of(key), "expected " + std::string(expected) + ", got " + got(*value));
+    report(path_of(key), "expected " + std::string(expected) + ", got " + got(*value));
     return std::nullopt;
   }
-  return JsonReader(*value, path_of(key), *diagnostics_);
+  return JsonReader(*value, path_of(key), *diagnostics_, SchemaNode(schema_).property(key).json());
 }
 
 const nlohmann::json* JsonReader::array(std::string_view key, Need need, std::size_t min_size,
                                         const SizeLimit& limit, std::string_view expected) {
   const nlohmann::json* value = find(key, need, expected);
-  if (value == nullptr) return nullptr;
+  if (value == nullptr || diagnostics_->skip_invalid(path_of(key))) return nullptr;
   if (!value->is_array()) {
-    diagnostics_->error(path_of(key), "expected " + std::string(expected) + ", got " + got(*value));
+    report(path_of(key), "expected " + std::string(expected) + ", got " + got(*value));
     return nullptr;
   }
   if (value->size() < min_size) {
-    diagnostics_->error(path_of(key), "needs at least " + std::to_string(min_size) + " element" +
+    report(path_of(key), "needs at least " + std::to_string(min_size) + " element" +
                                           (min_size == 1 ? "" : "s") + " (got " + std::to_string(value->size()) +
                                           ")");
     return nullptr;
@@ -310,8 +365,10 @@ void JsonReader::finish() {
     if (!allowed.empty()) allowed += ", ";
     allowed += key;
   }
+  // A key the schema knows may still be unknown here: the schema lists the union of the keys of, e.g., every
+  // reinforcement type, and the reader asks only for those of the element's own type.
   for (const auto& [key, value] : object_->items()) {
-    if (key == "notes" || known_set_.count(key) != 0) continue;
+    if (key == "notes" || known_set_.count(key) != 0 || diagnostics_->is_invalid(path_of(key))) continue;
     std::string message = "unknown key (";
     const std::string suggestion = closest_match(key, known_);
     if (!suggestion.empty()) message += "did you mean \"" + suggestion + "\"? ";

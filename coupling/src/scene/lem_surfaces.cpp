@@ -17,7 +17,7 @@ constexpr int circle_segments = 256;
 // analyses.lem.surfaces[i].tension_crack: {"depth_m": z} or {"rankine": true}, and "water_filled".
 std::optional<slope::TensionCrack> read_tension_crack(JsonReader& crack) {
   slope::TensionCrack out;
-  const auto depth = crack.number("depth_m", Need::optional, Bounds::positive());
+  const auto depth = crack.number("depth_m", Need::optional);
   const auto rankine = crack.boolean("rankine", Need::optional);
   out.water_filled = crack.boolean("water_filled", Need::optional).value_or(false);
   crack.finish();
@@ -54,7 +54,7 @@ bool read_points(JsonReader& surface, GivenSurface& out) {
 // analyses.lem.surfaces[i].circle: {"center_m": [x, y], "radius_m": r}; false when invalid.
 bool read_circle(JsonReader& circle, GivenSurface& out) {
   const nlohmann::json* centre = circle.raw("center_m", Need::required, "a point [x_m, y_m]");
-  const auto radius = circle.number("radius_m", Need::required, Bounds::positive());
+  const auto radius = circle.number("radius_m", Need::required);
   std::optional<std::pair<double, double>> c;
   if (centre) c = read_pair(*centre, circle.path_of("center_m"), circle.diagnostics(), "a point [x_m, y_m]");
   circle.finish();
@@ -89,7 +89,7 @@ std::optional<GivenSurface> read_one_surface(const nlohmann::json& value, const 
     if (pair) out.polyline.moment_point = slope::Point{pair->first, pair->second};
     else ok = false;
   }
-  if (const auto tolerance = surface.number("convex_tolerance_deg", Need::optional, Bounds::half_open(0.0, 90.0)))
+  if (const auto tolerance = surface.number("convex_tolerance_deg", Need::optional))
     out.polyline.convex_tolerance = *tolerance * sphslope::degree;
   if (auto crack = surface.object("tension_crack", Need::optional)) {
     out.polyline.tension_crack = read_tension_crack(*crack);

@@ -18,17 +18,17 @@ constexpr SizeLimit profile_times_limit{1000, "times", "each time writes one pro
 
 void read_numerics(JsonReader& r, sph::mps::Settings& s) {
   using Settings = sph::mps::Settings;
-  if (auto v = r.number("particle_spacing_m", Need::required, Bounds::positive())) s.particle_spacing = *v;
-  if (auto v = r.number("end_time_s", Need::required, Bounds::positive())) s.end_time = *v;
+  if (auto v = r.number("particle_spacing_m", Need::required)) s.particle_spacing = *v;
+  if (auto v = r.number("end_time_s", Need::required)) s.end_time = *v;
   s.re_over_dx = r.number_or("re_over_dx", s.re_over_dx, Bounds::closed(Settings::min_re_over_dx, Settings::max_re_over_dx));
-  s.rest_density = r.number_or("rest_density_kg_m3", s.rest_density, Bounds::positive());
-  s.sound_speed = r.number_or("sound_speed_m_s", s.sound_speed, Bounds::positive());
+  s.rest_density = r.number_or("rest_density_kg_m3", s.rest_density);
+  s.sound_speed = r.number_or("sound_speed_m_s", s.sound_speed);
   s.surface_beta =
       r.number_or("surface_beta", s.surface_beta, Bounds::closed(Settings::min_surface_beta, Settings::max_surface_beta));
-  s.viscosity_cap = r.number_or("viscosity_cap_Pa_s", s.viscosity_cap, Bounds::positive());
-  s.pressure_split = r.number_or("pressure_split", s.pressure_split, Bounds::closed(0.0, 1.0));
+  s.viscosity_cap = r.number_or("viscosity_cap_Pa_s", s.viscosity_cap);
+  s.pressure_split = r.number_or("pressure_split", s.pressure_split);
   s.cfl = r.number_or("cfl", s.cfl, Bounds{0.0, false, sph::mps::Settings::max_cfl, true});
-  s.output_interval = r.number_or("output_interval_s", s.output_interval, Bounds::non_negative());
+  s.output_interval = r.number_or("output_interval_s", s.output_interval);
   read_named(r, "regularisation", sph::mps::regularisation_names, s.regularisation);
   read_named(r, "effective_pressure", sph::mps::effective_pressure_names, s.effective_pressure);
   read_named(r, "pore_pressure", sph::mps::pore_pressure_names, s.pore_pressure);
@@ -44,17 +44,17 @@ MpsMaterial read_mps_material(JsonReader& m) {
   const std::string type_name = m.string("type", Need::required).value_or("");
   const auto type = sphslope::value_named(sph::mps::material_type_names, type_name);
   if (type == sph::mps::Material::Type::water) {
-    out.material = sph::mps::Material::water(m.number_or("viscosity_Pa_s", 1.0e-3, Bounds::non_negative()));
+    out.material = sph::mps::Material::water(m.number_or("viscosity_Pa_s", 1.0e-3));
   } else if (type == sph::mps::Material::Type::granular) {
     sph::mps::HerschelBulkley hb;
-    hb.consistency = m.number_or("consistency_Pa_sN", hb.consistency, Bounds::non_negative());
-    hb.flow_index = m.number_or("flow_index", hb.flow_index, Bounds{0.0, false, 2.0, true});
-    hb.growth = m.number_or("regularisation_growth_s", hb.growth, Bounds::positive());
-    hb.friction_angle_deg = m.number_or("friction_angle_deg", hb.friction_angle_deg, Bounds::half_open(0.0, 90.0));
-    hb.cohesion = 1.0e3 * m.number_or("cohesion_kPa", 0.0, Bounds::non_negative());
+    hb.consistency = m.number_or("consistency_Pa_sN", hb.consistency);
+    hb.flow_index = m.number_or("flow_index", hb.flow_index);
+    hb.growth = m.number_or("regularisation_growth_s", hb.growth);
+    hb.friction_angle_deg = m.number_or("friction_angle_deg", hb.friction_angle_deg);
+    hb.cohesion = 1.0e3 * m.number_or("cohesion_kPa", 0.0);
     out.material = sph::mps::Material::granular_material(hb);
     out.material.grain_volume_fraction =
-        m.number_or("grain_volume_fraction", out.material.grain_volume_fraction, Bounds{0.0, false, 1.0, true});
+        m.number_or("grain_volume_fraction", out.material.grain_volume_fraction);
   } else {
     if (!type_name.empty())
       m.diagnostics().error(m.path_of("type"), "expected " +
@@ -65,7 +65,7 @@ MpsMaterial read_mps_material(JsonReader& m) {
                             "friction_angle_deg", "cohesion_kPa", "grain_volume_fraction"})
       m.allow(key);
   }
-  out.material.density = m.number_or("density_kg_m3", 0.0, Bounds::positive());  // 0: rest_density_kg_m3
+  out.material.density = m.number_or("density_kg_m3", 0.0);  // 0: rest_density_kg_m3
   return out;
 }
 
@@ -104,7 +104,7 @@ void read_gate(JsonReader& mps, MpsAnalysis& a) {
   auto g = mps.object("gate", Need::optional, "an object {x_m, lift_speed_m_s}");
   if (!g) return;
   const auto x = g->number("x_m", Need::required);
-  const auto speed = g->number("lift_speed_m_s", Need::required, Bounds::positive());
+  const auto speed = g->number("lift_speed_m_s", Need::required);
   g->finish();
   if (!x || !speed) return;
   const double thickness = sph::mps::gate_thickness(a.settings);
@@ -198,7 +198,7 @@ MpsAnalysis read_mps_analysis(JsonReader& mps) {
   read_tank_monitors(mps, a.monitors, true);
   read_profiles(mps, a);
   check_pore_water(mps, a);
-  a.max_steps = mps.number_or("max_steps", a.max_steps, Bounds::at_least(1.0));
+  a.max_steps = mps.number_or("max_steps", a.max_steps);
   mps.finish();
   try {
     a.settings.validate();

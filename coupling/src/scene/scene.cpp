@@ -6,6 +6,7 @@
 
 #include "coupling/scene/json_reader.hpp"
 #include "coupling/scene/scene.hpp"
+#include "coupling/scene/scene_schema.hpp"
 #include "scene_internal.hpp"
 
 namespace coupling {
@@ -128,7 +129,7 @@ void read_fs_map(JsonReader& lem, LemAnalysis& result, Diagnostics& diagnostics)
   auto map = lem.object("fs_map", Need::optional, "an object: {\"method\": \"bishop\", \"colour_scale_max\": 2.0}");
   if (!map) return;
   read_analysed_method(*map, result, result.search.fs_map_method, diagnostics);
-  if (const auto top = map->number("colour_scale_max", Need::optional, Bounds::positive()))
+  if (const auto top = map->number("colour_scale_max", Need::optional))
     result.fs_map_scale_max = *top;
   map->finish();
 }
@@ -174,9 +175,7 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
       result.methods.push_back(*method);
     }
   }
-  if (const auto slices = lem->integer("slices", Need::optional, Bounds::closed(min_slices, max_slices))) {
-    result.search.slicing.slices = static_cast<int>(*slices);
-  }
+  result.search.slicing.slices = static_cast<int>(lem->integer_or("slices", result.search.slicing.slices));
   if (const auto refine = lem->boolean("refine", Need::optional)) result.search.refine = *refine;
   if (auto search = lem->object("search", Need::optional)) {
     result.has_search_limits =
@@ -189,15 +188,7 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
   }
   if (auto noncircular = lem->object("noncircular_search", Need::optional, "an object (may be empty: {})")) {
     result.noncircular = slope::NonCircularOptions{};
-    if (const auto segments = noncircular->integer("segments", Need::optional, Bounds::closed(8, 128))) {
-      const long s = *segments;
-      if (s % 8 != 0 || (s / 8 & (s / 8 - 1)) != 0)
-        diagnostics.error(noncircular->path_of("segments"),
-                          std::to_string(s) + " is not allowed: the search doubles the segments from 8, so use 8, 16, "
-                                              "32, 64 or 128");
-      else
-        result.noncircular->segments = static_cast<int>(s);
-    }
+    result.noncircular->segments = static_cast<int>(noncircular->integer_or("segments", result.noncircular->segments));
     noncircular->finish();
   }
   read_fs_map(*lem, result, diagnostics);
@@ -290,6 +281,9 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
   Scene scene;
   scene.file = file;
 
+  // First the schema's checks (types, bounds, required keys, names, unknown keys), then the program's own.
+  validate_against_schema(document, diagnostics);
+  if (diagnostics.size() > max_reported_faults) throw SceneError(diagnostics.messages());  // no room for more
   JsonReader top(document, "", diagnostics);
   if (!top.is_object()) throw SceneError(diagnostics.messages());
 
@@ -301,6 +295,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
   }
   scene.name = top.string("name", Need::optional).value_or(file.stem().string());
   scene.source = top.string("source", Need::optional, false).value_or("");
+  top.string("$schema", Need::optional);  // where an editor finds the format's schema; not used here
   top.allow("notes");
 
   const bool has_section = top.has("section");

@@ -11,10 +11,6 @@
 
 namespace coupling {
 
-inline constexpr long min_slices = 5;
-inline constexpr long max_slices = 1000;
-inline constexpr long max_grid_points_per_axis = 200;
-
 // Reads and validates one material object (name, unit weight, strength, optional elastic and flow constants) and
 // converts it to SI; reports its own unknown keys. Also used for the materials of particle bodies.
 // Scene units to SI: kPa, kN/m^3 and kPa/m (kilo), MPa (mega).

@@ -39,8 +39,8 @@ std::optional<slope::Point> read_tail(JsonReader& r, const slope::Point& head, i
                                                  "slope\" is not defined: give tail_m [x, y] instead");
     return std::nullopt;
   }
-  const auto length = r.number("length_m", Need::required, Bounds::open(0.0, 1e6));
-  const auto inclination = r.number("inclination_deg", Need::required, Bounds::closed(-90.0, 90.0));
+  const auto length = r.number("length_m", Need::required);
+  const auto inclination = r.number("inclination_deg", Need::required);
   if (!length || !inclination) return std::nullopt;
   const double a = sphslope::radians(*inclination);
   return slope::Point{head.x + into * *length * std::cos(a), head.y - *length * std::sin(a)};
@@ -48,18 +48,18 @@ std::optional<slope::Point> read_tail(JsonReader& r, const slope::Point& head, i
 
 // The capacities and bond of a tensile element (kN, kN/m to N, N/m).
 void read_tensile(JsonReader& r, slope::Reinforcement& e) {
-  const auto tensile_kN = r.number("tensile_capacity_kN", Need::required, Bounds::positive());
+  const auto tensile_kN = r.number("tensile_capacity_kN", Need::required);
   if (tensile_kN) slope::set_tensile_capacity(e, *tensile_kN * kilo);
-  if (const auto head = r.number("head_capacity_kN", Need::optional, Bounds::non_negative())) e.head_capacity = *head * kilo;
+  if (const auto head = r.number("head_capacity_kN", Need::optional)) e.head_capacity = *head * kilo;
   if (e.type == slope::SupportType::end_anchored) {
-    if (const auto tail = r.number("tail_capacity_kN", Need::optional, Bounds::non_negative()))
+    if (const auto tail = r.number("tail_capacity_kN", Need::optional))
       e.tail_capacity = *tail * kilo;
     return;  // no bond
   }
   const Need bond_need = e.type == slope::SupportType::tieback ? Need::required : Need::optional;
-  if (const auto bond = r.number("bond_strength_kN_m", bond_need, Bounds::non_negative())) e.bond_strength = *bond * kilo;
+  if (const auto bond = r.number("bond_strength_kN_m", bond_need)) e.bond_strength = *bond * kilo;
   if (e.type == slope::SupportType::tieback) {
-    const auto bond_length = r.number("bond_length_m", Need::required, Bounds::positive());
+    const auto bond_length = r.number("bond_length_m", Need::required);
     if (bond_length) {
       if (!(*bond_length <= e.length() * (1.0 + 1e-12)))
         r.diagnostics().error(r.path_of("bond_length_m"), "must be at most the element's length, " +
@@ -83,13 +83,13 @@ std::optional<slope::Reinforcement> read_element(JsonReader& r, int into) {
   const auto tail = read_tail(r, *head, into);
   if (!tail) return std::nullopt;
   e.tail = *tail;
-  e.spacing = r.number_or("spacing_m", 1.0, Bounds::open(0.0, 1e3));
+  e.spacing = r.number_or("spacing_m", 1.0);
   if (tensile(e.type)) read_tensile(r, e);
-  else if (const auto shear = r.number("shear_capacity_kN", Need::required, Bounds::positive()))
+  else if (const auto shear = r.number("shear_capacity_kN", Need::required))
     e.shear_capacity = *shear * kilo;
   read_named(r, "direction", slope::support_direction_names, e.direction);
   if (e.direction == slope::SupportDirection::angle) {
-    if (const auto angle = r.number("force_angle_deg", Need::required, Bounds::closed(-90.0, 90.0)))
+    if (const auto angle = r.number("force_angle_deg", Need::required))
       e.force_angle = sphslope::radians(*angle);
   }
   read_named(r, "application", slope::support_application_names, e.application);

@@ -184,7 +184,7 @@ std::optional<slope::Water> read_water(JsonReader& water, double x_min, double x
                                                  "an array of at least two points [x_m, y_m]")) {
     line = read_polyline(*points, water.path_of("piezometric_line_m"), diagnostics);
   }
-  const auto unit_weight = water.number("unit_weight_kN_m3", Need::optional, Bounds::positive());
+  const auto unit_weight = water.number("unit_weight_kN_m3", Need::optional);
   water.finish();
   if (!line || (water.has("unit_weight_kN_m3") && !unit_weight)) return std::nullopt;
   result.piezometric_line = *line;
@@ -221,8 +221,8 @@ std::vector<slope::Surcharge> read_surcharges(const nlohmann::json& array, const
     JsonReader s(array[i], index_path(path, i), diagnostics);
     const auto from = s.number("from_x_m", Need::required);
     const auto to = s.number("to_x_m", Need::required);
-    const auto pressure = s.number("pressure_kPa", Need::required, Bounds::non_negative());
-    const auto pressure_end = s.number("pressure_end_kPa", Need::optional, Bounds::non_negative());
+    const auto pressure = s.number("pressure_kPa", Need::required);
+    const auto pressure_end = s.number("pressure_end_kPa", Need::optional);
     s.finish();
     if (!from || !to || !pressure) {
       ok = false;
@@ -254,8 +254,8 @@ std::vector<slope::LineLoad> read_line_loads(const nlohmann::json& array, const 
   for (std::size_t i = 0; i < array.size(); ++i) {
     JsonReader r(array[i], index_path(path, i), diagnostics);
     const auto x = r.number("x_m", Need::required);
-    const auto force = r.number("force_kN_m", Need::required, Bounds::non_negative());
-    const double angle = r.number_or("angle_deg", 0.0, Bounds::closed(-180.0, 180.0));
+    const auto force = r.number("force_kN_m", Need::required);
+    const double angle = r.number_or("angle_deg", 0.0);
     r.finish();
     if (!x || !force) {
       ok = false;
@@ -274,8 +274,7 @@ std::vector<slope::LineLoad> read_line_loads(const nlohmann::json& array, const 
 }
 
 // [min, max] with min <= max (or min < max when `strict`).
-std::optional<slope::Range> read_range(JsonReader& reader, std::string_view key, bool strict,
-                                       const Bounds& bounds = Bounds::any()) {
+std::optional<slope::Range> read_range(JsonReader& reader, std::string_view key, bool strict) {
   const nlohmann::json* value = reader.raw(key, Need::optional);
   if (value == nullptr) return std::nullopt;
   const std::string path = reader.path_of(key);
@@ -285,11 +284,6 @@ std::optional<slope::Range> read_range(JsonReader& reader, std::string_view key,
   if (strict ? !(pair->first < pair->second) : !(pair->first <= pair->second)) {
     diagnostics.error(path, std::string("min must be ") + (strict ? "less than" : "at most") + " max (got [" +
                                 format_number(pair->first) + ", " + format_number(pair->second) + "])");
-    return std::nullopt;
-  }
-  if (!bounds.contains(pair->first) || !bounds.contains(pair->second)) {
-    diagnostics.error(path, "both ends must be " + bounds.describe() + " (got [" + format_number(pair->first) + ", " +
-                                format_number(pair->second) + "])");
     return std::nullopt;
   }
   return slope::Range{pair->first, pair->second};
@@ -321,30 +315,24 @@ bool read_search_limits(JsonReader& search, const slope::Section* section, slope
   }
   if (auto grid = search.object("centre_grid", Need::optional,
                                 "an object {\"x_m\": [min, max], \"y_m\": [min, max], \"nx\": 10, \"ny\": 10}")) {
-    const bool has_x = grid->has("x_m"), has_y = grid->has("y_m");
-    const auto x = read_range(*grid, "x_m", true);
+    const auto x = read_range(*grid, "x_m", true);  // both required: the schema reports one that is missing
     const auto y = read_range(*grid, "y_m", true);
-    if (!has_x) diagnostics.error(grid->path_of("x_m"), "missing (required: a range [min, max] of centre x, m)");
-    if (!has_y) diagnostics.error(grid->path_of("y_m"), "missing (required: a range [min, max] of centre y, m)");
-    const Bounds counts = Bounds::closed(2, static_cast<double>(max_grid_points_per_axis));
-    const auto nx = grid->integer("nx", Need::optional, counts);
-    const auto ny = grid->integer("ny", Need::optional, counts);
+    slope::CentreGrid centre_grid;
+    centre_grid.nx = static_cast<int>(grid->integer_or("nx", centre_grid.nx));  // an invalid count is reported
+    centre_grid.ny = static_cast<int>(grid->integer_or("ny", centre_grid.ny));  // already: the scene is refused
     grid->finish();
-    if (x && y && (nx || !grid->has("nx")) && (ny || !grid->has("ny"))) {
-      slope::CentreGrid centre_grid;
+    if (x && y) {
       centre_grid.x = *x;
       centre_grid.y = *y;
-      centre_grid.nx = static_cast<int>(nx.value_or(10));
-      centre_grid.ny = static_cast<int>(ny.value_or(10));
       limits.centre_grid = centre_grid;
     }
   }
-  limits.radius = read_range(search, "radius_m", false, Bounds::positive());
+  limits.radius = read_range(search, "radius_m", false);
   return search.has("entry_x_m") || search.has("exit_x_m") || search.has("centre_grid") || search.has("radius_m");
 }
 
 std::optional<double> read_minimum_depth(JsonReader& search) {
-  return search.number("minimum_depth_m", Need::optional, Bounds::positive());
+  return search.number("minimum_depth_m", Need::optional);
 }
 
 namespace {
@@ -456,8 +444,8 @@ void read_section_loads(JsonReader& section, const SectionExtent& extent, std::o
     out.line_loads = read_line_loads(*loads, section.path_of("line_loads"), extent, diagnostics, line_loads_ok);
   }
   if (auto seismic = section.object("seismic", Need::optional, "an object {\"horizontal_coefficient\": 0.1}")) {
-    const auto kh = seismic->number("horizontal_coefficient", Need::optional, Bounds::half_open(0.0, 1.0));
-    const auto kv = seismic->number("vertical_coefficient", Need::optional, Bounds::open(-1.0, 1.0));
+    const auto kh = seismic->number("horizontal_coefficient", Need::optional);
+    const auto kv = seismic->number("vertical_coefficient", Need::optional);
     if (!kh && !kv && seismic->is_object())
       diagnostics.error(seismic->path(), "give horizontal_coefficient (0 <= kh < 1), vertical_coefficient "
                                          "(-1 < kv < 1, + upward) or both");

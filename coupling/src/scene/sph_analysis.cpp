@@ -159,6 +159,9 @@ namespace {
 template <class E, std::size_t N>
 void read_choice(JsonReader& r, std::string_view key, const char* what, const sphslope::NameTable<E, N>& names,
                  E& out) {
+  std::vector<std::string> listed;
+  for (const auto& entry : names) listed.emplace_back(entry.name);
+  check_names_against_schema(r, key, listed, sphslope::name_of(names, out));
   const auto value = r.string(key, Need::optional);
   if (!value) return;
   if (const auto choice = sphslope::value_named(names, *value)) {
@@ -179,8 +182,8 @@ void read_choices(JsonReader& r, sph::soil::Settings& s) {
 void read_artificial_viscosity(JsonReader& r, sph::soil::Settings& s) {
   auto viscosity = r.object("artificial_viscosity", Need::optional);
   if (!viscosity) return;
-  s.viscosity.alpha = viscosity->number_or("alpha", s.viscosity.alpha, Bounds::non_negative());
-  s.viscosity.beta = viscosity->number_or("beta", s.viscosity.beta, Bounds::non_negative());
+  s.viscosity.alpha = viscosity->number_or("alpha", s.viscosity.alpha);
+  s.viscosity.beta = viscosity->number_or("beta", s.viscosity.beta);
   viscosity->finish();
 }
 
@@ -188,8 +191,8 @@ void read_artificial_stress(JsonReader& r, sph::soil::Settings& s) {
   auto stress = r.object("artificial_stress", Need::optional);
   if (!stress) return;
   read_choice(*stress, "mode", "mode", sph::soil::artificial_stress_mode_names, s.artificial_stress.mode);
-  s.artificial_stress.epsilon = stress->number_or("epsilon", s.artificial_stress.epsilon, Bounds::closed(0.0, 1.0));
-  s.artificial_stress.exponent = stress->number_or("exponent", s.artificial_stress.exponent, Bounds::positive());
+  s.artificial_stress.epsilon = stress->number_or("epsilon", s.artificial_stress.epsilon);
+  s.artificial_stress.exponent = stress->number_or("exponent", s.artificial_stress.exponent);
   stress->finish();
 }
 
@@ -199,7 +202,7 @@ std::optional<long> read_section_walls(JsonReader& r, SphAnalysis& a) {
   auto walls = r.object("walls", Need::optional);
   if (!walls) return wall_layers;
   if (auto sides = read_sides(*walls, "sides", a.section_walls)) a.section_walls = *sides;
-  wall_layers = walls->integer("layers", Need::optional, Bounds::closed(1, 50));
+  wall_layers = walls->integer("layers", Need::optional);
   if (const auto slip = walls->string("slip", Need::optional)) {
     if (*slip == "no_slip") {
       a.settings.wall_slip = sph::soil::WallSlip::no_slip;
@@ -218,7 +221,7 @@ void read_run_limits(JsonReader& r, SphAnalysis& a) {
   sph::soil::Settings& s = a.settings;
   s.cfl = r.number_or("cfl", sph::soil::default_cfl(s.integration), Bounds{0.0, false, sph::soil::max_cfl(s.integration), true});
   s.stress_substeps = sph::soil::default_stress_substeps(s.integration);
-  if (const auto n = r.integer("stress_substeps", Need::optional, Bounds::closed(1, 64))) {
+  if (const auto n = r.integer("stress_substeps", Need::optional)) {
     s.stress_substeps = static_cast<int>(*n);
     if (*n > 1 && s.integration != sph::soil::TimeIntegration::verlet)
       r.diagnostics().error(r.path_of("stress_substeps"),
@@ -226,14 +229,14 @@ void read_run_limits(JsonReader& r, SphAnalysis& a) {
                             "\"verlet\" (the predictor-corrector updates the stress twice per step); give 1 or "
                             "leave it out");
   }
-  s.damping = r.number_or("damping_per_s", s.damping, Bounds::non_negative());
+  s.damping = r.number_or("damping_per_s", s.damping);
   s.checkpoint_interval_wall_s =
-      r.number_or("checkpoint_interval_s", s.checkpoint_interval_wall_s, Bounds::non_negative());
-  a.quasi_static_speed = r.number_or("stop_below_speed_m_s", 0.0, Bounds::non_negative());
-  a.quasi_static_min_time = r.number_or("stop_below_speed_after_s", 0.0, Bounds::non_negative());
-  a.memory_limit_bytes = r.number_or("max_memory_GiB", 16.0, Bounds::positive()) * gibibyte;
-  a.max_particles = static_cast<std::size_t>(r.number_or("max_particles", 5.0e6, Bounds::at_least(1.0)));
-  a.max_steps = r.number_or("max_steps", 5.0e6, Bounds::at_least(1.0));
+      r.number_or("checkpoint_interval_s", s.checkpoint_interval_wall_s);
+  a.quasi_static_speed = r.number_or("stop_below_speed_m_s", 0.0);
+  a.quasi_static_min_time = r.number_or("stop_below_speed_after_s", 0.0);
+  a.memory_limit_bytes = r.number_or("max_memory_GiB", 16.0) * gibibyte;
+  a.max_particles = static_cast<std::size_t>(r.number_or("max_particles", 5.0e6));
+  a.max_steps = r.number_or("max_steps", 5.0e6);
 }
 
 // Gravity ramp: only with "ramped"; default 10 % of the simulated time; full gravity must be reached.
@@ -287,20 +290,20 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   const std::size_t errors_before = diagnostics.size();
   SphAnalysis a;
   sph::soil::Settings& s = a.settings;
-  const auto spacing = r.number("particle_spacing_m", Need::required, Bounds::positive());
-  const auto end_time = r.number("end_time_s", Need::required, Bounds::positive());
+  const auto spacing = r.number("particle_spacing_m", Need::required);
+  const auto end_time = r.number("end_time_s", Need::required);
   s.h_over_dx = r.number_or("smoothing_length_ratio", s.h_over_dx,
                             Bounds::closed(sph::EngineSettings::h_over_dx_min, sph::EngineSettings::h_over_dx_max));
   read_choices(r, s);
-  const auto ramp = r.number("gravity_ramp_s", Need::optional, Bounds::positive());
+  const auto ramp = r.number("gravity_ramp_s", Need::optional);
   read_artificial_viscosity(r, s);
   read_artificial_stress(r, s);
-  const double chi = r.number_or("xsph", 0.0, Bounds::closed(0.0, 1.0));
+  const double chi = r.number_or("xsph", 0.0);
   s.xsph.enabled = chi > 0.0;
   if (chi > 0.0) s.xsph.chi = chi;
   const std::optional<long> wall_layers = read_section_walls(r, a);
   read_run_limits(r, a);
-  const auto output_interval = r.number("output_interval_s", Need::optional, Bounds::positive());
+  const auto output_interval = r.number("output_interval_s", Need::optional);
   a.ignored_loads = read_ignored_loads(r);
   r.finish();
   if (!spacing || !end_time || diagnostics.size() != errors_before) return std::nullopt;
@@ -378,7 +381,7 @@ std::optional<WallBox> read_wall_box(const nlohmann::json& walls, Diagnostics& d
   if (const nlohmann::json* range = w.raw("x_range_m", Need::required, "[x_min, x_max]"))
     x_range = read_pair(*range, w.path_of("x_range_m"), diagnostics, "[x_min, x_max]");
   const auto bottom = w.number("bottom_y_m", Need::required);
-  const auto height = w.number("height_m", Need::required, Bounds::positive());
+  const auto height = w.number("height_m", Need::required);
   const auto sides = read_sides(w, "sides", WallSides{});
   w.finish();
   if (x_range && x_range->second <= x_range->first)

@@ -18,7 +18,7 @@ void read_tank(JsonReader& r, Tank& tank) {
   tank.x_min = t->number_or("x_min_m", 0.0);
   tank.y_min = t->number_or("y_min_m", 0.0);
   if (auto v = t->number("x_max_m", Need::required)) tank.x_max = *v;
-  if (auto v = t->number("height_m", Need::required, Bounds::positive())) tank.height = *v;
+  if (auto v = t->number("height_m", Need::required)) tank.height = *v;
   if (tank.x_max <= tank.x_min) t->diagnostics().error(t->path_of("x_max_m"), "must be larger than x_min_m");
   t->finish();
 }
@@ -52,7 +52,7 @@ void read_times(JsonReader& r, const char* key, Need need, std::optional<double>
                 std::vector<double>& out) {
   const nlohmann::json* times = r.array(key, need, 1, limit);
   if (!times) return;
-  const Bounds bounds = end_time ? Bounds{0.0, false, *end_time, true} : Bounds::positive();
+  const Bounds bounds = end_time ? Bounds{0.0, false, *end_time, true} : Bounds::any();  // > 0: the schema's
   for (std::size_t k = 0; k < times->size(); ++k) {
     const std::string path = index_path(r.path_of(key), k);
     const auto t = read_number((*times)[k], path, r.diagnostics(), bounds);
@@ -72,7 +72,7 @@ void read_tank_monitors(JsonReader& r, TankMonitors& a, bool allow_wall_height) 
   a.front = m->boolean("front", Need::optional).value_or(false);
   if (allow_wall_height) a.wall_height = m->boolean("wall_height", Need::optional).value_or(false);
   a.still_water = m->number_or("still_water_m", 0.0);
-  a.interval = m->number_or("interval_s", a.interval, Bounds::positive());
+  a.interval = m->number_or("interval_s", a.interval);
   std::set<std::string> names;
   if (const nlohmann::json* gauges = m->array("gauges", Need::optional, 0, gauges_limit)) {
     for (std::size_t k = 0; k < gauges->size(); ++k) {

@@ -4,10 +4,14 @@
 //   section.materials[0].unit_weight_kN_m3: must be > 0 (got -18)
 //   analyses.lem.slice: unknown key (did you mean "slices"?; allowed here: methods, slices, refine, search)
 //
-// A JsonReader wraps one JSON object. Every key the program understands is read through it (typed, with bounds);
-// finish() then reports every key that was never asked for as unknown. Errors are collected, not thrown, so one
-// pass reports every fault in a file. Readers return std::nullopt for a missing or invalid value, so checks that
-// depend on it are skipped instead of cascading.
+// A JsonReader wraps one JSON object. Every key the program understands is read through it (typed, with the bounds
+// that only the program knows: a range that depends on other values); finish() then reports every key that was never
+// asked for. Types, static bounds, required keys, enum names and unknown keys are the scene schema's
+// (scene_schema.hpp): its pass reports those faults first and marks their paths invalid, and the readers skip such a
+// value without a second message. Errors are collected, not thrown, so one pass reports every fault in a file. Readers
+// return std::nullopt for a missing or invalid value, so checks that depend on it are skipped instead of cascading.
+// Where the program and the schema spell the same thing (a default, an enum's names) the reader checks that they
+// agree and reports a fault of the program when they do not, so every scene read in the tests checks them.
 #include <cstddef>
 #include <optional>
 #include <set>
@@ -28,13 +32,31 @@ class Diagnostics {
  public:
   void error(std::string_view path, std::string_view message);
   bool empty() const { return count_ == 0; }
-  // Every fault reported, including those not kept.
-  std::size_t size() const { return count_; }
+  // Every fault reported, including those not kept, and every time a reader met a value already reported: a reader
+  // of a block tells whether anything in it failed by comparing size() before and after.
+  std::size_t size() const { return count_ + skipped_; }
   const std::vector<std::string>& messages() const { return messages_; }
+
+  // The paths whose fault is reported already (the schema pass marks them): the typed readers skip their values
+  // without a second message.
+  // Only the paths of the faults shown are kept: a scene with more faults is refused on the schema's alone
+  // (scene_from_json), so that no reader meets an invalid value that is not marked.
+  void mark_invalid(std::string_view path) {
+    if (count_ <= max_reported_faults) invalid_.emplace(path);
+  }
+  bool is_invalid(std::string_view path) const { return invalid_.find(path) != invalid_.end(); }
+  // For a reader about to read the value at `path`: whether to skip it (it is invalid), counted in size().
+  bool skip_invalid(std::string_view path) {
+    if (!is_invalid(path)) return false;
+    ++skipped_;
+    return true;
+  }
 
  private:
   std::vector<std::string> messages_;
   std::size_t count_ = 0;
+  std::size_t skipped_ = 0;
+  std::set<std::string, std::less<>> invalid_;
 };
 
 // "section.materials" + "name" -> "section.materials.name"; "" + "section" -> "section".
@@ -83,12 +105,14 @@ class JsonReader {
   // Marks a key as known without reading it (free-form content such as "notes").
   void allow(std::string_view key);
 
-  // The raw value of a key of any type (kept for a later stage); reports a missing required key.
+  // The raw value of a key of any type (kept for a later stage); reports a missing required key. Null when the key is
+  // absent or its value is invalid (reported already).
   const nlohmann::json* raw(std::string_view key, Need need, std::string_view expected = "a value");
 
   std::optional<double> number(std::string_view key, Need need, const Bounds& bounds = Bounds::any());
   double number_or(std::string_view key, double fallback, const Bounds& bounds = Bounds::any());
   std::optional<long> integer(std::string_view key, Need need, const Bounds& bounds = Bounds::any());
+  long integer_or(std::string_view key, long fallback);
   std::optional<bool> boolean(std::string_view key, Need need);
   // `non_empty`: an empty string is an error.
   std::optional<std::string> string(std::string_view key, Need need, bool non_empty = true);
@@ -104,10 +128,21 @@ class JsonReader {
   // Keys under "notes" are free-form and never checked.
   void finish();
 
+  // The schema node of this object (null where the schema does not describe it).
+  const nlohmann::ordered_json* schema() const { return schema_; }
+  // Reports that the program and the scene schema disagree at `path` (a fault of the program, not of the scene).
+  void schema_disagrees(std::string_view path, std::string_view detail) const;
+
  private:
+  JsonReader(const nlohmann::json& value, std::string path, Diagnostics& diagnostics,
+             const nlohmann::ordered_json* schema);
   const nlohmann::json* find(std::string_view key, Need need, std::string_view expected);
+  void report(std::string_view path, std::string_view message) const;
+  // When `key` is absent and the program falls back to `fallback`: the schema's default must be the same.
+  void check_default(std::string_view key, double fallback) const;
 
   const nlohmann::json* object_ = nullptr;
+  const nlohmann::ordered_json* schema_ = nullptr;
   std::string path_;
   Diagnostics* diagnostics_;
   std::vector<std::string> known_;  // in the order asked for, for the "allowed here" list
@@ -136,8 +171,16 @@ std::string closest_match(std::string_view word, const std::vector<std::string>&
 
 // An optional string key naming one of a setting's choices (its name table): `target` is set to the named one;
 // another name is an error "expected "a" or "b", got "c"".
+// The program's names of a choice at `parent.key` against the schema's enum and default there (a fault of the program
+// when they differ): the schema lists `names` in their order, and its default is `current`'s name.
+void check_names_against_schema(const JsonReader& parent, std::string_view key, const std::vector<std::string>& names,
+                                std::string_view current);
+
 template <class Choice, std::size_t N>
 void read_named(JsonReader& r, const char* key, const sphslope::NameTable<Choice, N>& names, Choice& target) {
+  std::vector<std::string> listed;
+  for (const auto& entry : names) listed.emplace_back(entry.name);
+  check_names_against_schema(r, key, listed, sphslope::name_of(names, target));
   const auto name = r.string(key, Need::optional);
   if (!name) return;
   if (const auto value = sphslope::value_named(names, *name)) {
