@@ -79,21 +79,20 @@ std::string Bounds::describe() const {
   return "any number";
 }
 
-namespace {
-
-// Text of the value as written (numbers keep their JSON spelling), shortened for messages.
-std::string shown(const nlohmann::json& value) {
+std::string shown_value(const nlohmann::json& value) {
   std::string text = value.dump();
   if (text.size() > 40) text = text.substr(0, 37) + "...";
   return text;
 }
 
-std::string got(const nlohmann::json& value) {
+std::string found_value(const nlohmann::json& value) {
   if (value.is_string() || value.is_number() || value.is_boolean() || value.is_null()) {
-    return json_type_name(value) + " " + shown(value);
+    return json_type_name(value) + " " + shown_value(value);
   }
   return json_type_name(value);
 }
+
+namespace {
 
 std::string lower(std::string_view text) {
   std::string out(text);
@@ -138,16 +137,16 @@ std::optional<double> read_number(const nlohmann::json& value, const std::string
   if (!value.is_number()) {
     const bool any = !bounds.min && !bounds.max;
     diagnostics.error(path, std::string("expected a number") + (any ? "" : " (" + bounds.describe() + ")") + ", got " +
-                                got(value));
+                                found_value(value));
     return std::nullopt;
   }
   const double number = value.get<double>();
   if (!std::isfinite(number)) {
-    diagnostics.error(path, "must be a finite number (got " + shown(value) + ")");
+    diagnostics.error(path, "must be a finite number (got " + shown_value(value) + ")");
     return std::nullopt;
   }
   if (!bounds.contains(number)) {
-    diagnostics.error(path, "must be " + bounds.describe() + " (got " + shown(value) + ")");
+    diagnostics.error(path, "must be " + bounds.describe() + " (got " + shown_value(value) + ")");
     return std::nullopt;
   }
   return number;
@@ -162,12 +161,12 @@ std::optional<long> read_integer(const nlohmann::json& value, const std::string&
   if (!whole) {
     const bool any = !bounds.min && !bounds.max;
     diagnostics.error(path, std::string("expected a whole number") + (any ? "" : " (" + bounds.describe() + ")") +
-                                ", got " + got(value));
+                                ", got " + found_value(value));
     return std::nullopt;
   }
   const double number = value.get<double>();
   if (!bounds.contains(number) || std::fabs(number) > 1e15) {
-    diagnostics.error(path, "must be " + bounds.describe() + " (got " + shown(value) + ")");
+    diagnostics.error(path, "must be " + bounds.describe() + " (got " + shown_value(value) + ")");
     return std::nullopt;
   }
   return static_cast<long>(number);
@@ -177,7 +176,7 @@ std::optional<std::string> read_string(const nlohmann::json& value, const std::s
                                        Diagnostics& diagnostics, bool non_empty) {
   if (diagnostics.skip_invalid(path)) return std::nullopt;
   if (!value.is_string()) {
-    diagnostics.error(path, "expected a string, got " + got(value));
+    diagnostics.error(path, "expected a string, got " + found_value(value));
     return std::nullopt;
   }
   std::string text = value.get<std::string>();
@@ -194,7 +193,7 @@ std::optional<std::pair<double, double>> read_pair(const nlohmann::json& value, 
   if (!value.is_array() || value.size() != 2) {
     diagnostics.error(path, "expected " + std::string(what) + " (an array of two numbers), got " +
                                 (value.is_array() ? "an array of " + std::to_string(value.size()) + " elements"
-                                                  : got(value)));
+                                                  : found_value(value)));
     return std::nullopt;
   }
   const auto a = read_number(value[0], index_path(path, 0), diagnostics);
@@ -222,7 +221,7 @@ JsonReader::JsonReader(const nlohmann::json& value, std::string path, Diagnostic
   if (value.is_object()) {
     object_ = &value;
   } else {
-    report(path_, "expected an object, got " + got(value));
+    report(path_, "expected an object, got " + found_value(value));
   }
 }
 
@@ -317,7 +316,7 @@ std::optional<bool> JsonReader::boolean(std::string_view key, Need need) {
   if (value == nullptr) return std::nullopt;
   if (diagnostics_->skip_invalid(path_of(key))) return std::nullopt;
   if (!value->is_boolean()) {
-    report(path_of(key), "expected true or false, got " + got(*value));
+    report(path_of(key), "expected true or false, got " + found_value(*value));
     return std::nullopt;
   }
   return value->get<bool>();
@@ -333,7 +332,7 @@ std::optional<JsonReader> JsonReader::object(std::string_view key, Need need, st
   const nlohmann::json* value = find(key, need, expected);
   if (value == nullptr || diagnostics_->skip_invalid(path_of(key))) return std::nullopt;
   if (!value->is_object()) {
-    report(path_of(key), "expected " + std::string(expected) + ", got " + got(*value));
+    report(path_of(key), "expected " + std::string(expected) + ", got " + found_value(*value));
     return std::nullopt;
   }
   return JsonReader(*value, path_of(key), *diagnostics_, SchemaNode(schema_).property(key).json());
@@ -344,7 +343,7 @@ const nlohmann::json* JsonReader::array(std::string_view key, Need need, std::si
   const nlohmann::json* value = find(key, need, expected);
   if (value == nullptr || diagnostics_->skip_invalid(path_of(key))) return nullptr;
   if (!value->is_array()) {
-    report(path_of(key), "expected " + std::string(expected) + ", got " + got(*value));
+    report(path_of(key), "expected " + std::string(expected) + ", got " + found_value(*value));
     return nullptr;
   }
   if (value->size() < min_size) {

@@ -75,19 +75,6 @@ std::string listed(const std::vector<std::string>& names, bool quote) {
   return out;
 }
 
-// Text of the value as written, shortened for messages.
-std::string shown(const nlohmann::json& value) {
-  std::string text = value.dump();
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
-  return text;
-}
-
-std::string got(const nlohmann::json& value) {
-  if (value.is_string() || value.is_number() || value.is_boolean() || value.is_null())
-    return json_type_name(value) + " " + shown(value);
-  return json_type_name(value);
-}
-
 }  // namespace
 
 SchemaNode::SchemaNode(const nlohmann::ordered_json* node) : node_(node ? resolve(*node) : nullptr) {}
@@ -214,7 +201,7 @@ class FaultWriter {
     }
     if (!type_matches(node, value)) return false;
     if (const auto* constant = member(node.json(), "const"); constant != nullptr && constant->dump() != value.dump()) {
-      fault(path_, "must be " + constant->dump() + " (got " + shown(value) + ")");
+      fault(path_, "must be " + constant->dump() + " (got " + shown_value(value) + ")");
       return false;
     }
     if (value.is_number() && !check_numeric_enum(node, value)) return false;
@@ -254,7 +241,7 @@ class FaultWriter {
     } else if (t == "string") {
       expected = "a string";
     }
-    fault(path_, "expected " + expected + ", got " + got(value));
+    fault(path_, "expected " + expected + ", got " + found_value(value));
     return false;
   }
 
@@ -268,7 +255,7 @@ class FaultWriter {
       allowed.push_back(v.dump());
     }
     const auto* reason = member(node.json(), "x-enum-reason");
-    fault(path_, "must be " + listed(allowed, false) + " (got " + shown(value) + ")" +
+    fault(path_, "must be " + listed(allowed, false) + " (got " + shown_value(value) + ")" +
                      (reason != nullptr && reason->is_string() ? ": " + reason->get<std::string>() : std::string()));
     return false;
   }
@@ -278,10 +265,10 @@ class FaultWriter {
     const Bounds b = node.bounds();
     if (node.is_whole_number() && std::floor(number) != number) {
       fault(path_, "expected a whole number" + (b.min || b.max ? " (" + b.describe() + ")" : std::string()) + ", got " +
-                       got(value));
+                       found_value(value));
       return;
     }
-    if (!b.contains(number)) fault(path_, "must be " + b.describe() + " (got " + shown(value) + ")");
+    if (!b.contains(number)) fault(path_, "must be " + b.describe() + " (got " + shown_value(value) + ")");
   }
 
   void check_string(const SchemaNode& node, const nlohmann::json& value) {
@@ -337,7 +324,8 @@ class FaultWriter {
         if (value[i] == value[j]) {
           const auto* noun = member(node.items().json(), "x-enum-noun");
           const std::string what = noun && noun->is_string() ? noun->get<std::string>() : std::string("value");
-          fault(index_path(path_, j), what + " " + shown(value[j]) + " is listed twice (list each " + what + " once)");
+          fault(index_path(path_, j),
+                what + " " + shown_value(value[j]) + " is listed twice (list each " + what + " once)");
           break;
         }
     return true;

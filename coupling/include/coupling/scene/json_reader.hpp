@@ -68,6 +68,10 @@ std::string index_path(std::string_view parent, std::size_t index);
 std::string json_type_name(const nlohmann::json& value);
 // Short text of a number for messages: 12 -> "12", 0.1 -> "0.1", 1.0/3 -> "0.333333".
 std::string format_number(double value);
+// The value as written (numbers keep their JSON spelling), shortened to 40 characters, for messages.
+std::string shown_value(const nlohmann::json& value);
+// What was found, for "expected ..., got ..." messages: "a number -1", "a string \"x\"", "an object".
+std::string found_value(const nlohmann::json& value);
 
 // Allowed interval of a number; either end may be open, closed or absent.
 struct Bounds {
