@@ -9,12 +9,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/scene/scene.hpp"
 #include "coupling/studies/convergence.hpp"
 #include "coupling/studies/study.hpp"
 #include "sph/fluid/reference_fronts.hpp"
@@ -294,6 +296,77 @@ TEST_CASE("study: refusals name what is wrong", "[study]") {
   CHECK(r.errors.front().find("no analyses.sph") != std::string::npos);
   CHECK_FALSE(fs::exists(options.output_dir));  // nothing written for invalid input
   fs::remove_all(dir);
+}
+
+namespace {
+
+// The scene file with its particle_spacing_m replaced in the JSON text and read again: what the study did before it
+// changed the spacing on the typed scene, kept here as the reference the typed route must match.
+coupling::Scene read_with_spacing(const std::string& file, double spacing) {
+  std::ifstream in(fs::path(test_paths::source_dir()) / "cases" / file);
+  nlohmann::json document = nlohmann::json::parse(in);
+  for (const char* block : {"mps", "isph", "sph"})
+    if (document["analyses"].contains(block)) {
+      document["analyses"][block]["particle_spacing_m"] = spacing;
+      break;
+    }
+  return coupling::scene_from_json(document, file);
+}
+
+std::vector<std::string> refusal(const std::function<coupling::Scene()>& read) {
+  try {
+    read();
+  } catch (const coupling::SceneError& error) {
+    return error.messages();
+  }
+  return {};
+}
+
+}  // namespace
+
+TEST_CASE("study: the scene at another spacing is the scene file read with that spacing", "[study][scene]") {
+  const std::vector<std::pair<std::string, std::vector<double>>> cases = {
+      {"thesis_slope2.json", {0.5, 0.1}},
+      {"bui2008_column_collapse.json", {0.004, 0.001}},
+      {"isph_dam_break_martin_moyce.json", {0.02, 0.005}},
+      {"mps_dry_collapse_gate.json", {0.01, 0.0025}},
+  };
+  for (const auto& [file, spacings] : cases) {
+    const coupling::Scene scene = coupling::load_scene(fs::path(test_paths::source_dir()) / "cases" / file);
+    for (const double dx : spacings) {
+      INFO(file << " at " << dx << " m");
+      const coupling::Scene typed = coupling::scene_with_spacing(scene, dx);
+      const coupling::Scene read = read_with_spacing(file, dx);
+      CHECK(coupling::summarize(typed) == coupling::summarize(read));
+      if (read.analyses.sph) {
+        CHECK(typed.analyses.sph->settings.particle_spacing == dx);
+        CHECK(typed.analyses.sph->wall_layers == read.analyses.sph->wall_layers);
+      }
+      if (read.analyses.isph) {
+        const auto& t = typed.analyses.isph->settings;
+        const auto& r = read.analyses.isph->settings;
+        CHECK(t.particle_spacing == dx);
+        CHECK(t.domain_x_min == r.domain_x_min);
+        CHECK(t.domain_x_max == r.domain_x_max);
+        CHECK(t.domain_y_min == r.domain_y_min);
+      }
+      if (read.analyses.mps) {
+        CHECK(typed.analyses.mps->settings.particle_spacing == dx);
+        CHECK(typed.analyses.mps->gate_x == read.analyses.mps->gate_x);
+      }
+    }
+  }
+  // The refusals a spacing brings are the reader's, word for word: too few particles across the slope, a gate that
+  // overlaps the column once it is ceil(r_e/dx) spacings thick, too many time steps.
+  const std::vector<std::pair<std::string, double>> refused = {
+      {"thesis_slope2.json", 4.0}, {"mps_dry_collapse_gate.json", 0.06}, {"mps_dry_collapse_gate.json", 1e-6}};
+  for (const auto& [file, dx] : refused) {
+    INFO(file << " at " << dx << " m");
+    const coupling::Scene scene = coupling::load_scene(fs::path(test_paths::source_dir()) / "cases" / file);
+    const auto typed = refusal([&] { return coupling::scene_with_spacing(scene, dx); });
+    REQUIRE_FALSE(typed.empty());
+    CHECK(typed == refusal([&] { return read_with_spacing(file, dx); }));
+  }
 }
 
 }  // namespace test_study

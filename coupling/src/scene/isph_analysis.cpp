@@ -28,7 +28,29 @@ void read_numerics(JsonReader& r, sph::fluid::Settings& s) {
   s.wall_layers = static_cast<int>(std::ceil(2.0 * s.h_over_dx - 1e-9));
 }
 
+// Fluid leaving the tank through its walls' outer faces (or below its floor) is removed (docs/isph.md D11).
+void set_domain(IsphAnalysis& a) {
+  const double wall = a.settings.wall_layers * a.settings.particle_spacing;
+  a.settings.domain_x_min = a.tank.x_min - wall;
+  a.settings.domain_x_max = a.tank.x_max + wall;
+  a.settings.domain_y_min = a.tank.y_min - wall;
+}
+
+void validate_settings(const IsphAnalysis& a, Diagnostics& diagnostics) {
+  try {
+    a.settings.validate();
+  } catch (const std::exception& error) {
+    diagnostics.error("analyses.isph", error.what());
+  }
+}
+
 }  // namespace
+
+void apply_isph_spacing(IsphAnalysis& analysis, double spacing, Diagnostics& diagnostics) {
+  analysis.settings.particle_spacing = spacing;
+  set_domain(analysis);
+  validate_settings(analysis, diagnostics);
+}
 
 IsphAnalysis read_isph_analysis(JsonReader& isph) {
   IsphAnalysis a;
@@ -36,18 +58,10 @@ IsphAnalysis read_isph_analysis(JsonReader& isph) {
   read_tank(isph, a.tank);
   read_isph_geometry(isph, a);
   read_tank_rectangles(isph, "water", a.tank, a.water);
-  // fluid leaving the tank through its walls' outer faces (or below its floor) is removed (docs/isph.md D11)
-  const double wall = a.settings.wall_layers * a.settings.particle_spacing;
-  a.settings.domain_x_min = a.tank.x_min - wall;
-  a.settings.domain_x_max = a.tank.x_max + wall;
-  a.settings.domain_y_min = a.tank.y_min - wall;
+  set_domain(a);
   read_tank_monitors(isph, a.monitors, false);
   isph.finish();
-  try {
-    a.settings.validate();
-  } catch (const std::exception& error) {
-    isph.diagnostics().error(isph.path(), error.what());
-  }
+  validate_settings(a, isph.diagnostics());
   return a;
 }
 

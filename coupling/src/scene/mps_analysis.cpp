@@ -98,6 +98,29 @@ void read_block_material(JsonReader& b, const std::vector<MpsMaterial>& material
   if (name) b.diagnostics().error(b.path_of("material"), "unknown material \"" + *name + "\" (known: " + known + ")");
 }
 
+// The gate at x (ceil(r_e/dx) spacings thick, from x to the right) inside the tank and clear of every block; the
+// fault at analyses.mps.gate.x_m when it is not.
+bool gate_fits(const MpsAnalysis& a, double x, Diagnostics& diagnostics) {
+  const std::string path = "analyses.mps.gate.x_m";
+  const double thickness = sph::mps::gate_thickness(a.settings);
+  const double x_max = x + thickness;
+  if (x < a.tank.x_min || x_max > a.tank.x_max) {
+    diagnostics.error(path, "the gate (" + format_number(thickness) +
+                                " m thick, ceil(r_e/dx) spacings, from x_m to the right) must lie inside the tank: x_m "
+                                "from " +
+                                format_number(a.tank.x_min) + " to " + format_number(a.tank.x_max - thickness) + " m");
+    return false;
+  }
+  for (std::size_t k = 0; k < a.blocks.size(); ++k)
+    if (a.blocks[k].x_max > x + 1e-9 && a.blocks[k].x_min < x_max - 1e-9) {
+      diagnostics.error(path, "the gate from " + format_number(x) + " to " + format_number(x_max) +
+                                  " m overlaps blocks[" + std::to_string(k) +
+                                  "]; put it at a block's face (its thickness is ceil(r_e/dx) spacings)");
+      return false;
+    }
+  return true;
+}
+
 // analyses.mps.gate {x_m, lift_speed_m_s}: a gate of the tank's height and r_e thick from x_m to the right, inside
 // the tank and clear of every block, lifted from t = 0 at the speed until it has risen the tank's height.
 void read_gate(JsonReader& mps, MpsAnalysis& a) {
@@ -106,24 +129,7 @@ void read_gate(JsonReader& mps, MpsAnalysis& a) {
   const auto x = g->number("x_m", Need::required);
   const auto speed = g->number("lift_speed_m_s", Need::required);
   g->finish();
-  if (!x || !speed) return;
-  const double thickness = sph::mps::gate_thickness(a.settings);
-  const double x_max = *x + thickness;
-  if (*x < a.tank.x_min || x_max > a.tank.x_max) {
-    g->diagnostics().error(g->path_of("x_m"), "the gate (" + format_number(thickness) +
-                                                  " m thick, ceil(r_e/dx) spacings, from x_m to the right) must lie "
-                                                  "inside the tank: x_m from " + format_number(a.tank.x_min) +
-                                                  " to " + format_number(a.tank.x_max - thickness) + " m");
-    return;
-  }
-  for (std::size_t k = 0; k < a.blocks.size(); ++k)
-    if (a.blocks[k].x_max > *x + 1e-9 && a.blocks[k].x_min < x_max - 1e-9) {
-      g->diagnostics().error(g->path_of("x_m"), "the gate from " + format_number(*x) + " to " + format_number(x_max) +
-                                                    " m overlaps blocks[" + std::to_string(k) +
-                                                    "]; put it at a block's face (its thickness is ceil(r_e/dx) "
-                                                    "spacings)");
-      return;
-    }
+  if (!x || !speed || !gate_fits(a, *x, g->diagnostics())) return;
   a.gate_x = *x;
   a.settings.gate_lift_speed = *speed;
   a.settings.gate_lift_distance = a.tank.height;
@@ -149,7 +155,7 @@ void check_pore_water(JsonReader& mps, const MpsAnalysis& a) {
 }
 
 // A run planned to need more than max_steps time steps is refused before it starts, with the figures.
-void refuse_too_many_steps(JsonReader& r, const MpsAnalysis& a) {
+void refuse_too_many_steps(const MpsAnalysis& a, Diagnostics& diagnostics) {
   const MpsPlan plan = plan_mps(a);
   if (!(plan.planned_steps > a.max_steps)) return;
   const sph::mps::Settings& s = a.settings;
@@ -165,7 +171,19 @@ void refuse_too_many_steps(JsonReader& r, const MpsAnalysis& a) {
     why << "the acoustic limit cfl dx / c0 with sound_speed_m_s = " << s.sound_speed << " m/s), more than max_steps = "
         << std::llround(a.max_steps)
         << "; use a larger particle_spacing_m or a shorter end_time_s, or raise max_steps";
-  r.diagnostics().error(r.path_of("max_steps"), why.str());
+  diagnostics.error("analyses.mps.max_steps", why.str());
+}
+
+// The settings' and the materials' own checks; the fault at analyses.mps when one fails.
+bool validate(const MpsAnalysis& a, Diagnostics& diagnostics) {
+  try {
+    a.settings.validate();
+    for (const MpsMaterial& m : a.materials) m.material.validate();
+  } catch (const std::exception& error) {
+    diagnostics.error("analyses.mps", error.what());
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -200,15 +218,14 @@ MpsAnalysis read_mps_analysis(JsonReader& mps) {
   check_pore_water(mps, a);
   a.max_steps = mps.number_or("max_steps", a.max_steps);
   mps.finish();
-  try {
-    a.settings.validate();
-    for (const MpsMaterial& m : a.materials) m.material.validate();
-  } catch (const std::exception& error) {
-    mps.diagnostics().error(mps.path(), error.what());
-    return a;
-  }
-  if (mps.diagnostics().empty()) refuse_too_many_steps(mps, a);
+  if (validate(a, mps.diagnostics()) && mps.diagnostics().empty()) refuse_too_many_steps(a, mps.diagnostics());
   return a;
+}
+
+void apply_mps_spacing(MpsAnalysis& analysis, double spacing, Diagnostics& diagnostics) {
+  analysis.settings.particle_spacing = spacing;
+  if (analysis.gate_x) gate_fits(analysis, *analysis.gate_x, diagnostics);
+  if (validate(analysis, diagnostics) && diagnostics.empty()) refuse_too_many_steps(analysis, diagnostics);
 }
 
 }  // namespace coupling

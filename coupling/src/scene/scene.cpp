@@ -268,6 +268,12 @@ void read_srm_scene(const SphBlocks& blocks, Scene& scene, Diagnostics& diagnost
                       "(particle_spacing_m, ...)");
 }
 
+LemAnalysis lem_analysis_of_empty_block() {
+  LemAnalysis lem = default_lem_analysis();
+  lem.search.fs_map_method = default_method(lem);
+  return lem;
+}
+
 LemAnalysis default_lem_analysis() {
   LemAnalysis lem;
   lem.methods = slope::all_methods();
@@ -409,14 +415,17 @@ std::string read_scene_text(const std::filesystem::path& file) {
 
 Scene load_scene(const std::filesystem::path& file) { return parse_scene(read_scene_text(file), file); }
 
-nlohmann::json read_scene_document(const std::filesystem::path& file) {
-  const std::string text = read_scene_text(file);
-  if (auto fault = nesting_depth_fault(text)) throw SceneError({std::move(*fault)});
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& error) {
-    throw SceneError({"invalid JSON: " + std::string(error.what())});
-  }
+Scene scene_with_spacing(const Scene& scene, double spacing) {
+  Scene out = scene;
+  Diagnostics diagnostics;
+  if (out.analyses.mps)
+    apply_mps_spacing(*out.analyses.mps, spacing, diagnostics);
+  else if (out.analyses.isph)
+    apply_isph_spacing(*out.analyses.isph, spacing, diagnostics);
+  else if (out.analyses.sph)
+    apply_sph_spacing(out, *out.analyses.sph, spacing, diagnostics);
+  if (!diagnostics.empty()) throw SceneError(diagnostics.messages());
+  return out;
 }
 
 std::vector<std::string> lem_method_keys(const Scene& scene) {

@@ -466,4 +466,10 @@ void read_sph_scene(const SphBlocks& blocks, Scene& scene, Diagnostics& diagnost
   scene.analyses.sph = analysis;
 }
 
+void apply_sph_spacing(const Scene& scene, SphAnalysis& analysis, double spacing, Diagnostics& diagnostics) {
+  analysis.settings.particle_spacing = spacing;
+  if (scene.bodies) check_particles_across_bodies(*scene.bodies, spacing, diagnostics);
+  if (scene.section) check_particles_across_section(scene.section->section, spacing, diagnostics);
+}
+
 }  // namespace coupling

@@ -168,7 +168,7 @@ void describe_run(const RunResults& results, nlohmann::json& entry) {
                       results.isph->result ? results.isph->result->fluid_particles : 0, entry);
 }
 
-RunRecord run_one_spacing(const Scene& scene, const nlohmann::json& document, const CaseSetup& setup, double spacing,
+RunRecord run_one_spacing(const Scene& scene, const CaseSetup& setup, double spacing,
                           const std::filesystem::path& folder, const StudyOptions& options) {
   RunRecord record;
   record.spacing = spacing;
@@ -178,7 +178,7 @@ RunRecord run_one_spacing(const Scene& scene, const nlohmann::json& document, co
   const Clock::time_point start = Clock::now();
   Scene at_spacing;
   try {
-    at_spacing = scene_from_json(scene_at_spacing(scene, document, spacing), scene.file);
+    at_spacing = scene_at_spacing(scene, spacing);
   } catch (const SceneError& error) {
     entry["status"] = "refused";
     entry["errors"] = error.messages();
@@ -252,8 +252,8 @@ std::map<double, double> earlier_seconds_of(const StudyOptions& options) {
 
 // Every spacing in turn (those finished by an earlier session are read back). Returns whether an interrupt
 // stopped the study.
-bool run_spacings(const Scene& scene, const nlohmann::json& document, const CaseSetup& setup,
-                  const std::vector<double>& spacings, const StudyOptions& options, std::vector<RunRecord>& runs) {
+bool run_spacings(const Scene& scene, const CaseSetup& setup, const std::vector<double>& spacings,
+                  const StudyOptions& options, std::vector<RunRecord>& runs) {
   const std::map<double, double> earlier_seconds = earlier_seconds_of(options);
   for (std::size_t k = 0; k < spacings.size(); ++k) {
     const double dx = spacings[k];
@@ -269,7 +269,7 @@ bool run_spacings(const Scene& scene, const nlohmann::json& document, const Case
       *options.log << "study: run " << k + 1 << " of " << spacings.size() << ", dx = " << dx << " m -> "
                    << folder.string() << "\n";
     std::filesystem::create_directories(folder);
-    RunRecord record = run_one_spacing(scene, document, setup, dx, folder, options);
+    RunRecord record = run_one_spacing(scene, setup, dx, folder, options);
     // A resumed run also cost the wall time of the sessions before the interruption (from the last study.json).
     if (const auto before = earlier_seconds.find(dx); before != earlier_seconds.end() && options.resume &&
                                                       record.entry.contains("wall_seconds")) {
@@ -354,11 +354,9 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
     return out;
   }
   Scene scene;
-  nlohmann::json document;
   CaseSetup setup;
   try {
     scene = load_scene(scene_file);
-    document = read_scene_document(scene_file);
     setup = setup_case(scene);
   } catch (const SceneError& error) {
     out.status = ExitStatus::invalid_input;
@@ -378,7 +376,7 @@ StudyResult run_study(const std::filesystem::path& scene_file, const StudyOption
   std::filesystem::create_directories(options.output_dir / "figures");
   install_interrupt_handler();
   std::vector<RunRecord> runs;
-  const bool interrupted = run_spacings(scene, document, setup, spacings, options, runs);
+  const bool interrupted = run_spacings(scene, setup, spacings, options, runs);
 
   // Errors, orders and the figure.
   std::vector<StudySeries> series;

@@ -256,19 +256,15 @@ CaseSetup setup_case(const Scene& scene) {
   throw SceneError({"study: the scene has neither a section nor bodies"});
 }
 
-nlohmann::json scene_at_spacing(const Scene& scene, nlohmann::json document, double spacing) {
-  for (const char* tank : {"mps", "isph"})
-    if (document["analyses"].contains(tank)) {
-      document["analyses"][tank]["particle_spacing_m"] = spacing;
-      return document;
-    }
-  document["analyses"]["sph"]["particle_spacing_m"] = spacing;
-  if (scene.section) {
-    if (!document["analyses"].contains("lem")) document["analyses"]["lem"] = nlohmann::json::object();
-    if (!document["analyses"].contains("compare")) document["analyses"]["compare"] = nlohmann::json::object();
-    document["analyses"].erase("srm");  // a study measures the collapse, not the strength-reduction FS
-  }
-  return document;
+Scene scene_at_spacing(const Scene& scene, double spacing) {
+  Scene out = scene_with_spacing(scene, spacing);
+  if (out.analyses.mps || out.analyses.isph || !out.section) return out;
+  // A slope: the SPH surface is measured against limit equilibrium's, so both run ("lem": {} and "compare": {} when
+  // the scene has none); a study measures the collapse, not the strength-reduction FS.
+  if (!out.analyses.lem) out.analyses.lem = lem_analysis_of_empty_block();
+  if (!out.analyses.compare) out.analyses.compare = ComparisonOptions{};
+  out.analyses.srm.reset();
+  return out;
 }
 
 std::vector<std::optional<double>> read_values(const CaseSetup& setup, const RunResults& run,

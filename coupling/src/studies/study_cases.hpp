@@ -44,9 +44,9 @@ struct CaseSetup {
 // fits none of the references (e.g. an elastic column without free-slip side walls).
 CaseSetup setup_case(const Scene& scene);
 
-// The scene file's `document` with the particle spacing replaced (and, for slopes, lem/compare analyses added when
-// absent); the study loads it again, so that every spacing is validated like a scene file.
-nlohmann::json scene_at_spacing(const Scene& scene, nlohmann::json document, double spacing);
+// The scene at another particle spacing (scene_with_spacing: checked as the reader checks a scene file), for slopes
+// with the lem and compare analyses added when absent and without the strength reduction.
+Scene scene_at_spacing(const Scene& scene, double spacing);
 
 // The monitored values of one finished run, in the order of setup.quantities (null where not available).
 // `folder`: the run's folder (the ISPH dam break reads its front from the folder's monitors.csv).

@@ -41,6 +41,10 @@ struct IsphAnalysis {
 // Reads analyses.isph; faults go to the reader's diagnostics with their JSON paths.
 IsphAnalysis read_isph_analysis(JsonReader& isph);
 
+// analyses.isph at another particle spacing (sphslope study): the spacing, the domain beyond which water is removed
+// (the walls' outer faces, wall layers x spacing) and the settings' own check, as the reader does them.
+void apply_isph_spacing(IsphAnalysis& analysis, double spacing, Diagnostics& diagnostics);
+
 // analyses.isph's bed_slope_percent (gravity tilted), solids and bodies, inside the tank read before.
 void read_isph_geometry(JsonReader& isph, IsphAnalysis& analysis);
 

@@ -48,4 +48,9 @@ MpsPlan plan_mps(const MpsAnalysis& a);
 // Reads analyses.mps; faults go to the reader's diagnostics with their JSON paths.
 MpsAnalysis read_mps_analysis(JsonReader& mps);
 
+// analyses.mps at another particle spacing (sphslope study), checked as the reader checks it: the gate (ceil(r_e/dx)
+// spacings thick) inside the tank and clear of the blocks, the settings' and materials' own checks, and the step plan
+// against max_steps.
+void apply_mps_spacing(MpsAnalysis& analysis, double spacing, Diagnostics& diagnostics);
+
 }  // namespace coupling

@@ -102,12 +102,15 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file = {})
 // Same, from an already parsed document.
 Scene scene_from_json(const nlohmann::json& document, const std::filesystem::path& file = {});
 
-// The parsed JSON of a scene file that load_scene accepted, as written (the study re-reads it with another
-// particle spacing). Throws SceneError when the file cannot be read or parsed.
-nlohmann::json read_scene_document(const std::filesystem::path& file);
+// The scene at another particle spacing, as the reader would have read it with that particle_spacing_m (in
+// analyses.mps, else analyses.isph, else analyses.sph): the spacing set on the typed settings and every check that
+// depends on it made again, with the reader's messages. Throws SceneError with them. Used by sphslope study.
+Scene scene_with_spacing(const Scene& scene, double spacing);
 
 // The LEM settings used when the scene has no analyses.lem block (sphslope lem on such a scene).
 LemAnalysis default_lem_analysis();
+// What "lem": {} reads to: default_lem_analysis() with the safety map's default method.
+LemAnalysis lem_analysis_of_empty_block();
 
 // Keys of the methods analyses.lem computes ("bishop", ...), in the scene's order; empty without analyses.lem.
 std::vector<std::string> lem_method_keys(const Scene& scene);

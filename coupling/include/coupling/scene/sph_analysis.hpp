@@ -50,6 +50,11 @@ struct SphAnalysis {
 // Reads analyses.sph (errors at "analyses.sph.<key>").
 std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagnostics& diagnostics);
 
+struct Scene;
+// What depends on analyses.sph.particle_spacing_m, checked again at `spacing` (sphslope study): at least 4 particles
+// across the section or each body, with the reader's messages. (The wall layers do not: 2h is h/dx spacings.)
+void apply_sph_spacing(const Scene& scene, SphAnalysis& analysis, double spacing, Diagnostics& diagnostics);
+
 // Reads "bodies" and "walls" of a particle scene.
 std::optional<std::vector<ParticleBody>> read_particle_bodies(const nlohmann::json& bodies, Diagnostics& diagnostics);
 std::optional<WallBox> read_wall_box(const nlohmann::json& walls, Diagnostics& diagnostics);
