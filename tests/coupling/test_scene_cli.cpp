@@ -42,6 +42,10 @@ struct BadScene {
 const BadScene bad_scenes[] = {
     {"syntax_error.json", "check", "JSON syntax error at line 6, column"},
     {"sph_ignores_absent_load.json", "check", "analyses.sph.ignore_loads[0]: the section has no seismic to leave out"},
+    {"body_pore_pressure_ratio.json", "check",
+     "bodies[0].material.pore_pressure_ratio: is for limit equilibrium on a section's materials"},
+    {"sph_walls_sides_in_particle_scene.json", "check",
+     "analyses.sph.walls.sides: a particle scene's walls are the top-level \"walls\""},
     {"empty_file.json", "check", "JSON syntax error at line 1, column 1"},
     {"duplicate_key.json", "check", "section.materials[0].cohesion_kPa: duplicate key"},
     {"missing_bottom.json", "check", "section.bottom_y_m: missing"},

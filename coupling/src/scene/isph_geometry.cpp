@@ -85,7 +85,7 @@ void read_isph_geometry(JsonReader& isph, IsphAnalysis& a) {
   const double theta = std::atan(a.bed_slope);
   a.settings.gravity_x = sphslope::standard_gravity * std::sin(theta);
   a.settings.gravity_y = -sphslope::standard_gravity * std::cos(theta);
-  if (const nlohmann::json* solids = isph.array("solids", Need::optional, 1, limits::bodies,
+  if (const nlohmann::json* solids = isph.array("solids", Need::optional, 1, limits::solids,
                                                 "an array of solids {\"name\", \"polygon_m\"}")) {
     for (std::size_t i = 0; i < solids->size(); ++i) {
       JsonReader s((*solids)[i], index_path(isph.path_of("solids"), i), isph.diagnostics());

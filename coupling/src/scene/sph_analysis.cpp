@@ -454,6 +454,12 @@ void read_sph_scene(const SphBlocks& blocks, Scene& scene, Diagnostics& diagnost
   if (!blocks.sph) return;
   const auto analysis = read_sph_analysis(*blocks.sph, diagnostics);
   if (blocks.bodies) {
+    // analyses.sph.walls.sides lines a section's box; a particle scene's walls are its own (walls.sides): refused
+    // rather than left unused
+    const auto walls = blocks.sph->find("walls");
+    if (walls != blocks.sph->end() && walls->is_object() && walls->contains("sides"))
+      diagnostics.error("analyses.sph.walls.sides", "a particle scene's walls are the top-level \"walls\" (its "
+                                                    "\"sides\"); analyses.sph.walls.sides is for a slope section");
     read_particle_scene(blocks, analysis, scene, diagnostics);
   } else if (blocks.walls) {
     diagnostics.error("walls",

@@ -71,7 +71,9 @@ inline constexpr SizeLimit polygon_vertices{
 // Lists of names in which each name may appear once: analyses.lem.methods (7 names), analyses.sph.ignore_loads (3),
 // analyses.sph.walls.sides (3), analyses.compare.acceptance.methods (7).
 inline constexpr SizeLimit name_list{
-    64, "names", "each name may be listed once and there are at most seven names to choose from"};
+    64, "names", "each name may be listed once, and no list has more than seven names to choose from"};
+// analyses.isph.solids: each solid is filled with wall particles separately.
+inline constexpr SizeLimit solids{1000, "solids", "each solid is filled with wall particles and checked separately"};
 
 }  // namespace limits
 
