@@ -17,6 +17,7 @@
 #include "coupling/scene/json_reader.hpp"
 #include "coupling/scene/scene.hpp"
 #include "coupling/scene/scene_schema.hpp"
+#include "slope/methods.hpp"
 #include "sph/engine/settings.hpp"
 #include "sph/fluid/settings.hpp"
 #include "sph/mps/settings.hpp"
@@ -219,6 +220,17 @@ TEST_CASE("schema: the bounds the engine owns are the schema's", "[scene][schema
   }
 }
 
+TEST_CASE("schema: the method names and their default list are the method table's", "[scene][schema]") {
+  // The table (slope/src/method_table.cpp) is read by the search and the report; the schema by the scene reader
+  // and editors: a method added to one alone would be run but refused by name, or the other way round.
+  std::vector<std::string> table;
+  for (const slope::Method m : slope::all_methods()) table.emplace_back(slope::method_key(m));
+  CHECK(coupling::schema_node_at("analyses.lem.methods[0]").enum_names() == table);
+  const auto* listed = coupling::schema_node_at("analyses.lem.methods").default_value();
+  REQUIRE(listed != nullptr);
+  CHECK(listed->get<std::vector<std::string>>() == table);
+}
+
 TEST_CASE("schema: its array size limits are the program's limits on hostile input", "[scene][schema]") {
   namespace limits = coupling::limits;
   const std::vector<std::pair<const char*, coupling::SizeLimit>> arrays = {
@@ -235,6 +247,7 @@ TEST_CASE("schema: its array size limits are the program's limits on hostile inp
       {"analyses.sph.ignore_loads", limits::name_list},
       {"analyses.compare.acceptance.methods", limits::name_list},
       {"bodies", limits::bodies},
+      {"analyses.isph.solids", limits::solids},
       {"bodies[0].polygon_m", limits::polygon_vertices},
   };
   for (const auto& [path, limit] : arrays) {
