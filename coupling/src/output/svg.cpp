@@ -67,7 +67,7 @@ double nice_step(double span, int target_ticks) {
 
 namespace {
 
-std::string number(double v) {
+std::string svg_number(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%g", std::abs(v) < 1e-12 ? 0.0 : v);
   return buffer;
@@ -94,36 +94,36 @@ void SvgCanvas::polyline(const std::vector<slope::Point>& points, const std::str
   body_ << "<polyline fill=\"" << fill << "\" stroke=\"" << stroke << "\" stroke-width=\"" << width << "\"";
   if (!dash.empty()) body_ << " stroke-dasharray=\"" << dash << "\"";
   body_ << " stroke-linejoin=\"round\" points=\"";
-  for (const auto& p : points) body_ << number(px(p.x)) << ',' << number(py(p.y)) << ' ';
+  for (const auto& p : points) body_ << svg_number(px(p.x)) << ',' << svg_number(py(p.y)) << ' ';
   body_ << "\"/>\n";
 }
 
 void SvgCanvas::polygon(const std::vector<slope::Point>& points, const std::string& fill, double opacity) {
   if (points.size() < 3) return;
   body_ << "<polygon fill=\"" << fill << "\" fill-opacity=\"" << opacity << "\" stroke=\"none\" points=\"";
-  for (const auto& p : points) body_ << number(px(p.x)) << ',' << number(py(p.y)) << ' ';
+  for (const auto& p : points) body_ << svg_number(px(p.x)) << ',' << svg_number(py(p.y)) << ' ';
   body_ << "\"/>\n";
 }
 
 void SvgCanvas::dot(double x, double y, double radius_px, const std::string& fill) {
-  body_ << "<circle cx=\"" << number(px(x)) << "\" cy=\"" << number(py(y)) << "\" r=\"" << number(radius_px)
+  body_ << "<circle cx=\"" << svg_number(px(x)) << "\" cy=\"" << svg_number(py(y)) << "\" r=\"" << svg_number(radius_px)
         << "\" fill=\"" << fill << "\"/>\n";
 }
 
 void SvgCanvas::text(double x_px, double y_px, const std::string& content, double size, const std::string& anchor,
                      const std::string& colour) {
-  body_ << "<text x=\"" << number(x_px) << "\" y=\"" << number(y_px) << "\" font-size=\"" << size
+  body_ << "<text x=\"" << svg_number(x_px) << "\" y=\"" << svg_number(y_px) << "\" font-size=\"" << size
         << "\" text-anchor=\"" << anchor << "\" fill=\"" << colour << "\">" << xml_escape(content) << "</text>\n";
 }
 
 void SvgCanvas::rect_px(double x, double y, double w, double h, const std::string& fill, const std::string& stroke) {
-  body_ << "<rect x=\"" << number(x) << "\" y=\"" << number(y) << "\" width=\"" << number(w) << "\" height=\""
-        << number(h) << "\" fill=\"" << fill << "\" stroke=\"" << stroke << "\"/>\n";
+  body_ << "<rect x=\"" << svg_number(x) << "\" y=\"" << svg_number(y) << "\" width=\"" << svg_number(w) << "\" height=\""
+        << svg_number(h) << "\" fill=\"" << fill << "\" stroke=\"" << stroke << "\"/>\n";
 }
 
 void SvgCanvas::line_px(double x0, double y0, double x1, double y1, const std::string& stroke, double width) {
-  body_ << "<line x1=\"" << number(x0) << "\" y1=\"" << number(y0) << "\" x2=\"" << number(x1) << "\" y2=\""
-        << number(y1) << "\" stroke=\"" << stroke << "\" stroke-width=\"" << width << "\"/>\n";
+  body_ << "<line x1=\"" << svg_number(x0) << "\" y1=\"" << svg_number(y0) << "\" x2=\"" << svg_number(x1) << "\" y2=\""
+        << svg_number(y1) << "\" stroke=\"" << stroke << "\" stroke-width=\"" << width << "\"/>\n";
 }
 
 void SvgCanvas::axes(const std::string& x_label, const std::string& y_label) {
@@ -132,16 +132,16 @@ void SvgCanvas::axes(const std::string& x_label, const std::string& y_label) {
   const double step_x = nice_step(x_max_ - x_min_, 8);
   for (double v = std::ceil(x_min_ / step_x) * step_x; v <= x_max_ + 1e-9; v += step_x) {
     line_px(px(v), y0, px(v), y0 + 5, "#555");
-    text(px(v), y0 + 18, number(v), 11, "middle");
+    text(px(v), y0 + 18, svg_number(v), 11, "middle");
   }
   const double step_y = nice_step(y_max_ - y_min_, std::max(3, static_cast<int>(8 * plot_h_ / plot_w_) + 2));
   for (double v = std::ceil(y_min_ / step_y) * step_y; v <= y_max_ + 1e-9; v += step_y) {
     line_px(x0 - 5, py(v), x0, py(v), "#555");
-    text(x0 - 8, py(v) + 4, number(v), 11, "end");
+    text(x0 - 8, py(v) + 4, svg_number(v), 11, "end");
   }
   text(0.5 * (x0 + x1), y0 + 38, x_label, 13, "middle");
-  body_ << "<text x=\"18\" y=\"" << number(0.5 * (y0 + y1)) << "\" font-size=\"13\" text-anchor=\"middle\" "
-        << "transform=\"rotate(-90 18 " << number(0.5 * (y0 + y1)) << ")\">" << xml_escape(y_label) << "</text>\n";
+  body_ << "<text x=\"18\" y=\"" << svg_number(0.5 * (y0 + y1)) << "\" font-size=\"13\" text-anchor=\"middle\" "
+        << "transform=\"rotate(-90 18 " << svg_number(0.5 * (y0 + y1)) << ")\">" << xml_escape(y_label) << "</text>\n";
 }
 
 void SvgCanvas::colour_bar(double value_min, double value_max, const std::string& label) {
@@ -158,7 +158,7 @@ void SvgCanvas::colour_bar(double value_min, double value_max, const std::string
     std::snprintf(buffer, sizeof buffer, "%.3g", v);
     text(x + 24, y_top + height * (1.0 - k / 4.0) + 4, buffer, 11);
   }
-  body_ << "<text x=\"" << number(x + 9) << "\" y=\"" << number(y_top - 10)
+  body_ << "<text x=\"" << svg_number(x + 9) << "\" y=\"" << svg_number(y_top - 10)
         << "\" font-size=\"12\" text-anchor=\"middle\">" << xml_escape(label) << "</text>\n";
 }
 
@@ -206,15 +206,15 @@ std::string SvgCanvas::str() const {
     const auto& [colour, dash, label] = legend_[k];
     const double x = left_ + static_cast<double>(k % columns) * column_width;
     const double y = legend_top + static_cast<double>(k / columns) * row_height + 8.0;
-    legend << "<line x1=\"" << number(x) << "\" y1=\"" << number(y) << "\" x2=\"" << number(x + 30) << "\" y2=\""
-           << number(y) << "\" stroke=\"" << colour << "\" stroke-width=\"3\"";
+    legend << "<line x1=\"" << svg_number(x) << "\" y1=\"" << svg_number(y) << "\" x2=\"" << svg_number(x + 30) << "\" y2=\""
+           << svg_number(y) << "\" stroke=\"" << colour << "\" stroke-width=\"3\"";
     if (!dash.empty()) legend << " stroke-dasharray=\"" << dash << "\"";
-    legend << "/>\n<text x=\"" << number(x + 38) << "\" y=\"" << number(y + 4) << "\" font-size=\"12\" fill=\"#222\">"
+    legend << "/>\n<text x=\"" << svg_number(x + 38) << "\" y=\"" << svg_number(y + 4) << "\" font-size=\"12\" fill=\"#222\">"
            << xml_escape(label) << "</text>\n";
   }
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(width) << "\" height=\"" << number(height)
-      << "\" viewBox=\"0 0 " << number(width) << ' ' << number(height)
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << svg_number(width) << "\" height=\"" << svg_number(height)
+      << "\" viewBox=\"0 0 " << svg_number(width) << ' ' << svg_number(height)
       << "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << body_.str() << legend.str() << "</svg>\n";
