@@ -524,6 +524,11 @@ TEST_CASE("scene: each setting's names come from one table that the docs list", 
   check_names("kernel_gradient", sph::soil::kernel_gradient_names);
   check_names("time_integration", sph::soil::time_integration_names);
   check_names("gravity", sph::gravity_mode_names);
+  check_names("slip", sph::soil::wall_slip_names);
+  check_names("sides", coupling::wall_side_names, "### `analyses.sph`");
+  check_names("ignore_loads", coupling::section_load_names);
+  check_names("configuration", coupling::band_configuration_names);
+  check_names("constitutive_model", coupling::constitutive_model_names);
   check_names("regularisation", sph::mps::regularisation_names);
   check_names("interaction_viscosity", sph::mps::interaction_viscosity_names);
   check_names("effective_pressure", sph::mps::effective_pressure_names);

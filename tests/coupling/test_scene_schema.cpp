@@ -192,6 +192,16 @@ TEST_CASE("schema: the reader reports where the program and the schema disagree"
     REQUIRE(diagnostics.size() == 1);
     CHECK(diagnostics.messages()[0].find("analyses.sph.kernel: the program and its scene schema") == 0);
   }
+  SECTION("the names of an array's elements") {
+    const json sph = json::object();
+    coupling::JsonReader block(sph, "analyses.sph", diagnostics);
+    coupling::check_names_against_schema(block, "ignore_loads", coupling::names_of(coupling::section_load_names), "",
+                                         /*items=*/true);
+    CHECK(diagnostics.empty());
+    coupling::check_names_against_schema(block, "ignore_loads", {"water", "seismic"}, "", /*items=*/true);
+    REQUIRE(diagnostics.size() == 1);
+    CHECK(diagnostics.messages()[0].find("analyses.sph.ignore_loads: the program and its scene schema") == 0);
+  }
 }
 
 TEST_CASE("schema: the bounds the engine owns are the schema's", "[scene][schema]") {

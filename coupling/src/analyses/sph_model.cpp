@@ -199,12 +199,8 @@ sph::BoxWalls box_walls(double x_min, double x_max, double y_min, double height,
   return box;
 }
 
-// Whether the SPH analysis carries a section load ("water", "surcharges", "line_loads", "seismic"): not listed in
-// ignore_loads.
-bool sph_carries(const SphAnalysis& analysis, const char* load) {
-  const auto& ignored = analysis.ignored_loads;
-  return std::find(ignored.begin(), ignored.end(), load) == ignored.end();
-}
+// Whether the SPH analysis carries a section load: not listed in analyses.sph.ignore_loads.
+bool sph_carries(const SphAnalysis& analysis, SectionLoadKind load) { return !ignores(analysis, load); }
 
 // The density of a particle (kg/m^3): the saturated unit weight of its material / g below the piezometric line
 // where the material has one and the SPH analysis carries the water, its unit weight / g elsewhere.
@@ -231,7 +227,7 @@ void build_section_particles(const SceneSection& scene_section, const SphAnalysi
   for (const auto& m : scene_section.materials) model.materials.push_back(to_sph_material(m));
   const SectionFill fill = fill_section(section, dx);
   model.particles.reserve(fill.points.size() + wall_estimate(width, height, analysis.section_walls, dx, analysis.wall_layers));
-  const bool water_carried = sph_carries(analysis, "water");
+  const bool water_carried = sph_carries(analysis, SectionLoadKind::water);
   for (std::size_t i = 0; i < fill.points.size(); ++i) {
     const double density = particle_density(scene_section.materials[fill.materials[i]], section, water_carried,
                                             fill.points[i].x, fill.points[i].y);
@@ -296,7 +292,7 @@ void build_body_particles(const std::vector<ParticleBody>& bodies, const std::op
 // piezometric line, k_h toward the lower end of the ground (the direction limit equilibrium slides) and k_v, the
 // strip surcharges and the line loads on the ground's particles.
 void apply_section_loads(const slope::Section& section, const SphAnalysis& analysis, sph::soil::Model& model) {
-  if (section.water && sph_carries(analysis, "water")) {
+  if (section.water && sph_carries(analysis, SectionLoadKind::water)) {
     sph::soil::PiezometricLine line;
     for (const auto& p : section.water->piezometric_line) {
       line.x.push_back(p.x);
@@ -305,15 +301,16 @@ void apply_section_loads(const slope::Section& section, const SphAnalysis& analy
     line.unit_weight = section.water->unit_weight;
     model.loads.water = line;
   }
-  if (section.seismic_coefficient != 0.0 && sph_carries(analysis, "seismic"))
+  if (section.seismic_coefficient != 0.0 && sph_carries(analysis, SectionLoadKind::seismic))
     model.loads.seismic_coefficient = slope::facing_direction(section) * section.seismic_coefficient;
-  if (sph_carries(analysis, "seismic")) model.loads.vertical_seismic_coefficient = section.vertical_seismic_coefficient;
+  if (sph_carries(analysis, SectionLoadKind::seismic))
+    model.loads.vertical_seismic_coefficient = section.vertical_seismic_coefficient;
   const double dx = model.settings.particle_spacing;
-  if (sph_carries(analysis, "surcharges"))
+  if (sph_carries(analysis, SectionLoadKind::surcharges))
     for (const auto& strip : section.surcharges)
       sph::soil::add_strip_load(model.particles, model.loads, strip.from_x, strip.to_x, strip.pressure, dx,
                           strip.pressure_end ? *strip.pressure_end : std::nan(""));
-  if (sph_carries(analysis, "line_loads"))
+  if (sph_carries(analysis, SectionLoadKind::line_loads))
     for (const auto& load : section.line_loads)
       sph::soil::add_line_load(model.particles, model.loads, load.x, load.force_x, load.force_y, dx);
 }

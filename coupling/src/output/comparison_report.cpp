@@ -3,6 +3,7 @@
 #include <string>
 
 #include "coupling/output/json_values.hpp"
+#include "coupling/scene/analysis_options.hpp"
 #include "sphslope/units.hpp"
 
 namespace coupling {
@@ -14,7 +15,7 @@ nlohmann::json sph_surface_json(const ComparisonResult& c) {
   nlohmann::json surface;
   surface["plastic_strain_threshold"] = sph.band.plastic_strain_threshold;
   surface["bin_width_m"] = sph.band.bin_width;
-  surface["configuration"] = c.initial_configuration ? "initial" : "current";
+  surface["configuration"] = sphslope::name_of(band_configuration_names, c.initial_configuration);
   surface["band_particles"] = sph.band.band_particles;
   surface["points_m"] = polyline_json(sph.band.points);
   surface["entry_m"] = sph.entry ? point_json(*sph.entry) : nlohmann::json();

@@ -78,14 +78,7 @@ std::optional<ComparisonOptions> read_comparison_options(const nlohmann::json& b
   options.band.plastic_strain_threshold =
       r.number_or("plastic_strain_threshold", options.band.plastic_strain_threshold);
   options.band.bin_width = r.number_or("bin_width_m", 0.0);
-  if (const auto configuration = r.string("configuration", Need::optional)) {
-    if (*configuration == "initial" || *configuration == "current") {
-      options.band.initial_configuration = *configuration == "initial";
-    } else {
-      diagnostics.error(r.path_of("configuration"),
-                        "unknown configuration \"" + *configuration + "\" (allowed: initial, current)");
-    }
-  }
+  read_named(r, "configuration", band_configuration_names, options.band.initial_configuration);
   options.displacement_threshold = r.number_or("displacement_threshold_m", 0.0);
   if (const nlohmann::json* acceptance = r.raw("acceptance", Need::optional, "an object"))
     options.acceptance = read_acceptance(*acceptance, lem_methods, diagnostics);

@@ -244,8 +244,9 @@ void JsonReader::check_default(std::string_view key, double fallback) const {
 }
 
 void check_names_against_schema(const JsonReader& parent, std::string_view key, const std::vector<std::string>& names,
-                                std::string_view current) {
-  const SchemaNode node = SchemaNode(parent.schema()).property(key);
+                                std::string_view current, bool items) {
+  SchemaNode node = SchemaNode(parent.schema()).property(key);
+  if (node && items) node = node.items();
   if (!node) return;
   if (node.enum_names() != names) {
     std::string program;
@@ -256,6 +257,10 @@ void check_names_against_schema(const JsonReader& parent, std::string_view key, 
   if (given != nullptr && !(given->is_string() && given->get<std::string>() == current))
     parent.schema_disagrees(parent.path_of(key),
                             "the schema's default is " + given->dump() + ", the program's \"" + std::string(current) + "\"");
+}
+
+void unknown_name(JsonReader& r, const std::string& path, const std::string& name, const std::string& allowed) {
+  r.diagnostics().error(path, "unknown name \"" + name + "\" (allowed: " + allowed + ")");
 }
 
 bool JsonReader::has(std::string_view key) {

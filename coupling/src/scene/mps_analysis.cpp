@@ -41,8 +41,7 @@ void read_numerics(JsonReader& r, sph::mps::Settings& s) {
 MpsMaterial read_mps_material(JsonReader& m) {
   MpsMaterial out;
   out.name = m.string("name", Need::required).value_or("");
-  const std::string type_name = m.string("type", Need::required).value_or("");
-  const auto type = sphslope::value_named(sph::mps::material_type_names, type_name);
+  const auto type = read_named_required(m, "type", sph::mps::material_type_names);
   if (type == sph::mps::Material::Type::water) {
     out.material = sph::mps::Material::water(m.number_or("viscosity_Pa_s", 1.0e-3));
   } else if (type == sph::mps::Material::Type::granular) {
@@ -56,10 +55,6 @@ MpsMaterial read_mps_material(JsonReader& m) {
     out.material.grain_volume_fraction =
         m.number_or("grain_volume_fraction", out.material.grain_volume_fraction);
   } else {
-    if (!type_name.empty())
-      m.diagnostics().error(m.path_of("type"), "expected " +
-                                                   sphslope::names_listed(sph::mps::material_type_names, true) +
-                                                   ", got \"" + type_name + "\"");
     // without a known type the other keys cannot be checked: one error, not one per key
     for (const char* key : {"viscosity_Pa_s", "consistency_Pa_sN", "flow_index", "regularisation_growth_s",
                             "friction_angle_deg", "cohesion_kPa", "grain_volume_fraction"})

@@ -87,8 +87,8 @@ std::optional<slope::StrengthEnvelope> read_power_curve(JsonReader& pc) {
   return e;
 }
 
-// section.materials[i].shear_normal_kPa: [[sigma', tau], ...] in kPa, sigma' strictly increasing, tau >= 0 not
-// decreasing.
+// section.materials[i].shear_normal_kPa: [[sigma', tau], ...] in kPa, sigma' strictly increasing, tau not decreasing
+// (tau >= 0: the schema).
 std::optional<slope::StrengthEnvelope> read_shear_normal(const nlohmann::json& points, const std::string& path,
                                                          Diagnostics& diagnostics) {
   slope::StrengthEnvelope e;
@@ -97,14 +97,14 @@ std::optional<slope::StrengthEnvelope> read_shear_normal(const nlohmann::json& p
   for (std::size_t i = 0; i < points.size(); ++i) {
     const std::string point_path = index_path(path, i);
     const auto point = read_pair(points[i], point_path, diagnostics, "a point [normal_stress_kPa, shear_kPa]");
-    if (!point) {
+    // tau >= 0 is the schema's bound: a point it refused is not compared with its neighbours
+    if (!point || diagnostics.is_invalid(index_path(point_path, 1))) {
       ok = false;
       continue;
     }
     const slope::StressPoint p{point->first * kilo, point->second * kilo};
     std::string wrong;
-    if (!(p.shear >= 0.0)) wrong = "the shear strength must be >= 0";
-    if (wrong.empty() && !e.points.empty() && ok && !(p.normal > e.points.back().normal))
+    if (!e.points.empty() && ok && !(p.normal > e.points.back().normal))
       wrong = "the normal stress must increase strictly from point to point";
     if (wrong.empty() && !e.points.empty() && ok && !(p.shear >= e.points.back().shear))
       wrong = "the shear strength must not decrease as the normal stress increases";
@@ -195,7 +195,8 @@ std::optional<SoilMaterial> read_material(JsonReader& m, MaterialOf owner) {
   const auto dilatancy = m.number("dilatancy_angle_deg", Need::optional);
   const auto youngs = m.number("youngs_modulus_MPa", Need::optional);
   const auto poisson = m.number("poisson_ratio", Need::optional);
-  const auto model = m.string("constitutive_model", Need::optional);
+  bool elastic = false;
+  read_named(m, "constitutive_model", constitutive_model_names, elastic);
   const auto ru = m.number("pore_pressure_ratio", Need::optional);
   const auto c_rate = m.number("cohesion_increase_kPa_per_m", Need::optional);
   const auto c_datum = m.number("cohesion_datum_y_m", Need::optional);
@@ -203,11 +204,6 @@ std::optional<SoilMaterial> read_material(JsonReader& m, MaterialOf owner) {
   m.finish();
   if (!read_cohesion_with_depth(m, cohesion, c_rate, c_datum, c_max, material) || !section_keys_ok) return std::nullopt;
   if (has_envelope && !envelope_companions_ok(m, c_rate.has_value())) return std::nullopt;
-  if (model && *model != "drucker_prager" && *model != "elastic") {
-    m.diagnostics().error(m.path_of("constitutive_model"),
-                          "unknown model \"" + *model + "\" (allowed: drucker_prager, elastic)");
-    return std::nullopt;
-  }
   if (dilatancy && friction && *dilatancy > *friction) {
     m.diagnostics().error(m.path_of("dilatancy_angle_deg"),
                           "must not exceed friction_angle_deg = " + format_number(*friction) + " (got " +
@@ -229,7 +225,7 @@ std::optional<SoilMaterial> read_material(JsonReader& m, MaterialOf owner) {
   if (dilatancy) material.dilatancy_angle = sphslope::radians(*dilatancy);
   if (youngs) material.youngs_modulus = *youngs * mega;
   material.poisson_ratio = poisson;
-  material.elastic = model && *model == "elastic";
+  material.elastic = elastic;
   if (ru) material.pore_pressure_ratio = *ru;
   return material;
 }

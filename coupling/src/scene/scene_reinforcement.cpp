@@ -71,11 +71,7 @@ void read_tensile(JsonReader& r, slope::Reinforcement& e) {
 }
 
 std::optional<slope::Reinforcement> read_element(JsonReader& r, int into) {
-  const auto type_name = r.string("type", Need::required);
-  const auto type = type_name ? sphslope::value_named(slope::support_type_names, *type_name) : std::nullopt;
-  if (type_name && !type)
-    r.diagnostics().error(r.path_of("type"), "expected " + sphslope::names_listed(slope::support_type_names, true) +
-                                                 ", got \"" + *type_name + "\"");
+  const auto type = read_named_required(r, "type", slope::support_type_names);
   const auto head = read_point(r, "head_m", Need::required);
   if (!type || !head) return std::nullopt;
   slope::Reinforcement e = slope::reinforcement_defaults(*type);

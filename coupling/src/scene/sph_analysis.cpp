@@ -27,76 +27,43 @@ namespace coupling {
 
 namespace {
 
-std::optional<WallSides> read_sides(JsonReader& reader, std::string_view key, WallSides fallback) {
-  const nlohmann::json* sides =
-      reader.array(key, Need::optional, 0, limits::name_list, "an array of \"left\", \"right\", \"bottom\"");
-  if (!sides) return reader.has(key) ? std::nullopt : std::optional<WallSides>(fallback);
+// walls.sides or analyses.sph.walls.sides: `fallback` when absent.
+std::optional<WallSides> read_sides(JsonReader& reader, const char* key, WallSides fallback) {
+  const auto sides = read_named_list(reader, key, wall_side_names, "an array of \"left\", \"right\", \"bottom\"");
+  if (!sides) return std::nullopt;
+  if (!reader.has(key)) return fallback;
   WallSides out{false, false, false};
-  bool ok = true;
-  for (std::size_t i = 0; i < sides->size(); ++i) {
-    const auto side = read_string((*sides)[i], index_path(reader.path_of(key), i), reader.diagnostics());
-    if (!side) {
-      ok = false;
-    } else if (*side == "left") {
-      out.left = true;
-    } else if (*side == "right") {
-      out.right = true;
-    } else if (*side == "bottom") {
-      out.bottom = true;
-    } else {
-      reader.diagnostics().error(index_path(reader.path_of(key), i),
-                                 "unknown wall side \"" + *side + "\" (allowed: left, right, bottom)");
-      ok = false;
-    }
-  }
-  return ok ? std::optional<WallSides>(out) : std::nullopt;
-}
-
-}  // namespace
-
-namespace {
-
-const char* const section_load_names[] = {"water", "surcharges", "line_loads", "seismic"};
-
-// analyses.sph.ignore_loads: the section loads the user accepts SPH leaves out (each at most once).
-std::vector<std::string> read_ignored_loads(JsonReader& r) {
-  std::vector<std::string> names;
-  const nlohmann::json* list = r.array("ignore_loads", Need::optional, 0, limits::name_list);
-  if (list == nullptr) return names;
-  for (std::size_t i = 0; i < list->size(); ++i) {
-    const std::string path = index_path(r.path_of("ignore_loads"), i);
-    const auto name = read_string((*list)[i], path, r.diagnostics());
-    if (!name) continue;
-    if (std::find(std::begin(section_load_names), std::end(section_load_names), *name) == std::end(section_load_names))
-      r.diagnostics().error(path, "unknown load \"" + *name + "\" (allowed: water, surcharges, line_loads, seismic)");
-    else if (std::find(names.begin(), names.end(), *name) != names.end())
-      r.diagnostics().error(path, "\"" + *name + "\" is listed twice");
-    else
-      names.push_back(*name);
-  }
-  return names;
+  for (const WallSide side : *sides)
+    (side == WallSide::left ? out.left : side == WallSide::right ? out.right : out.bottom) = true;
+  return out;
 }
 
 // The SPH model carries the section's loads (coupling/src/analyses/sph_model.cpp). What remains to check: a load
 // listed in analyses.sph.ignore_loads that the section does not have (a slip of the pen), and k_h on a section whose
 // ground is level at both ends, where SPH has no direction to apply it in (limit equilibrium takes each surface's).
+bool has_load(const slope::Section& section, SectionLoadKind load) {
+  switch (load) {
+    case SectionLoadKind::water: return section.water.has_value();
+    case SectionLoadKind::surcharges: return !section.surcharges.empty();
+    case SectionLoadKind::line_loads: return !section.line_loads.empty();
+    case SectionLoadKind::seismic:
+      return section.seismic_coefficient != 0.0 || section.vertical_seismic_coefficient != 0.0;
+  }
+  return false;
+}
+
 void check_section_loads(const Scene& scene, const SphAnalysis& analysis, Diagnostics& diagnostics) {
   if (!scene.section) return;
   const slope::Section& section = scene.section->section;
   for (std::size_t k = 0; k < analysis.ignored_loads.size(); ++k) {
-    const std::string& name = analysis.ignored_loads[k];
-    const bool present = name == "water"        ? section.water.has_value()
-                         : name == "surcharges" ? !section.surcharges.empty()
-                         : name == "line_loads" ? !section.line_loads.empty()
-                                                : section.seismic_coefficient != 0.0 ||
-                                                      section.vertical_seismic_coefficient != 0.0;
-    if (!present)
+    const SectionLoadKind load = analysis.ignored_loads[k];
+    if (!has_load(section, load))
       diagnostics.error(index_path("analyses.sph.ignore_loads", k),
-                        "the section has no " + name + " to leave out (remove it from the list)");
+                        "the section has no " + std::string(sphslope::name_of(section_load_names, load)) +
+                            " to leave out (remove it from the list)");
   }
-  const bool seismic_ignored =
-      std::find(analysis.ignored_loads.begin(), analysis.ignored_loads.end(), "seismic") != analysis.ignored_loads.end();
-  if (section.seismic_coefficient != 0.0 && !seismic_ignored && slope::facing_direction(section) == 0)
+  if (section.seismic_coefficient != 0.0 && !ignores(analysis, SectionLoadKind::seismic) &&
+      slope::facing_direction(section) == 0)
     diagnostics.error("section.seismic",
                       "the ground is level at both ends of the section, so SPH cannot tell which way the slope "
                       "faces to apply k_h (limit equilibrium applies it toward each surface's sliding); extend the "
@@ -109,16 +76,10 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
   std::vector<SectionLoad> loads;
   if (!scene.section || !scene.analyses.sph) return loads;
   const slope::Section& section = scene.section->section;
-  const auto& ignored = scene.analyses.sph->ignored_loads;
-  auto listed = [&](const char* name) { return std::find(ignored.begin(), ignored.end(), name) != ignored.end(); };
   const std::string why = "listed in analyses.sph.ignore_loads";
-  if (section.water && listed("water")) loads.push_back({"water", "section.water", why});
-  if (!section.surcharges.empty() && listed("surcharges"))
-    loads.push_back({"surcharges", "section.surcharges", why});
-  if (!section.line_loads.empty() && listed("line_loads"))
-    loads.push_back({"line_loads", "section.line_loads", why});
-  if ((section.seismic_coefficient != 0.0 || section.vertical_seismic_coefficient != 0.0) && listed("seismic"))
-    loads.push_back({"seismic", "section.seismic", why});
+  for (const auto& [name, load] : section_load_names)  // in the table's order, whatever the list's
+    if (has_load(section, load) && ignores(*scene.analyses.sph, load))
+      loads.push_back({std::string(name), "section." + std::string(name), why});
   const auto& materials = scene.section->materials;
   for (std::size_t i = 0; i < materials.size(); ++i)
     if (materials[i].pore_pressure_ratio > 0.0)
@@ -133,7 +94,7 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
                        index_path("section.materials", i) + ".cohesion_increase_kPa_per_m",
                        "the SPH soil model gives each material one cohesion (cohesion_kPa)"});
   for (std::size_t i = 0; i < materials.size(); ++i)
-    if (materials[i].saturated_unit_weight && section.water && listed("water"))
+    if (materials[i].saturated_unit_weight && section.water && ignores(*scene.analyses.sph, SectionLoadKind::water))
       loads.push_back({"the saturated unit weight of material \"" + materials[i].name + "\" (" +
                            format_number(*materials[i].saturated_unit_weight / 1e3) + " kN/m3)",
                        index_path("section.materials", i) + ".saturated_unit_weight_kN_m3",
@@ -154,29 +115,11 @@ std::vector<SectionLoad> loads_sph_leaves_out(const Scene& scene) {
 
 namespace {
 
-// A setting chosen by name (its name table): `out` is set to the named choice; another name is an error listing the
-// allowed ones.
-template <class E, std::size_t N>
-void read_choice(JsonReader& r, std::string_view key, const char* what, const sphslope::NameTable<E, N>& names,
-                 E& out) {
-  std::vector<std::string> listed;
-  for (const auto& entry : names) listed.emplace_back(entry.name);
-  check_names_against_schema(r, key, listed, sphslope::name_of(names, out));
-  const auto value = r.string(key, Need::optional);
-  if (!value) return;
-  if (const auto choice = sphslope::value_named(names, *value)) {
-    out = *choice;
-    return;
-  }
-  r.diagnostics().error(r.path_of(key), "unknown " + std::string(what) + " \"" + *value +
-                                            "\" (allowed: " + sphslope::names_listed(names) + ")");
-}
-
 void read_choices(JsonReader& r, sph::soil::Settings& s) {
-  read_choice(r, "kernel", "kernel", sph::kernel_names, s.kernel);
-  read_choice(r, "kernel_gradient", "kernel gradient", sph::soil::kernel_gradient_names, s.kernel_gradient);
-  read_choice(r, "time_integration", "time integration", sph::soil::time_integration_names, s.integration);
-  read_choice(r, "gravity", "gravity mode", sph::gravity_mode_names, s.gravity_mode);
+  read_named(r, "kernel", sph::kernel_names, s.kernel);
+  read_named(r, "kernel_gradient", sph::soil::kernel_gradient_names, s.kernel_gradient);
+  read_named(r, "time_integration", sph::soil::time_integration_names, s.integration);
+  read_named(r, "gravity", sph::gravity_mode_names, s.gravity_mode);
 }
 
 void read_artificial_viscosity(JsonReader& r, sph::soil::Settings& s) {
@@ -190,7 +133,7 @@ void read_artificial_viscosity(JsonReader& r, sph::soil::Settings& s) {
 void read_artificial_stress(JsonReader& r, sph::soil::Settings& s) {
   auto stress = r.object("artificial_stress", Need::optional);
   if (!stress) return;
-  read_choice(*stress, "mode", "mode", sph::soil::artificial_stress_mode_names, s.artificial_stress.mode);
+  read_named(*stress, "mode", sph::soil::artificial_stress_mode_names, s.artificial_stress.mode);
   s.artificial_stress.epsilon = stress->number_or("epsilon", s.artificial_stress.epsilon);
   s.artificial_stress.exponent = stress->number_or("exponent", s.artificial_stress.exponent);
   stress->finish();
@@ -203,15 +146,7 @@ std::optional<long> read_section_walls(JsonReader& r, SphAnalysis& a) {
   if (!walls) return wall_layers;
   if (auto sides = read_sides(*walls, "sides", a.section_walls)) a.section_walls = *sides;
   wall_layers = walls->integer("layers", Need::optional);
-  if (const auto slip = walls->string("slip", Need::optional)) {
-    if (*slip == "no_slip") {
-      a.settings.wall_slip = sph::soil::WallSlip::no_slip;
-    } else if (*slip == "free_slip") {
-      a.settings.wall_slip = sph::soil::WallSlip::free_slip;
-    } else {
-      r.diagnostics().error(walls->path_of("slip"), "unknown slip \"" + *slip + "\" (allowed: no_slip, free_slip)");
-    }
-  }
+  read_named(*walls, "slip", sph::soil::wall_slip_names, a.settings.wall_slip);
   walls->finish();
   return wall_layers;
 }
@@ -304,7 +239,8 @@ std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagno
   const std::optional<long> wall_layers = read_section_walls(r, a);
   read_run_limits(r, a);
   const auto output_interval = r.number("output_interval_s", Need::optional);
-  a.ignored_loads = read_ignored_loads(r);
+  if (auto ignored = read_named_list(r, "ignore_loads", section_load_names, "an array of names"))
+    a.ignored_loads = std::move(*ignored);
   r.finish();
   if (!spacing || !end_time || diagnostics.size() != errors_before) return std::nullopt;
   s.particle_spacing = *spacing;

@@ -21,6 +21,8 @@ struct BandOptions {
   int min_particles_per_bin = 2;          // bins with fewer band particles are skipped
   bool initial_configuration = true;      // read the band on the initial positions (where LEM surfaces live)
 };
+// analyses.compare.configuration's names, each with its initial_configuration.
+inline constexpr sphslope::NameTable<bool, 2> band_configuration_names{{{"initial", true}, {"current", false}}};
 
 // A length limit in metres, or in particle spacings of the SPH run.
 struct LengthLimit {

@@ -12,6 +12,7 @@
 // return std::nullopt for a missing or invalid value, so checks that depend on it are skipped instead of cascading.
 // Where the program and the schema spell the same thing (a default, an enum's names) the reader checks that they
 // agree and reports a fault of the program when they do not, so every scene read in the tests checks them.
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <set>
@@ -173,25 +174,70 @@ std::optional<std::pair<double, double>> read_pair(const nlohmann::json& value, 
 // Closest string within edit distance 2 (case-insensitive), for "did you mean" hints; empty if none.
 std::string closest_match(std::string_view word, const std::vector<std::string>& candidates);
 
-// An optional string key naming one of a setting's choices (its name table): `target` is set to the named one;
-// another name is an error "expected "a" or "b", got "c"".
 // The program's names of a choice at `parent.key` against the schema's enum and default there (a fault of the program
-// when they differ): the schema lists `names` in their order, and its default is `current`'s name.
+// when they differ): the schema lists `names` in their order, and its default is `current`'s name (none: `current`
+// empty). `items`: the names are those of the elements of the array at `parent.key`.
 void check_names_against_schema(const JsonReader& parent, std::string_view key, const std::vector<std::string>& names,
-                                std::string_view current);
+                                std::string_view current, bool items = false);
+
+// A name that is not in its table: the schema, which every scene meets first, refuses it with the allowed names, so
+// this is reached only by a reader not run after the schema: an error all the same, "unknown name "c" (allowed: a, b)".
+void unknown_name(JsonReader& r, const std::string& path, const std::string& name, const std::string& allowed);
 
 template <class Choice, std::size_t N>
-void read_named(JsonReader& r, const char* key, const sphslope::NameTable<Choice, N>& names, Choice& target) {
+std::vector<std::string> names_of(const sphslope::NameTable<Choice, N>& names) {
   std::vector<std::string> listed;
   for (const auto& entry : names) listed.emplace_back(entry.name);
-  check_names_against_schema(r, key, listed, sphslope::name_of(names, target));
+  return listed;
+}
+
+// An optional string key naming one of a setting's choices (its name table, which the schema's enum there must
+// equal): `target` is set to the named one.
+template <class Choice, std::size_t N>
+void read_named(JsonReader& r, const char* key, const sphslope::NameTable<Choice, N>& names, Choice& target) {
+  check_names_against_schema(r, key, names_of(names), sphslope::name_of(names, target));
   const auto name = r.string(key, Need::optional);
   if (!name) return;
   if (const auto value = sphslope::value_named(names, *name)) {
     target = *value;
     return;
   }
-  r.diagnostics().error(r.path_of(key), "expected " + sphslope::names_listed(names, true) + ", got \"" + *name + "\"");
+  unknown_name(r, r.path_of(key), *name, sphslope::names_listed(names));
+}
+
+// A required string key naming one of a setting's choices (its name table, which has no default): the named one,
+// or nullopt after an error (missing, not a string, not a name of the table).
+template <class Choice, std::size_t N>
+std::optional<Choice> read_named_required(JsonReader& r, const char* key, const sphslope::NameTable<Choice, N>& names) {
+  check_names_against_schema(r, key, names_of(names), "");
+  const auto name = r.string(key, Need::required);
+  if (!name) return std::nullopt;
+  const auto value = sphslope::value_named(names, *name);
+  if (!value) unknown_name(r, r.path_of(key), *name, sphslope::names_listed(names));
+  return value;
+}
+
+// An optional array of names from a setting's name table (`expected` describes it in messages): the choices in the
+// order given, a name listed twice once (the schema refuses the repeat where a list may not have one, uniqueItems);
+// an empty list when the key is absent; nullopt after an error.
+template <class Choice, std::size_t N>
+std::optional<std::vector<Choice>> read_named_list(JsonReader& r, const char* key,
+                                                   const sphslope::NameTable<Choice, N>& names,
+                                                   std::string_view expected) {
+  check_names_against_schema(r, key, names_of(names), "", /*items=*/true);
+  std::vector<Choice> chosen;
+  const nlohmann::json* list = r.array(key, Need::optional, 0, limits::name_list, expected);
+  if (list == nullptr) return r.has(key) ? std::nullopt : std::optional<std::vector<Choice>>(chosen);
+  bool ok = true;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string path = index_path(r.path_of(key), i);
+    const auto name = read_string((*list)[i], path, r.diagnostics());
+    const auto value = name ? sphslope::value_named(names, *name) : std::nullopt;
+    if (name && !value) unknown_name(r, path, *name, sphslope::names_listed(names));
+    if (!value) ok = false;
+    else if (std::find(chosen.begin(), chosen.end(), *value) == chosen.end()) chosen.push_back(*value);
+  }
+  return ok ? std::optional<std::vector<Choice>>(chosen) : std::nullopt;
 }
 
 }  // namespace coupling

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "slope/strength.hpp"
+#include "sphslope/names.hpp"
 #include "sphslope/units.hpp"
 
 namespace coupling {
@@ -13,6 +14,9 @@ using sphslope::standard_gravity;  // density = unit weight / g
 
 // A soil of the section, SI units. Section::materials holds the strength and weight for limit equilibrium;
 // this keeps everything the scene said, including what only SPH needs.
+// constitutive_model's names in scene files, each with whether the SPH soil model keeps the material elastic.
+inline constexpr sphslope::NameTable<bool, 2> constitutive_model_names{{{"drucker_prager", false}, {"elastic", true}}};
+
 struct SoilMaterial {
   std::string name;
   double unit_weight = 0.0;                // N/m^3

@@ -2,6 +2,7 @@
 // analyses.sph, "bodies" and "walls" read into typed settings, once, by the scene loader (load_scene); the SPH
 // stage and the model builder (coupling/analyses/sph_model.hpp) use these structs. Every fault names its JSON path;
 // see docs/scene-format.md for the keys.
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -21,6 +22,18 @@ inline constexpr double gibibyte = 1024.0 * 1024.0 * 1024.0;
 struct WallSides {
   bool left = true, right = true, bottom = true;
 };
+// The sides' names in scene files (walls.sides, analyses.sph.walls.sides).
+enum class WallSide { left, right, bottom };
+inline constexpr sphslope::NameTable<WallSide, 3> wall_side_names{
+    {{"left", WallSide::left}, {"right", WallSide::right}, {"bottom", WallSide::bottom}}};
+
+// The loads of a slope section that analyses.sph.ignore_loads may name (seismic: k_h and k_v), with their names.
+enum class SectionLoadKind { water, surcharges, line_loads, seismic };
+inline constexpr sphslope::NameTable<SectionLoadKind, 4> section_load_names{
+    {{"water", SectionLoadKind::water},
+     {"surcharges", SectionLoadKind::surcharges},
+     {"line_loads", SectionLoadKind::line_loads},
+     {"seismic", SectionLoadKind::seismic}}};
 
 // A body of a particle scene: a polygon of one material.
 struct ParticleBody {
@@ -44,8 +57,13 @@ struct SphAnalysis {
   double memory_limit_bytes = 0.0;      // refuse a case whose estimate exceeds it
   std::size_t max_particles = 0;        // refuse more soil + wall particles than this
   double max_steps = 0.0;               // refuse a run that needs more time steps than this
-  std::vector<std::string> ignored_loads;  // section loads SPH may leave out ("water", "surcharges", "seismic")
+  std::vector<SectionLoadKind> ignored_loads;  // section loads SPH leaves out (analyses.sph.ignore_loads)
 };
+
+// Whether analyses.sph.ignore_loads lists `load` (the SPH model leaves it out).
+inline bool ignores(const SphAnalysis& analysis, SectionLoadKind load) {
+  return std::find(analysis.ignored_loads.begin(), analysis.ignored_loads.end(), load) != analysis.ignored_loads.end();
+}
 
 // Reads analyses.sph (errors at "analyses.sph.<key>").
 std::optional<SphAnalysis> read_sph_analysis(const nlohmann::json& block, Diagnostics& diagnostics);

@@ -20,6 +20,9 @@ enum class WallSlip {
   no_slip,    // wall ghost velocity = -(Shepard average of neighbouring soil velocity)
   free_slip,  // wall ghost velocity = soil average mirrored in the wall normal (tangential part kept)
 };
+// The conditions' names in scene files (analyses.sph.walls.slip).
+inline constexpr sphslope::NameTable<WallSlip, 2> wall_slip_names{
+    {{"no_slip", WallSlip::no_slip}, {"free_slip", WallSlip::free_slip}}};
 
 enum class ArtificialStressMode { off, on, automatic /* on iff some plastic material has cohesion > 0 */ };
 // The modes' names in scene files (analyses.sph.artificial_stress.mode).
