@@ -9,10 +9,15 @@
 // not meet analyses.compare.acceptance (report written). Errors go to stderr.
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -211,6 +216,18 @@ int run_batch_command(coupling::BatchOptions options) {
   }
 }
 
+// sphslope section ARGS...: runs sphslope-section ARGS... (beside this program), which links GDAL.
+int run_section_program(int argc, char** argv) {
+  const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe").parent_path() / "sphslope-section";
+  std::vector<char*> arguments{const_cast<char*>(program.c_str())};
+  for (int i = 2; i < argc; ++i) arguments.push_back(argv[i]);
+  arguments.push_back(nullptr);
+  ::execv(program.c_str(), arguments.data());
+  std::cerr << "sphslope: cannot run " << program.string() << " (" << std::strerror(errno) << "); build it with "
+            << "scripts/build\n";
+  return static_cast<int>(coupling::ExitStatus::failed);
+}
+
 // Everything the command line can say; filled by CLI11, read by the run_* functions.
 struct CommandLine {
   std::string scene_file;
@@ -229,6 +246,9 @@ struct CommandLine {
 
 void add_scene_commands(CLI::App& app, CommandLine& cli) {
   cli.check = app.add_subcommand("check", "Validate a scene file and explain every error.");
+  // listed for --help; main() hands `sphslope section ...` to sphslope-section before parsing
+  app.add_subcommand("section", "Cut a ground profile out of a terrain raster (GeoTIFF, .bil, ASCII grid, ...) along a "
+                                "line: CSV, or into a scene (sphslope section --help)");
   cli.check->add_option("SCENE", cli.scene_file, "Scene file (JSON, \"format\": \"sphslope-scene/1\")")
       ->required()
       ->type_name("FILE");
@@ -318,6 +338,7 @@ int main(int argc, char** argv) {
                  "scripts/build, or for any x86-64 CPU with scripts/build -DSPHSLOPE_ARCH=x86-64.\n";
     return static_cast<int>(coupling::ExitStatus::failed);
   }
+  if (argc >= 2 && std::string(argv[1]) == "section") return run_section_program(argc, argv);
   CLI::App app{"sphslope: geotechnical slope assessment (limit equilibrium and SPH) from a scene file.\n"
                "Exit status: 0 every requested analysis ran; 1 a run failed (report written with the reason);\n"
                "2 invalid input (nothing written; the message names the JSON path of the fault);\n"
