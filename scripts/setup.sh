@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs everything sphslope needs on a fresh Debian 12 machine. Safe to run more than once.
 set -euo pipefail
-packages=(g++ cmake make ninja-build python3 python3-jsonschema libeigen3-dev libcgal-dev nlohmann-json3-dev libvalijson-dev libgsl-dev libgdal-dev catch2 libcli11-dev
+packages=(g++ cmake make ninja-build python3 python3-jsonschema libeigen3-dev libcgal-dev nlohmann-json3-dev libvalijson-dev libgsl-dev libgdal-dev libdxflib-dev catch2 libcli11-dev
           libomp-dev clang libclang-rt-14-dev pmccabe universal-ctags libxml2-utils chromium poppler-utils fonts-dejavu-core)
 missing=()
 for p in "${packages[@]}"; do

@@ -184,4 +184,125 @@ TEST_CASE("section: bad rasters and lines exit 2 naming what is wrong", "[sectio
   }
 }
 
+namespace {
+
+// A DXF drawing of Griffiths & Lane's 2:1 slope: the ground as an LWPOLYLINE drawn from right to left on layer
+// GROUND, a layer boundary as a POLYLINE on CLAY, the piezometric line as a LINE on WATER; $INSUNITS `units` (none
+// when 0); `extra`: one more entity section text (e.g. a second line on a layer).
+void write_drawing(const fs::path& file, int units, const std::string& extra = "") {
+  std::ofstream out(file);
+  auto pair = [&](int code, const std::string& value) { out << code << "\n" << value << "\n"; };
+  pair(0, "SECTION");
+  pair(2, "HEADER");
+  if (units != 0) {
+    pair(9, "$INSUNITS");
+    pair(70, std::to_string(units));
+  }
+  pair(0, "ENDSEC");
+  pair(0, "SECTION");
+  pair(2, "ENTITIES");
+  pair(0, "LWPOLYLINE");
+  pair(8, "GROUND");
+  pair(90, "4");
+  pair(70, "0");
+  for (const auto& [x, y] : std::vector<std::pair<int, int>>{{52, 0}, {32, 0}, {12, 10}, {0, 10}}) {
+    pair(10, std::to_string(x));
+    pair(20, std::to_string(y));
+  }
+  pair(0, "POLYLINE");
+  pair(8, "CLAY");
+  pair(66, "1");
+  pair(70, "0");
+  for (const auto& [x, y] : std::vector<std::pair<int, int>>{{0, 4}, {52, -4}}) {
+    pair(0, "VERTEX");
+    pair(8, "CLAY");
+    pair(10, std::to_string(x));
+    pair(20, std::to_string(y));
+  }
+  pair(0, "SEQEND");
+  pair(0, "LINE");
+  pair(8, "WATER");
+  pair(10, "0");
+  pair(20, "8");
+  pair(11, "52");
+  pair(21, "0");
+  out << extra;
+  pair(0, "ENDSEC");
+  pair(0, "EOF");
+}
+
+const nlohmann::json drawn_scene = {
+    {"format", "sphslope-scene/1"},
+    {"name", "a drawn section"},
+    {"section",
+     {{"bottom_y_m", -10},
+      {"profile_lines", {{{"material", "soil"}, {"points_m", {{0, 1}, {1, 1}}}}}},
+      {"materials",
+       {{{"name", "soil"}, {"unit_weight_kN_m3", 20}, {"cohesion_kPa", 10}, {"friction_angle_deg", 20}},
+        {{"name", "clay"}, {"unit_weight_kN_m3", 18}, {"cohesion_kPa", 20}, {"friction_angle_deg", 0}}}}}},
+    {"analyses", {{"lem", nlohmann::json::object()}}}};
+
+}  // namespace
+
+TEST_CASE("section: a drawn section's layers become the scene's profile lines and piezometric line", "[section][cli]") {
+  TemporaryFolder folder("section-drawing");
+  write_drawing(folder.path / "slope.dxf", 6);  // $INSUNITS 6: metres
+  std::ofstream(folder.path / "in.json") << drawn_scene.dump(2);
+  const std::string into = " --scene " + quoted(folder.path / "in.json") + " -o " + quoted(folder.path / "out.json");
+  const ProgramRun run = run_sphslope("section " + quoted(folder.path / "slope.dxf") +
+                                      " --profile GROUND --profile CLAY=clay --water WATER" + into);
+  INFO(run.output);
+  REQUIRE(run.status == 0);
+  const nlohmann::json section = read_json(folder.path / "out.json")["section"];
+  const nlohmann::json ground = {{0.0, 10.0}, {12.0, 10.0}, {32.0, 0.0}, {52.0, 0.0}};  // reversed: x increasing
+  CHECK(section["profile_lines"][0]["points_m"] == ground);
+  CHECK(section["profile_lines"][0]["material"] == "soil");  // the scene's
+  CHECK(section["profile_lines"][1]["points_m"] == nlohmann::json({{0.0, 4.0}, {52.0, -4.0}}));
+  CHECK(section["profile_lines"][1]["material"] == "clay");
+  CHECK(section["water"]["piezometric_line_m"] == nlohmann::json({{0.0, 8.0}, {52.0, 0.0}}));
+  const ProgramRun lem = run_sphslope("lem " + quoted(folder.path / "out.json"));
+  INFO(lem.output);
+  CHECK(lem.status == 0);
+  // a drawing in millimetres without $INSUNITS: refused until --units says so
+  write_drawing(folder.path / "mm.dxf", 0);
+  const std::string mm = "section " + quoted(folder.path / "mm.dxf") + " --profile GROUND" + into;
+  const ProgramRun unstated = run_sphslope(mm);
+  CHECK(unstated.status == 2);
+  CHECK(unstated.output.find("the drawing states no length unit ($INSUNITS 0); give it with --units") !=
+        std::string::npos);
+  REQUIRE(run_sphslope(mm + " --units mm").status == 0);
+  CHECK(read_json(folder.path / "out.json")["section"]["profile_lines"][0]["points_m"][1] ==
+        nlohmann::json({0.012, 0.01}));
+}
+
+TEST_CASE("section: bad drawings exit 2 naming the layer", "[section][cli]") {
+  TemporaryFolder folder("section-bad-drawing");
+  std::ofstream(folder.path / "in.json") << drawn_scene.dump(2);
+  const std::string into = " --scene " + quoted(folder.path / "in.json") + " -o " + quoted(folder.path / "out.json");
+  write_drawing(folder.path / "slope.dxf", 6);
+  write_drawing(folder.path / "twice.dxf", 6, "0\nLINE\n8\nWATER\n10\n0\n20\n9\n11\n52\n21\n1\n");
+  write_drawing(folder.path / "back.dxf", 6,
+                "0\nLWPOLYLINE\n8\nBACK\n90\n3\n70\n0\n10\n0\n20\n0\n10\n5\n20\n1\n10\n3\n20\n2\n");
+  const struct {
+    std::string arguments, message;
+  } cases[] = {
+      {quoted(folder.path / "slope.dxf") + " --profile ROCK" + into,
+       "no polyline on layer \"ROCK\" (layers with lines: CLAY, GROUND, WATER)"},
+      {quoted(folder.path / "twice.dxf") + " --profile GROUND --water WATER" + into,
+       "layer \"WATER\" holds 2 lines; join them into one polyline"},
+      {quoted(folder.path / "back.dxf") + " --profile BACK" + into, "turns back at vertex 2 (3, 2) m"},
+      {quoted(folder.path / "slope.dxf") + " --profile GROUND --profile CLAY" + into,
+       "has no section.profile_lines[1] to take its material from"},
+      {quoted(folder.path / "slope.dxf") + " --profile GROUND", "a drawing goes into a scene"},
+      {quoted(folder.path / "slope.dxf") + " --profile GROUND --units yards" + into, "--units: \"yards\" is not"},
+  };
+  for (const auto& c : cases) {
+    const ProgramRun run = run_sphslope("section " + c.arguments);
+    INFO(c.arguments);
+    INFO(run.output);
+    CHECK(run.status == 2);
+    CHECK(run.output.find(c.message) != std::string::npos);
+  }
+}
+
 }  // namespace test_section_command

@@ -248,7 +248,8 @@ void add_scene_commands(CLI::App& app, CommandLine& cli) {
   cli.check = app.add_subcommand("check", "Validate a scene file and explain every error.");
   // listed for --help; main() hands `sphslope section ...` to sphslope-section before parsing
   app.add_subcommand("section", "Cut a ground profile out of a terrain raster (GeoTIFF, .bil, ASCII grid, ...) along a "
-                                "line: CSV, or into a scene (sphslope section --help)");
+                                "line, or take a drawn section's layers from DXF, into a scene (sphslope section "
+                                "--help)");
   cli.check->add_option("SCENE", cli.scene_file, "Scene file (JSON, \"format\": \"sphslope-scene/1\")")
       ->required()
       ->type_name("FILE");

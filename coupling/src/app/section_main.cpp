@@ -2,16 +2,22 @@
 // terrain raster that GDAL reads (GeoTIFF, ESRI .bil/.hdr, ASCII grid, ...) along a line given in the raster's
 // coordinates. The elevation is the bilinear interpolation of the four cell centres around each sample; x is the
 // distance along the line from its first vertex, y the elevation, both in metres, rounded to 1 mm. The profile goes
-// to stdout as CSV, or into a copy of a scene as section.profile_lines[0].points_m. A separate program because GDAL
+// to stdout as CSV, or into a copy of a scene as section.profile_lines[0].points_m. A drawing (DXF, read by dxflib)
+// gives the profile lines and the piezometric line of a scene from its layers. A separate program because GDAL
 // and its hundred libraries take some 40 ms to load, which every other command would pay.
 // Exit status: 0 written; 2 invalid input (the message names the file, the option or the point that is wrong).
+#include <dl_creationadapter.h>
+#include <dl_dxf.h>
 #include <gdal.h>
 #include <ogr_srs_api.h>
+
+#include <map>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -229,8 +235,96 @@ std::vector<Point> cut_profile(const Raster& raster, const std::vector<Point>& l
   return profile;
 }
 
-// The scene `scene_path` with section.profile_lines[0].points_m set to `profile` (the rest kept), into `out_path`.
-void write_into_scene(const std::string& scene_path, const std::string& out_path, const std::vector<Point>& profile) {
+// ---- drawn sections (DXF)
+
+// The polylines of a drawing (POLYLINE and LWPOLYLINE, and LINE as a polyline of two points) by layer, and its
+// $INSUNITS.
+struct Drawing : DL_CreationAdapter {
+  std::map<std::string, std::vector<std::vector<Point>>> lines;  // layer -> its polylines, in the drawing's units
+  int units = 0;                                                  // $INSUNITS (0: not stated)
+  std::vector<Point>* open = nullptr;                             // the polyline taking vertices
+
+  void addPolyline(const DL_PolylineData&) override {
+    auto& layer = lines[getAttributes().getLayer()];
+    layer.emplace_back();
+    open = &layer.back();
+  }
+  void addVertex(const DL_VertexData& v) override {
+    if (open != nullptr) open->push_back({v.x, v.y});
+  }
+  void endSequence() override { open = nullptr; }
+  void addLine(const DL_LineData& l) override {
+    lines[getAttributes().getLayer()].push_back({{l.x1, l.y1}, {l.x2, l.y2}});
+    open = nullptr;
+  }
+  void setVariableInt(const std::string& key, int value, int) override {
+    if (key == "$INSUNITS") units = value;
+  }
+};
+
+// Metres per drawing unit: --units when given, else the drawing's $INSUNITS; neither is an error.
+double drawing_unit(const std::string& path, int insunits, const std::string& given) {
+  const std::map<std::string, double> names{{"m", 1.0},     {"mm", 0.001},  {"cm", 0.01},
+                                            {"km", 1000.0}, {"ft", 0.3048}, {"in", 0.0254},
+                                            {"us-ft", us_survey_foot}};
+  if (!given.empty()) {
+    const auto it = names.find(given);
+    if (it == names.end()) throw InputError("--units: \"" + given + "\" is not m, mm, cm, km, ft, in or us-ft");
+    return it->second;
+  }
+  const std::map<int, double> codes{{1, 0.0254}, {2, 0.3048},   {4, 0.001},         {5, 0.01},
+                                    {6, 1.0},    {7, 1000.0},   {21, us_survey_foot}};
+  const auto it = codes.find(insunits);
+  if (it == codes.end())
+    throw InputError(path + ": the drawing states no length unit ($INSUNITS " + std::to_string(insunits) +
+                     "); give it with --units m|mm|cm|km|ft|in|us-ft");
+  return it->second;
+}
+
+// The one polyline on `layer`, in metres, with x increasing (a line drawn from right to left is reversed).
+std::vector<Point> layer_line(const Drawing& drawing, const std::string& path, const std::string& layer,
+                              double metres) {
+  const auto it = drawing.lines.find(layer);
+  if (it == drawing.lines.end() || it->second.empty()) {
+    std::string layers;
+    for (const auto& entry : drawing.lines) layers += (layers.empty() ? "" : ", ") + entry.first;
+    throw InputError(path + ": no polyline on layer \"" + layer + "\" (layers with lines: " +
+                     (layers.empty() ? "none" : layers) + ")");
+  }
+  if (it->second.size() > 1)
+    throw InputError(path + ": layer \"" + layer + "\" holds " + std::to_string(it->second.size()) +
+                     " lines; join them into one polyline");
+  std::vector<Point> line = it->second.front();
+  if (line.size() < 2)
+    throw InputError(path + ": the polyline on layer \"" + layer + "\" has fewer than 2 vertices");
+  if (line.back()[0] < line.front()[0]) std::reverse(line.begin(), line.end());
+  for (Point& p : line) p = {round_mm(p[0] * metres), round_mm(p[1] * metres)};
+  for (std::size_t i = 1; i < line.size(); ++i)
+    if (!(line[i][0] > line[i - 1][0]))
+      throw InputError(path + ": the polyline on layer \"" + layer + "\" turns back at vertex " +
+                       std::to_string(i) + " " + point_text(line[i]) + " m; a section's lines must have x increasing");
+  return line;
+}
+
+Drawing read_drawing(const std::string& path) {
+  std::ifstream probe(path);
+  if (!probe) throw InputError(path + ": cannot read the drawing");
+  Drawing drawing;
+  DL_Dxf dxf;
+  if (!dxf.in(path, &drawing)) throw InputError(path + ": not a DXF drawing dxflib can read");
+  return drawing;
+}
+
+// What goes into the scene: its profile lines in order (points in metres, and a material, empty: the scene's line
+// at that place keeps its own) and, when given, the piezometric line.
+struct SceneLines {
+  std::vector<std::pair<std::vector<Point>, std::string>> profile_lines;
+  std::optional<std::vector<Point>> water;
+};
+
+// The scene `scene_path` with its section.profile_lines (and water) replaced by `lines`, the rest kept, into
+// `out_path`.
+void write_into_scene(const std::string& scene_path, const std::string& out_path, const SceneLines& lines) {
   std::ifstream in(scene_path);
   if (!in) throw InputError("--scene: cannot read " + scene_path);
   nlohmann::ordered_json scene;
@@ -239,10 +333,22 @@ void write_into_scene(const std::string& scene_path, const std::string& out_path
   } catch (const nlohmann::json::parse_error& error) {
     throw InputError("--scene: " + scene_path + " is not JSON (" + error.what() + ")");
   }
-  auto& lines = scene["section"]["profile_lines"];
-  if (!lines.is_array() || lines.empty() || !lines[0].is_object())
-    throw InputError("--scene: " + scene_path + " has no section.profile_lines[0] to take the profile");
-  lines[0]["points_m"] = profile;
+  const nlohmann::ordered_json old_lines = scene["section"]["profile_lines"];
+  nlohmann::ordered_json new_lines = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < lines.profile_lines.size(); ++i) {
+    const auto& [points, material] = lines.profile_lines[i];
+    nlohmann::ordered_json line = old_lines.is_array() && i < old_lines.size() && old_lines[i].is_object()
+                                      ? old_lines[i]
+                                      : nlohmann::ordered_json::object();
+    if (!material.empty()) line["material"] = material;
+    if (!line.contains("material"))
+      throw InputError("--scene: " + scene_path + " has no section.profile_lines[" + std::to_string(i) +
+                       "] to take its material from; name it (--profile LAYER=MATERIAL)");
+    line["points_m"] = points;
+    new_lines.push_back(line);
+  }
+  scene["section"]["profile_lines"] = new_lines;
+  if (lines.water) scene["section"]["water"]["piezometric_line_m"] = *lines.water;
   std::ofstream out(out_path);
   out << scene.dump(2) << "\n";
   if (!out) throw InputError("-o: cannot write " + out_path);
@@ -251,10 +357,47 @@ void write_into_scene(const std::string& scene_path, const std::string& out_path
 struct Options {
   std::string raster, scene, output;
   std::vector<double> line;
-  double step_m = 0.0;  // 0: half the smaller cell size
+  double step_m = 0.0;                // 0: half the smaller cell size
+  std::vector<std::string> profiles;  // a drawing's layers, LAYER[=MATERIAL], in the order of profile_lines
+  std::string water;                  // a drawing's layer of the piezometric line
+  std::string units;                  // a drawing's length unit, when it states none
 };
 
+bool is_drawing(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension == ".dxf";
+}
+
+// A drawn section into a copy of the scene: each --profile layer's polyline becomes a profile line, --water's the
+// piezometric line.
+int take_drawing(const Options& options) {
+  if (options.scene.empty() || options.output.empty())
+    throw InputError("a drawing goes into a scene: give --scene IN.json -o OUT.json");
+  if (options.profiles.empty())
+    throw InputError("--profile: name the drawing's layer of the ground (LAYER[=MATERIAL])");
+  if (!options.line.empty()) throw InputError("--line is for rasters; a drawing's lines are its layers (--profile)");
+  const Drawing drawing = read_drawing(options.raster);
+  const double metres = drawing_unit(options.raster, drawing.units, options.units);
+  SceneLines lines;
+  for (const std::string& profile : options.profiles) {
+    const auto equals = profile.find('=');
+    const std::string layer = profile.substr(0, equals);
+    lines.profile_lines.emplace_back(layer_line(drawing, options.raster, layer, metres),
+                                     equals == std::string::npos ? "" : profile.substr(equals + 1));
+    std::cerr << "section: layer \"" << layer << "\": profile_lines[" << lines.profile_lines.size() - 1 << "], "
+              << lines.profile_lines.back().first.size() << " vertices\n";
+  }
+  if (!options.water.empty()) lines.water = layer_line(drawing, options.raster, options.water, metres);
+  write_into_scene(options.scene, options.output, lines);
+  std::cerr << "section: " << options.raster << ": " << number(metres) << " m per drawing unit; wrote "
+            << options.output << "\n";
+  return 0;
+}
+
 int cut(const Options& options) {
+  if (is_drawing(options.raster)) return take_drawing(options);
   if (options.line.size() < 4 || options.line.size() % 2 != 0)
     throw InputError("--line: give the line's vertices as X0,Y0,X1,Y1[,...] in the raster's coordinates (got " +
                      std::to_string(options.line.size()) + " numbers)");
@@ -273,7 +416,7 @@ int cut(const Options& options) {
             << number(profile.back()[0]) << " m; elevations " << number((*lowest)[1]) << " to "
             << number((*highest)[1]) << " m\n";
   if (!options.scene.empty()) {
-    write_into_scene(options.scene, options.output, profile);
+    write_into_scene(options.scene, options.output, SceneLines{{{profile, ""}}, std::nullopt});
     std::cerr << "section: wrote " << options.output << " (section.profile_lines[0].points_m)\n";
     return 0;
   }
@@ -287,16 +430,24 @@ int cut(const Options& options) {
 int main(int argc, char** argv) {
   CLI::App app{"sphslope section: a ground profile cut out of a terrain raster (any format GDAL reads) along a line "
                "in the raster's coordinates: x the distance along the line, y the elevation, in metres. CSV on "
-               "stdout, or into a copy of a scene (--scene IN -o OUT). Exit status: 0 written; 2 invalid input.",
+               "stdout, or into a copy of a scene (--scene IN -o OUT). Or a drawn section (.dxf): its --profile layers "
+               "become the scene's profile lines, its --water layer the piezometric line. Exit status: 0 written; 2 "
+               "invalid input.",
                "sphslope section"};
   Options options;
-  app.add_option("RASTER", options.raster, "Terrain raster (GeoTIFF, ESRI .bil/.hdr, ASCII grid, ...)")
+  app.add_option("FILE", options.raster, "Terrain raster (GeoTIFF, ESRI .bil/.hdr, ASCII grid, ...) or drawing (.dxf)")
       ->required()
       ->type_name("FILE");
-  app.add_option("--line", options.line, "The line's vertices in the raster's coordinates, X0,Y0,X1,Y1[,...]")
-      ->required()
+  app.add_option("--line", options.line, "A raster's: the line's vertices in its coordinates, X0,Y0,X1,Y1[,...]")
       ->delimiter(',')
       ->type_name("X,Y,...");
+  app.add_option("--profile", options.profiles,
+                 "A drawing's (DXF): the layer whose one polyline is the next profile line (the first the ground), "
+                 "with the material below it, or the scene's line at that place keeps its material")
+      ->type_name("LAYER[=MATERIAL]");
+  app.add_option("--water", options.water, "A drawing's: the layer of the piezometric line")->type_name("LAYER");
+  app.add_option("--units", options.units,
+                 "A drawing's length unit when it states none ($INSUNITS): m, mm, cm, km, ft, in, us-ft");
   app.add_option("--step", options.step_m, "Distance between samples in metres (default: half the cell size)");
   app.add_option("--scene", options.scene, "Scene whose section.profile_lines[0] takes the profile")->type_name("FILE");
   app.add_option("-o,--output", options.output, "The scene file to write (with --scene)")->type_name("FILE");
