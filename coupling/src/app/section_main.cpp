@@ -195,9 +195,10 @@ std::optional<double> elevation(const Raster& raster, const Point& grid) {
 
 double round_mm(double metres) { return std::round(metres * 1000.0) / 1000.0; }
 
-// The point at distance `d` metres along `line`, whose vertices lie at `at_m` metres along it.
-Point point_along(const std::vector<Point>& line, const std::vector<double>& at_m, double d) {
-  std::size_t i = 1;
+// The point at distance `d` metres along `line`, whose vertices lie at `at_m` metres along it. `segment` (start at 1)
+// is the segment the last call ended on: the distances come in increasing order, so the walk never starts over.
+Point point_along(const std::vector<Point>& line, const std::vector<double>& at_m, double d, std::size_t& segment) {
+  std::size_t& i = segment;
   while (i + 1 < line.size() && at_m[i] < d) ++i;
   const double length = at_m[i] - at_m[i - 1];
   const double t = length > 0.0 ? std::clamp((d - at_m[i - 1]) / length, 0.0, 1.0) : 0.0;
@@ -224,8 +225,9 @@ std::vector<Point> cut_profile(const Raster& raster, const std::vector<Point>& l
   for (long k = 0; k * step_m <= length_m; ++k) distances.push_back(k * step_m);
   if (round_mm(length_m) > round_mm(distances.back())) distances.push_back(length_m);
   std::vector<Point> profile;
+  std::size_t segment = 1;
   for (const double d : distances) {
-    const Point p = point_along(line, at_m, d);
+    const Point p = point_along(line, at_m, d, segment);
     const auto z = elevation(raster, *grid_position(raster, p));
     if (!z)
       throw InputError("--line: the line crosses cells without data at " + number(round_mm(d)) + " m along it, " +
