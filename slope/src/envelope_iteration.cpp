@@ -21,8 +21,8 @@ bool has_envelope(const SliceTable& t, int i) {
 }
 
 // The tangent of each base's envelope at its effective normal stress sigma[i], as the base's c' and tan(phi');
-// hints[i]: where the envelope's root search starts, the last pass's root.
-void apply_envelopes(SliceTable& t, const std::vector<double>& sigma, std::vector<double>& hints) {
+// hints[i]: where base i's last evaluation ended, for the next to start there.
+void apply_envelopes(SliceTable& t, const std::vector<double>& sigma, std::vector<EnvelopeHint>& hints) {
   for (int i = 0; i < t.count; ++i) {
     if (!has_envelope(t, i)) continue;
     const auto k = static_cast<std::size_t>(i);
@@ -37,11 +37,21 @@ void apply_envelopes(SliceTable& t, const std::vector<double>& sigma, std::vecto
 Outcome solve_envelopes(const MethodRow& row, SliceTable& t, MethodWorkspace& ws, double guess) {
   if (!t.has_envelopes) return row.solve(t, ws, guess);
   std::vector<double>& sigma = ws.envelope_normal;
-  sigma.assign(static_cast<std::size_t>(t.count), 0.0);
-  ws.envelope_hint.assign(static_cast<std::size_t>(t.count), std::numeric_limits<double>::quiet_NaN());
-  // The start: the Ordinary method's effective normal forces, which do not depend on the strength.
-  for (int i = 0; i < t.count; ++i)
-    sigma[i] = (t.vertical[i] * t.cos_a[i] - t.horizontal[i] * t.sin_a[i] - t.pore_force[i]) / t.base_length[i];
+  // The start: the stresses of the last solution on this surface (another method's, or this one's at other loads),
+  // else the Ordinary method's effective normal stresses, which do not depend on the strength. Either way the
+  // iteration ends at this method's own stresses; a start nearer to them saves passes.
+  if (ws.envelope_surface != t.surface_id || sigma.size() != static_cast<std::size_t>(t.count)) {
+    sigma.assign(static_cast<std::size_t>(t.count), 0.0);
+    ws.envelope_hint.assign(static_cast<std::size_t>(t.count), EnvelopeHint{});
+    for (int i = 0; i < t.count; ++i)
+      sigma[i] = (t.vertical[i] * t.cos_a[i] - t.horizontal[i] * t.sin_a[i] - t.pore_force[i]) / t.base_length[i];
+  }
+  ws.envelope_surface = 0;  // set again once this solution's stresses are in sigma
+  struct ContinuationScope {  // no continuation before the first pass and after the last
+    MethodWorkspace::RootContinuation& c;
+    explicit ContinuationScope(MethodWorkspace::RootContinuation& r) : c(r) { c = {}; }
+    ~ContinuationScope() { c = {}; }
+  } scope(ws.continuation);
   Outcome out;
   int solver_iterations = 0;
   for (int pass = 0; pass < maximum_envelope_iterations; ++pass) {
@@ -49,11 +59,14 @@ Outcome solve_envelopes(const MethodRow& row, SliceTable& t, MethodWorkspace& ws
     out = row.solve(t, ws, guess);
     solver_iterations += out.iterations;
     if (!out.ok()) return out;
-    row.forces(t, ws, out, ws.envelope_forces);
+    // Spencer's and Morgenstern-Price's solve has just swept the solution's forces into ws.forces (its check of
+    // the solution); the other methods' are found here.
+    if (!row.has_lambda) row.forces(t, ws, out, ws.envelope_forces);
+    const std::vector<SliceForces>& forces = row.has_lambda ? ws.forces : ws.envelope_forces;
     double change = 0.0, scale = 0.0;
     for (int i = 0; i < t.count; ++i) {
       if (!has_envelope(t, i)) continue;
-      const SliceForces& f = ws.envelope_forces[static_cast<std::size_t>(i)];
+      const SliceForces& f = forces[static_cast<std::size_t>(i)];
       const double next = (f.normal - f.pore_force) / t.base_length[i];
       change = std::max(change, std::fabs(next - sigma[i]));
       scale = std::max(scale, std::fabs(next));
@@ -62,10 +75,16 @@ Outcome solve_envelopes(const MethodRow& row, SliceTable& t, MethodWorkspace& ws
     // The solution's stresses are those its tangents were taken at, to 1e-6: each base's strength is then its
     // envelope's to second order in the difference (the factor of safety to about 1e-12).
     if (change <= 1e-6 * scale) {
+      ws.envelope_surface = t.surface_id;
       out.iterations = solver_iterations;
       return out;
     }
     guess = out.factor_of_safety;
+    if (row.has_lambda) {  // the next pass's root is near this one's
+      ws.continuation.active = true;
+      ws.continuation.factor_of_safety = out.factor_of_safety;
+      ws.continuation.lambda = out.lambda;
+    }
   }
   out.failure = Failure::not_converged;
   out.iterations = solver_iterations;

@@ -102,23 +102,65 @@ struct Problem {
   double force_scale;
 };
 
-int residual(const gsl_vector* x, void* params, gsl_vector* r) {
-  const Problem& p = *static_cast<const Problem*>(params);
-  const double F = std::exp(gsl_vector_get(x, 0));
-  const double lambda = gsl_vector_get(x, 1);
-  if (!std::isfinite(F) || !std::isfinite(lambda)) return GSL_EBADFUNC;
+// The two residuals at x = (ln F, lambda); false where the sweep is not finite.
+bool residual_at(const Problem& p, const double x[2], double r[2]) {
+  const double F = std::exp(x[0]);
+  const double lambda = x[1];
+  if (!std::isfinite(F) || !std::isfinite(lambda)) return false;
   const Sweep s = sweep(*p.table, p.f, F, lambda, nullptr);
-  if (!s.finite) return GSL_EBADFUNC;
-  gsl_vector_set(r, 0, s.end_force / p.force_scale);
+  if (!s.finite) return false;
+  r[0] = s.end_force / p.force_scale;
   if (p.table->circular) {
-    gsl_vector_set(r, 1, s.resisting_moment / (F * p.table->total_drive_moment) - 1.0);
+    r[1] = s.resisting_moment / (F * p.table->total_drive_moment) - 1.0;
   } else {
     // A polyline's base normal forces have a moment too, which depends on the solution: the moment imbalance
     // (resisting - driving) relative to the loads' moments, with no division by a driving moment that may vanish.
     const double drive = p.table->total_drive_moment + s.normal_moment;
-    gsl_vector_set(r, 1, (s.resisting_moment / F - drive) / p.table->drive_moment_scale);
+    r[1] = (s.resisting_moment / F - drive) / p.table->drive_moment_scale;
   }
+  return true;
+}
+
+int residual(const gsl_vector* x, void* params, gsl_vector* r) {
+  const double at[2] = {gsl_vector_get(x, 0), gsl_vector_get(x, 1)};
+  double value[2];
+  if (!residual_at(*static_cast<const Problem*>(params), at, value)) return GSL_EBADFUNC;
+  gsl_vector_set(r, 0, value[0]);
+  gsl_vector_set(r, 1, value[1]);
   return GSL_SUCCESS;
+}
+
+constexpr double residual_tolerance = 1e-10;  // on |r1| + |r2| (gsl_multiroot_test_residual)
+
+// Newton's method from the last envelope pass's root (MethodWorkspace::RootContinuation), which the new tangents
+// have moved only a little: one sweep when it is still a root, usually one or two steps otherwise, with the Jacobian
+// (forward differences, as GSL's hybrid solver takes them) found at the first such pass and kept for the later ones.
+// x: in, the last root; out, the new one. False when it does not converge in a few steps.
+bool continue_root(const Problem& p, MethodWorkspace::RootContinuation& c, double x[2], int& iterations) {
+  double r[2];
+  if (!residual_at(p, x, r)) return false;
+  for (int step = 0; step < 6; ++step) {
+    if (std::fabs(r[0]) + std::fabs(r[1]) < residual_tolerance) return true;
+    if (!c.has_jacobian) {
+      for (int j = 0; j < 2; ++j) {
+        double shifted[2] = {x[0], x[1]}, rj[2];
+        const double h = GSL_SQRT_DBL_EPSILON * (x[j] != 0.0 ? std::fabs(x[j]) : 1.0);
+        shifted[j] += h;
+        if (!residual_at(p, shifted, rj)) return false;
+        c.jacobian[j] = (rj[0] - r[0]) / h;      // d r1 / d x_j
+        c.jacobian[2 + j] = (rj[1] - r[1]) / h;  // d r2 / d x_j
+      }
+      c.has_jacobian = true;
+    }
+    const double* J = c.jacobian;
+    const double det = J[0] * J[3] - J[1] * J[2];
+    if (!(std::fabs(det) > 0.0) || !std::isfinite(det)) return false;
+    x[0] -= (J[3] * r[0] - J[1] * r[1]) / det;
+    x[1] -= (J[0] * r[1] - J[2] * r[0]) / det;
+    ++iterations;
+    if (!residual_at(p, x, r)) return false;
+  }
+  return std::fabs(r[0]) + std::fabs(r[1]) < residual_tolerance;
 }
 
 void fill_interface_function(const SliceTable& t, bool half_sine, std::vector<double>& f) {
@@ -209,37 +251,54 @@ Outcome general_limit_equilibrium(const SliceTable& t, MethodWorkspace& ws, bool
   double force_scale = 0.0;
   for (int i = 0; i < t.count; ++i) force_scale += std::fabs(t.vertical[i]) + std::fabs(t.horizontal[i]);
   Problem problem{&t, ws.interface_function.data(), force_scale > 0.0 ? force_scale : 1.0};
-  if (ws.solver == nullptr) {
-    ws.solver = gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, 2);
-    ws.start = gsl_vector_alloc(2);
-  }
-  gsl_multiroot_function function{&residual, 2, &problem};
-  gsl_vector_set(ws.start, 0, std::log(guess));
-  gsl_vector_set(ws.start, 1, 0.0);
-  if (gsl_multiroot_fsolver_set(ws.solver, &function, ws.start) != GSL_SUCCESS) {
-    out.failure = Failure::singular_recursion;
-    return out;
-  }
-  int status = GSL_CONTINUE;
+  double root[2] = {std::log(guess), 0.0};
   int it = 0;
-  while (status == GSL_CONTINUE && it < 100) {
-    ++it;
-    const int step = gsl_multiroot_fsolver_iterate(ws.solver);
-    if (step == GSL_EBADFUNC) {
+  MethodWorkspace::RootContinuation& continuation = ws.continuation;
+  bool solved = false;
+  if (continuation.active) {
+    root[0] = std::log(continuation.factor_of_safety);
+    root[1] = continuation.lambda;
+    solved = continue_root(problem, continuation, root, it);
+    if (!solved) {  // GSL's solver from the last root
+      root[0] = std::log(continuation.factor_of_safety);
+      root[1] = continuation.lambda;
+    }
+  }
+  if (!solved) {
+    if (ws.solver == nullptr) {
+      ws.solver = gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, 2);
+      ws.start = gsl_vector_alloc(2);
+    }
+    gsl_multiroot_function function{&residual, 2, &problem};
+    gsl_vector_set(ws.start, 0, root[0]);
+    gsl_vector_set(ws.start, 1, root[1]);
+    if (gsl_multiroot_fsolver_set(ws.solver, &function, ws.start) != GSL_SUCCESS) {
       out.failure = Failure::singular_recursion;
+      return out;
+    }
+    int status = GSL_CONTINUE;
+    while (status == GSL_CONTINUE && it < 100) {
+      ++it;
+      const int step = gsl_multiroot_fsolver_iterate(ws.solver);
+      if (step == GSL_EBADFUNC) {
+        out.failure = Failure::singular_recursion;
+        out.iterations = it;
+        return out;
+      }
+      status = gsl_multiroot_test_residual(ws.solver->f, residual_tolerance);
+      if (status == GSL_CONTINUE && step != GSL_SUCCESS) break;  // no progress
+    }
+    if (status != GSL_SUCCESS) {
+      out.failure = Failure::not_converged;
       out.iterations = it;
       return out;
     }
-    status = gsl_multiroot_test_residual(ws.solver->f, 1e-10);
-    if (status == GSL_CONTINUE && step != GSL_SUCCESS) break;  // no progress
+    root[0] = gsl_vector_get(ws.solver->x, 0);
+    root[1] = gsl_vector_get(ws.solver->x, 1);
   }
   out.iterations = it;
-  if (status != GSL_SUCCESS) {
-    out.failure = Failure::not_converged;
-    return out;
-  }
-  const double F = std::exp(gsl_vector_get(ws.solver->x, 0));
-  const double lambda = gsl_vector_get(ws.solver->x, 1);
+  const double F = std::exp(root[0]);
+  const double lambda = root[1];
   if (!(F > 0.0) || !std::isfinite(F)) {
     out.failure = Failure::not_positive;
     return out;

@@ -7,6 +7,7 @@
 
 #include "slice_table.hpp"
 #include "slope/methods.hpp"
+#include "slope/strength.hpp"
 
 namespace slope::detail {
 
@@ -47,10 +48,22 @@ class MethodWorkspace {
   MethodWorkspace& operator=(const MethodWorkspace&) = delete;
 
   std::vector<double> numerator, friction_term, interface_function;
+  // Spencer and Morgenstern-Price: the slice forces of the solution they last returned (acceptable_solution)
   std::vector<SliceForces> forces;
   // the iteration on non-linear strength envelopes: the bases' effective normal stresses and the forces they come from
-  std::vector<double> envelope_normal, envelope_hint;
+  std::vector<double> envelope_normal;
+  std::vector<EnvelopeHint> envelope_hint;
+  std::uint64_t envelope_surface = 0;  // SliceTable::surface_id of the solution envelope_normal holds (0: none)
   std::vector<SliceForces> envelope_forces;
+  // Spencer and Morgenstern-Price within the envelope iteration (envelope_iteration.cpp): the last pass's root on
+  // this surface, where the next pass starts (active: between passes; the iteration clears it when it ends), and
+  // the Jacobian of the residuals in (ln F, lambda) the first continued pass found.
+  struct RootContinuation {
+    bool active = false;
+    double factor_of_safety = 0.0, lambda = 0.0;
+    bool has_jacobian = false;
+    double jacobian[4] = {};  // row-major d(r1, r2) / d(ln F, lambda)
+  } continuation;
 
   // Grows the per-slice buffers of the ratio equations (Bishop, Janbu) to hold n slices (with room to spare).
   void reserve_ratio_terms(int n) {
@@ -64,8 +77,10 @@ class MethodWorkspace {
 };
 
 Outcome ordinary_method(const SliceTable& table);
-Outcome bishop_method(const SliceTable& table, MethodWorkspace& ws);
-Outcome janbu_method(const SliceTable& table, MethodWorkspace& ws);
+// guess (circles): where the iteration on F starts when positive (the envelope iteration's last pass), else at
+// the Ordinary method's value.
+Outcome bishop_method(const SliceTable& table, MethodWorkspace& ws, double guess = 0.0);
+Outcome janbu_method(const SliceTable& table, MethodWorkspace& ws, double guess = 0.0);
 // Janbu's empirical correction factor f0 = 1 + b1 (d/L - 1.4 (d/L)^2) for this mass.
 double janbu_correction_factor(const SliceTable& table);
 // Spencer (half_sine = false: f = 1) or Morgenstern-Price with the half-sine interslice function.

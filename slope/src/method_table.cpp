@@ -32,8 +32,8 @@ void moment_method_forces(const SliceTable& t, bool bishop, double F, std::vecto
 }
 
 Outcome solve_ordinary(const SliceTable& t, MethodWorkspace&, double) { return ordinary_method(t); }
-Outcome solve_bishop(const SliceTable& t, MethodWorkspace& ws, double) { return bishop_method(t, ws); }
-Outcome solve_janbu(const SliceTable& t, MethodWorkspace& ws, double) { return janbu_method(t, ws); }
+Outcome solve_bishop(const SliceTable& t, MethodWorkspace& ws, double guess) { return bishop_method(t, ws, guess); }
+Outcome solve_janbu(const SliceTable& t, MethodWorkspace& ws, double guess) { return janbu_method(t, ws, guess); }
 Outcome solve_spencer(const SliceTable& t, MethodWorkspace& ws, double guess) {
   return general_limit_equilibrium(t, ws, false, guess);
 }

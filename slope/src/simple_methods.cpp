@@ -186,10 +186,11 @@ inline double simplified_normal(const SliceTable& t, int i, double F) {
   return (t.vertical[i] - t.pore_force[i] * t.cos_a[i] - t.cohesion_force[i] * t.sin_a[i] / F) / m;
 }
 
-// Bishop and Janbu: solve F = sum(w / (cos a + sin a tan phi / F)) / driving from the Ordinary value (or 1), then
-// require a positive F and no slice base with a negative shear strength.
-Outcome solve_simplified(const SliceTable& t, const RatioEquation& eq, double ordinary_guess) {
-  Outcome out = solve_ratio_equation(eq, ordinary_guess > 0.05 ? ordinary_guess : 1.0);
+// Bishop and Janbu: solve F = sum(w / (cos a + sin a tan phi / F)) / driving from `start` (the Ordinary value or a
+// caller's guess; 1 when it is not above 0.05), then require a positive F and no slice base with a negative shear
+// strength.
+Outcome solve_simplified(const SliceTable& t, const RatioEquation& eq, double start) {
+  Outcome out = solve_ratio_equation(eq, start > 0.05 ? start : 1.0);
   if (out.ok() && !(out.factor_of_safety > 0.0 && std::isfinite(out.factor_of_safety)))
     out.failure = Failure::not_positive;
   if (out.ok()) {
@@ -332,7 +333,7 @@ Outcome ordinary_method(const SliceTable& t) {
   return out;
 }
 
-Outcome bishop_method(const SliceTable& t, MethodWorkspace& ws) {
+Outcome bishop_method(const SliceTable& t, MethodWorkspace& ws, double guess) {
   Outcome out;
   const double moment = t.total_drive_moment;
   if (!t.circular) return bishop_polyline(t);  // (its driving moment includes the base normal forces')
@@ -354,10 +355,10 @@ Outcome bishop_method(const SliceTable& t, MethodWorkspace& ws) {
     p[i] = s * tp;
     ordinary += d * (t.cohesion_force[i] + (t.vertical[i] * c - t.horizontal[i] * s - t.pore_force[i]) * tp);
   }
-  return solve_simplified(t, RatioEquation{&t, w, p, moment}, ordinary / moment);
+  return solve_simplified(t, RatioEquation{&t, w, p, moment}, guess > 0.0 ? guess : ordinary / moment);
 }
 
-Outcome janbu_method(const SliceTable& t, MethodWorkspace& ws) {
+Outcome janbu_method(const SliceTable& t, MethodWorkspace& ws, double guess) {
   Outcome out;
   const int n = t.count;
   ws.reserve_ratio_terms(n);
@@ -378,7 +379,7 @@ Outcome janbu_method(const SliceTable& t, MethodWorkspace& ws) {
     out.failure = Failure::no_driving_force;
     return out;
   }
-  return solve_simplified(t, RatioEquation{&t, w, p, driving}, ordinary / driving);
+  return solve_simplified(t, RatioEquation{&t, w, p, driving}, guess > 0.0 ? guess : ordinary / driving);
 }
 
 double janbu_correction_factor(const SliceTable& t) {

@@ -1,5 +1,6 @@
 // The slice table's loads and its conversions to and from the public SlipMass (slice_table.hpp).
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "slice_table.hpp"
@@ -7,6 +8,8 @@
 namespace slope::detail {
 
 void SliceTable::resize(int n) {
+  static std::atomic<std::uint64_t> surfaces{0};
+  surface_id = surfaces.fetch_add(1, std::memory_order_relaxed) + 1;
   count = n;
   if (static_cast<std::size_t>(n) <= x_left.size()) return;
   const std::size_t capacity = static_cast<std::size_t>(n) + static_cast<std::size_t>(n) / 2 + 8;

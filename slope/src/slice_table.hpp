@@ -2,6 +2,7 @@
 // Internal: the slices of one slip mass in structure-of-arrays form, and the slicer that fills it without
 // allocating per trial circle. The public slice_circle() and factor_of_safety() go through the same code.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -77,7 +78,11 @@ struct SliceTable {
   double drive_moment_scale = 0.0;  // sum of |moments|: a total below 1e-9 of it counts as no driving moment
   bool driven() const { return total_drive_moment > 1e-9 * drive_moment_scale; }
 
-  void resize(int n);  // sets count; grows the buffers only when needed
+  // A number no other surface sliced in this process has: resize() draws a new one, as every new surface is sliced
+  // through it (the envelope iteration starts from the last solution's stresses on the same surface).
+  std::uint64_t surface_id = 0;
+
+  void resize(int n);  // sets count and a new surface_id; grows the buffers only when needed
   void compute_loads();
 
  private:

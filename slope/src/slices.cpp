@@ -81,7 +81,7 @@ PreparedSection::PreparedSection(const Section& section) {
   for (const Material& m : section.materials) {
     material_ru.push_back(m.pore_pressure_ratio);
     material_envelope.push_back(m.envelope ? static_cast<int>(envelopes.size()) : -1);
-    if (m.envelope) envelopes.push_back(*m.envelope);
+    if (m.envelope) envelopes.push_back(tabulated(*m.envelope));
   }
 
   if (section.water) {

@@ -8,6 +8,14 @@
 
 namespace slope {
 
+// Hoek-Brown tabulated (tabulated()): for interval j, from normal[j] to normal[j + 1], the shear strength is
+// sum_k coefficients[6 j + k] t^k with t = (sigma_n - normal[j]) inverse_width[j].
+struct EnvelopeTable {
+  std::vector<double> normal;         // Pa, the nodes' normal stresses, increasing
+  std::vector<double> inverse_width;  // 1/Pa, one per interval
+  std::vector<double> coefficients;   // Pa, six per interval
+};
+
 HoekBrown hoek_brown_from_gsi(double intact_strength, double gsi, double mi, double disturbance) {
   HoekBrown hb;
   hb.intact_strength = intact_strength;
@@ -24,6 +32,7 @@ namespace {
 // k = d sigma1 / d sigma3; its slope there is tan(phi_i) = (k - 1) / (2 sqrt(k)) (sin(phi_i) = (k - 1) / (k + 1)).
 struct BalmerPoint {
   double normal = 0.0, shear = 0.0, slope = 0.0, d_normal = 0.0;  // d_normal: d sigma_n / d sigma3
+  double curvature = 0.0;                                           // d^2 tau / d sigma_n^2
 };
 
 BalmerPoint balmer(const HoekBrown& hb, double sigma3) {
@@ -37,6 +46,8 @@ BalmerPoint balmer(const HoekBrown& hb, double sigma3) {
   p.shear = deviator * std::sqrt(k) / (k + 1.0);
   p.slope = (k - 1.0) / (2.0 * std::sqrt(k));
   p.d_normal = 1.0 + (k - 1.0) / (k + 1.0) - deviator * dk / ((k + 1.0) * (k + 1.0));
+  // d slope / d k = (k + 1) / (4 k^(3/2)), by the chain rule through sigma3
+  p.curvature = (k + 1.0) / (4.0 * k * std::sqrt(k)) * dk / p.d_normal;
   return p;
 }
 
@@ -46,7 +57,7 @@ BalmerPoint balmer(const HoekBrown& hb, double sigma3) {
 // a slope of 5.3.
 double least_sigma3(const HoekBrown& hb) { return hb.intact_strength * (1e-9 - hb.s) / hb.mb; }
 
-EnvelopePoint hoek_brown_at(const HoekBrown& hb, double normal_stress, double* hint) {
+EnvelopePoint hoek_brown_at(const HoekBrown& hb, double normal_stress, double* hint) {  // hint: sigma3
   // The root sigma3 of sigma_n(sigma3) = normal_stress. sigma_n increases (d_normal > 1) and sigma_n >= sigma3: the
   // root lies in [least, normal_stress] unless normal_stress is below sigma_n(least), where the tangent there is
   // extended. Newton's method from the hint (or the upper end), kept inside the bracket and bisecting when a step
@@ -79,6 +90,30 @@ EnvelopePoint hoek_brown_at(const HoekBrown& hb, double normal_stress, double* h
   return {p.shear - p.slope * f, p.slope};
 }
 
+// The envelope from the table where it covers normal_stress: the interval's quintic in t = (sigma_n - start) / width
+// and its derivative; false above the last node.
+// interval: in, where to look first; out, the interval used.
+bool table_at(const EnvelopeTable& table, double normal_stress, std::size_t& interval, EnvelopePoint& out) {
+  const std::vector<double>& x = table.normal;
+  if (!(normal_stress < x.back())) return false;
+  if (!(normal_stress > x.front())) {  // below the least point: its tangent extended, as the root search does
+    const double* c = table.coefficients.data();
+    const double slope = c[1] * table.inverse_width.front();
+    out = {c[0] + slope * (normal_stress - x.front()), slope};
+    return true;
+  }
+  std::size_t j = interval;
+  if (!(j + 1 < x.size() && x[j] <= normal_stress && normal_stress < x[j + 1]))
+    j = static_cast<std::size_t>(std::upper_bound(x.begin() + 1, x.end(), normal_stress) - x.begin() - 1);
+  interval = j;
+  const double* c = table.coefficients.data() + 6 * j;
+  const double t = (normal_stress - x[j]) * table.inverse_width[j];
+  const double value = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
+  const double derivative = c[1] + t * (2.0 * c[2] + t * (3.0 * c[3] + t * (4.0 * c[4] + t * 5.0 * c[5])));
+  out = {value, derivative * table.inverse_width[j]};
+  return true;
+}
+
 EnvelopePoint power_curve_at(const StrengthEnvelope& e, double normal_stress) {
   const double least = 1.0;  // Pa of sigma' + d
   const double t = std::max(normal_stress + e.power_d, least);
@@ -103,13 +138,54 @@ bool finite_all(std::initializer_list<double> values) {
 
 }  // namespace
 
-EnvelopePoint envelope_at(const StrengthEnvelope& envelope, double normal_stress, double* hint) {
+EnvelopePoint envelope_at(const StrengthEnvelope& envelope, double normal_stress, EnvelopeHint* hint) {
   switch (envelope.kind) {
-    case StrengthEnvelope::Kind::hoek_brown: return hoek_brown_at(envelope.hoek_brown, normal_stress, hint);
+    case StrengthEnvelope::Kind::hoek_brown: {
+      EnvelopeHint none;
+      EnvelopeHint& h = hint != nullptr ? *hint : none;
+      EnvelopePoint p;
+      if (envelope.table && table_at(*envelope.table, normal_stress, h.interval, p)) return p;
+      return hoek_brown_at(envelope.hoek_brown, normal_stress, &h.sigma3);
+    }
     case StrengthEnvelope::Kind::power_curve: return power_curve_at(envelope, normal_stress);
     case StrengthEnvelope::Kind::shear_normal: return shear_normal_at(envelope.points, normal_stress);
   }
   return {};
+}
+
+StrengthEnvelope tabulated(StrengthEnvelope envelope) {
+  if (envelope.kind != StrengthEnvelope::Kind::hoek_brown || !envelope_error(envelope).empty()) return envelope;
+  const HoekBrown& hb = envelope.hoek_brown;
+  // Nodes geometric in w = m_b sigma3 / sigma_ci + s, from the least point's 1e-9 to sigma3 = 10 sigma_ci: near
+  // the tensile strength tau grows as a power of the distance from it, beyond as a power of sigma_n, so that a
+  // constant ratio between nodes keeps the relative error even (below 1e-12 at 60 nodes a decade, 530 for
+  // Hammah et al.'s rock mass: test_lem_strength.cpp).
+  constexpr double nodes_per_decade = 60.0;
+  const double w_least = 1e-9, w_top = 10.0 * hb.mb + hb.s;
+  const auto intervals = static_cast<std::size_t>(std::ceil(std::log10(w_top / w_least) * nodes_per_decade));
+  const double ratio = std::pow(w_top / w_least, 1.0 / static_cast<double>(intervals));
+  std::vector<BalmerPoint> nodes;
+  for (std::size_t j = 0; j <= intervals; ++j) {
+    const double w = j == 0 ? w_least : w_least * std::pow(ratio, static_cast<double>(j));
+    nodes.push_back(balmer(hb, j == 0 ? least_sigma3(hb) : hb.intact_strength * (w - hb.s) / hb.mb));
+  }
+  auto table = std::make_shared<EnvelopeTable>();
+  for (std::size_t j = 0; j < intervals; ++j) {
+    const BalmerPoint& p = nodes[j];
+    const BalmerPoint& q = nodes[j + 1];
+    const double h = q.normal - p.normal;
+    // quintic Hermite: value, slope times h and curvature times h^2 at both ends
+    const double dy = q.shear - p.shear, m0 = p.slope * h, m1 = q.slope * h;
+    const double c0 = p.curvature * h * h, c1 = q.curvature * h * h;
+    table->normal.push_back(p.normal);
+    table->inverse_width.push_back(1.0 / h);
+    for (double c : {p.shear, m0, 0.5 * c0, 10.0 * dy - 6.0 * m0 - 4.0 * m1 - 1.5 * c0 + 0.5 * c1,
+                     -15.0 * dy + 8.0 * m0 + 7.0 * m1 + 1.5 * c0 - c1, 6.0 * dy - 3.0 * m0 - 3.0 * m1 - 0.5 * c0 + 0.5 * c1})
+      table->coefficients.push_back(c);
+  }
+  table->normal.push_back(nodes.back().normal);
+  envelope.table = std::move(table);
+  return envelope;
 }
 
 std::string envelope_error(const StrengthEnvelope& e) {

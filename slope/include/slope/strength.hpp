@@ -4,6 +4,9 @@
 // slice base, the strength of the envelope at the base's effective normal stress; the methods of slices see it as
 // an instantaneous cohesion and friction angle (the tangent to the envelope there), found by iteration with the
 // normal stresses of the method's own solution (methods.hpp). SI units: Pa.
+#include <cstddef>
+#include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,6 +32,8 @@ struct StressPoint {
   double shear = 0.0;
 };
 
+struct EnvelopeTable;  // strength.cpp
+
 struct StrengthEnvelope {
   enum class Kind {
     hoek_brown,    // `hoek_brown`
@@ -41,7 +46,15 @@ struct StrengthEnvelope {
   // stresses in kPa, tau = A (sigma' + d)^b + c, has power_a = A 1000^(1 - b).
   double power_a = 0.0, power_b = 1.0, power_c = 0.0, power_d = 0.0;
   std::vector<StressPoint> points;  // shear_normal: normal stress strictly increasing, shear >= 0 non-decreasing
+  // Hoek-Brown: the envelope tabulated by tabulated() for a fast envelope_at (none: each point by a root search).
+  std::shared_ptr<const EnvelopeTable> table;
 };
+
+// The envelope with its table: Hoek-Brown's tau(sigma_n') is found once, at nodes of sigma3' from just above the
+// tensile strength to sigma3' = 10 sigma_ci, and envelope_at then interpolates it (quintic Hermite in sigma_n' on
+// each interval, from the exact strength, slope and curvature at both ends) in place of a root search for each
+// point; beyond the last node it searches as before. The same strength to 1e-12 relative (test_lem_strength.cpp).
+StrengthEnvelope tabulated(StrengthEnvelope envelope);
 
 // The strength at an effective normal stress and the envelope's slope there (the instantaneous tan(phi)); the
 // instantaneous cohesion is shear - normal * slope.
@@ -53,10 +66,14 @@ struct EnvelopePoint {
 // Below the envelope's least normal stress (Hoek-Brown: just above the tensile strength -s sigma_ci / m_b; power curve:
 // sigma' + d below 1 Pa, where the slope would grow without bound; a shear-normal function: its first point) the
 // tangent there is extended (the strength may fall to zero or below: the methods then refuse the surface).
-// hint (Hoek-Brown; optional): in, the minor principal stress sigma3' (Pa) found for a nearby normal stress, where
-// the root search starts (NaN: none); out, the one found. The result does not depend on it beyond the root's
-// tolerance (sigma_n found within 1e-9 of |sigma_n| + 1e-3 sigma_ci, the tangent covering the difference).
-EnvelopePoint envelope_at(const StrengthEnvelope& envelope, double normal_stress, double* hint = nullptr);
+// hint (Hoek-Brown; optional): in, where the evaluation for a nearby normal stress ended, to start there; out,
+// where this one ended. The result does not depend on it beyond the root search's tolerance (sigma_n found within
+// 1e-9 of |sigma_n| + 1e-3 sigma_ci, the tangent covering the difference); a table's result not at all.
+struct EnvelopeHint {
+  std::size_t interval = 0;  // the table's interval
+  double sigma3 = std::numeric_limits<double>::quiet_NaN();  // Pa, the root search's minor principal stress
+};
+EnvelopePoint envelope_at(const StrengthEnvelope& envelope, double normal_stress, EnvelopeHint* hint = nullptr);
 
 // Empty when the envelope can be used; otherwise what is wrong with its parameters.
 std::string envelope_error(const StrengthEnvelope& envelope);
