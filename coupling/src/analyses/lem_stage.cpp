@@ -1,9 +1,9 @@
 // The "lem" stage: the limit-equilibrium search for the critical slip circle of every method.
 #include "coupling/analyses/stage.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
-
 
 namespace coupling {
 
@@ -23,6 +23,19 @@ std::vector<GivenSurfaceResult> analyse_given_surfaces(const slope::Section& sec
   }
   return out;
 }
+
+namespace {
+
+NewmarkOutcome newmark_outcome(const AccelerationRecordInput& input, double yield_coefficient) {
+  NewmarkOutcome out;
+  out.as_given = slope::newmark_displacement(input.record, yield_coefficient, input.scale);
+  out.reversed = slope::newmark_displacement(input.record, yield_coefficient, -input.scale);
+  for (double a : input.record.acceleration) out.peak_acceleration = std::max(out.peak_acceleration, std::fabs(a));
+  out.peak_acceleration *= input.scale;
+  return out;
+}
+
+}  // namespace
 
 StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
   const LemAnalysis& analysis = *context.lem;
@@ -53,7 +66,7 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back("lem: the automatic search found no valid slip circle: " + search.error);
   }
-  LemStageResult result{analysis, {}, analyse_given_surfaces(section, analysis), std::nullopt, std::nullopt};
+  LemStageResult result{analysis, {}, analyse_given_surfaces(section, analysis), std::nullopt, std::nullopt, std::nullopt};
   if (analysis.noncircular && search.error.empty()) {
     const StageClock::time_point noncircular_start = StageClock::now();
     result.noncircular = slope::search_noncircular(section, search, analysis.search, *analysis.noncircular);
@@ -64,6 +77,8 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
     result.critical_coefficient =
         slope::critical_seismic_coefficient(section, *analysis.critical_coefficient_method, analysis.search);
     results.seconds["lem_critical_coefficient"] = seconds_since(k_start);
+    if (analysis.acceleration_record && result.critical_coefficient->coefficient)
+      result.newmark = newmark_outcome(*analysis.acceleration_record, *result.critical_coefficient->coefficient);
   }
   if (outcome.status == ExitStatus::ok) {
     bool any = false;

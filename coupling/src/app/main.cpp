@@ -101,6 +101,9 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
     if (lem->critical_coefficient)
       std::cout << coupling::critical_coefficient_line(*lem->analysis.critical_coefficient_method,
                                                        *lem->critical_coefficient);
+    if (lem->newmark)
+      std::cout << coupling::newmark_line(*lem->analysis.acceleration_record, *lem->newmark,
+                                          *lem->critical_coefficient->coefficient);
     if (!lem->surfaces.empty()) std::cout << coupling::given_surfaces_table(lem->surfaces);
   }
   if (result.results.srm) print_srm(*result.results.srm);

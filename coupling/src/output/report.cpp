@@ -1,5 +1,6 @@
 #include "coupling/output/report.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "coupling/scene/json_text.hpp"
@@ -212,8 +213,44 @@ nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& anal
   return lem;
 }
 
+namespace {
+
+nlohmann::json newmark_direction(const char* direction, const slope::NewmarkResult& r) {
+  return {{"direction", direction},
+          {"displacement_m", r.displacement},
+          {"peak_velocity_m_s", r.peak_velocity},
+          {"sliding_time_s", r.sliding_time},
+          {"sliding_episodes", r.sliding_episodes}};
+}
+
+// lem.critical_seismic_coefficient.newmark: the record, and the displacement each way round (the larger governs).
+nlohmann::json newmark_report(const AccelerationRecordInput& record, const slope::CriticalCoefficient& k,
+                              const NewmarkOutcome* newmark) {
+  const std::size_t n = record.record.acceleration.size();
+  nlohmann::json out = {{"file", record.file},
+                        {"samples", n},
+                        {"time_step_s", record.record.time_step},
+                        {"start_time_s", record.start_time},
+                        {"duration_s", record.record.time_step * static_cast<double>(n - 1)},
+                        {"scale", record.scale}};
+  if (newmark == nullptr || !k.coefficient) {
+    out["displacement_m"] = nullptr;
+    out["displacement_m_error"] = "no yield coefficient k_c: " + k.why;
+    return out;
+  }
+  out["yield_coefficient"] = *k.coefficient;
+  out["peak_acceleration_g"] = newmark->peak_acceleration;
+  out["displacement_m"] = std::max(newmark->as_given.displacement, newmark->reversed.displacement);
+  out["directions"] = {newmark_direction("as given", newmark->as_given),
+                       newmark_direction("reversed", newmark->reversed)};
+  return out;
+}
+
+}  // namespace
+
 nlohmann::json critical_coefficient_report(const slope::Section& section, slope::Method method,
-                                           const slope::CriticalCoefficient& k) {
+                                           const slope::CriticalCoefficient& k, const AccelerationRecordInput* record,
+                                           const NewmarkOutcome* newmark) {
   nlohmann::json out = {{"method", std::string(slope::method_key(method))},
                         {"k_c", optional_number(k.coefficient)},
                         {"vertical_coefficient", section.vertical_seismic_coefficient},
@@ -225,6 +262,7 @@ nlohmann::json critical_coefficient_report(const slope::Section& section, slope:
     out["factor_of_safety"] = optional_number(k.surface->result.factor_of_safety);
     out["surface"] = surface_report(*k.surface->mass);
   }
+  if (record != nullptr) out["newmark"] = newmark_report(*record, k, newmark);
   return out;
 }
 

@@ -103,8 +103,10 @@ json lem_block(const Scene& scene, const StageRecord<LemStageResult>& record) {
   json block = lem_report(section, lem.analysis, lem.search, lem.surfaces);
   if (lem.noncircular) block["noncircular"] = noncircular_report(section, *lem.analysis.noncircular, *lem.noncircular);
   if (lem.critical_coefficient)
-    block["critical_seismic_coefficient"] =
-        critical_coefficient_report(section, *lem.analysis.critical_coefficient_method, *lem.critical_coefficient);
+    block["critical_seismic_coefficient"] = critical_coefficient_report(
+        section, *lem.analysis.critical_coefficient_method, *lem.critical_coefficient,
+        lem.analysis.acceleration_record ? &*lem.analysis.acceleration_record : nullptr,
+        lem.newmark ? &*lem.newmark : nullptr);
   return block;
 }
 

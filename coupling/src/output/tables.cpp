@@ -60,6 +60,15 @@ std::string critical_coefficient_line(slope::Method method, const slope::Critica
   return line;
 }
 
+std::string newmark_line(const AccelerationRecordInput& record, const NewmarkOutcome& newmark, double yield_coefficient) {
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "Newmark displacement at k_c = %.4f under %s (peak %.3f g): %.3f m as given, %.3f m reversed\n",
+                yield_coefficient, record.file.c_str(), newmark.peak_acceleration, newmark.as_given.displacement,
+                newmark.reversed.displacement);
+  return line;
+}
+
 std::string noncircular_table(const slope::NonCircularResult& result) {
   std::string text = "non-circular search (polylines from the critical circles):\n";
   char line[512];

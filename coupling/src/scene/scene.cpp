@@ -136,12 +136,17 @@ void read_fs_map(JsonReader& lem, LemAnalysis& result, Diagnostics& diagnostics)
 
 // analyses.lem.critical_seismic_coefficient {"method"}: seek k_c with this method's search (one of those analysed;
 // default Bishop when analysed, else the first).
-void read_critical_coefficient(JsonReader& lem, LemAnalysis& result, Diagnostics& diagnostics) {
+// With "acceleration_record", Newmark's displacement at k_c under it.
+void read_critical_coefficient(JsonReader& lem, LemAnalysis& result, const std::filesystem::path& scene_file,
+                               Diagnostics& diagnostics) {
   auto block = lem.object("critical_seismic_coefficient", Need::optional,
                           "an object (may be empty: {}), e.g. {\"method\": \"spencer\"}");
   if (!block) return;
   result.critical_coefficient_method = default_method(result);
   read_analysed_method(*block, result, result.critical_coefficient_method, diagnostics);
+  if (auto record = block->object("acceleration_record", Need::optional,
+                                  "an object: {\"file\": \"records/pulse.csv\", \"scale\": 1}"))
+    result.acceleration_record = read_acceleration_record(*record, scene_file);
   block->finish();
 }
 
@@ -192,7 +197,7 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
     noncircular->finish();
   }
   read_fs_map(*lem, result, diagnostics);
-  read_critical_coefficient(*lem, result, diagnostics);
+  read_critical_coefficient(*lem, result, scene.file, diagnostics);
   read_given_surfaces(*lem, scene.section ? &scene.section->section : nullptr, result.search.slicing,
                       result.surfaces);
   lem->finish();
@@ -496,10 +501,17 @@ std::string summarize(const Scene& scene) {
   if (scene.analyses.lem) {
     const std::size_t n = scene.analyses.lem->methods.size();
     const std::size_t given = scene.analyses.lem->surfaces.size();
+    std::string record;
+    if (const auto& r = scene.analyses.lem->acceleration_record)
+      record = ", k_c and Newmark's displacement under " + r->file + " (" +
+               std::to_string(r->record.acceleration.size()) + " samples every " +
+               format_number(r->record.time_step) + " s)";
+    else if (scene.analyses.lem->critical_coefficient_method)
+      record = ", k_c";
     analyses.push_back("lem (" + std::to_string(n) + " method" + (n == 1 ? "" : "s") +
                        (given > 0 ? ", " + std::to_string(given) + " given slip surface" + (given == 1 ? "" : "s")
                                   : std::string()) +
-                       ")");
+                       record + ")");
   }
   if (scene.analyses.sph) analyses.emplace_back("sph");
   if (scene.analyses.compare) analyses.emplace_back("compare");

@@ -1,5 +1,6 @@
 #pragma once
 // Shared between the scene readers (scene.cpp, scene_section.cpp); not part of the public interface.
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -42,6 +43,11 @@ struct SectionExtent {
 // is invalid (reported at its path).
 std::vector<slope::Reinforcement> read_reinforcement(const nlohmann::json& array, const std::string& path,
                                                      const SectionExtent& extent, Diagnostics& diagnostics, bool& ok);
+
+// analyses.lem.critical_seismic_coefficient.acceleration_record {"file", "scale"} (scene_records.cpp): the CSV file
+// (relative to the scene's folder `scene_file`'s) read and checked; nullopt when anything is wrong (reported).
+std::optional<AccelerationRecordInput> read_acceleration_record(JsonReader& record,
+                                                                 const std::filesystem::path& scene_file);
 
 // Reads and validates "section"; nullopt when anything in it is invalid (the faults are in `diagnostics`).
 std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagnostics);

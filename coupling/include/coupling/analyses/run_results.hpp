@@ -14,6 +14,7 @@
 #include "coupling/compare/comparison.hpp"
 #include "coupling/compare/failure_surface.hpp"
 #include "coupling/scene/scene.hpp"
+#include "slope/newmark.hpp"
 #include "slope/search.hpp"
 
 namespace coupling {
@@ -26,12 +27,20 @@ struct GivenSurfaceResult {
 
 // The limit-equilibrium stage's result: the settings it ran with (the scene's, or the defaults for "sphslope lem"),
 // the critical circle of every method, the given surfaces and, when asked for, the non-circular search.
+// Newmark's displacement at k_c under analyses.lem.critical_seismic_coefficient.acceleration_record, the record as
+// given and reversed (which way is downslope in a recording is a matter of its orientation).
+struct NewmarkOutcome {
+  slope::NewmarkResult as_given, reversed;
+  double peak_acceleration = 0.0;  // g, the largest |a| times the scale
+};
+
 struct LemStageResult {
   LemAnalysis analysis;
   slope::SearchResult search;
   std::vector<GivenSurfaceResult> surfaces;
   std::optional<slope::NonCircularResult> noncircular;
   std::optional<slope::CriticalCoefficient> critical_coefficient;  // analyses.lem.critical_seismic_coefficient
+  std::optional<NewmarkOutcome> newmark;  // with its acceleration_record, when k_c was found
 };
 
 // One stage of a run: its typed result, or the error that stopped it before it had one.

@@ -31,9 +31,12 @@ nlohmann::json lem_report(const slope::Section& section, const LemAnalysis& anal
                           const slope::SearchResult& result, const std::vector<GivenSurfaceResult>& surfaces = {});
 
 // lem.critical_seismic_coefficient: k_c (null with "why" when there is none), the factor of safety without k_h, the
-// critical surface at k_c.
+// critical surface at k_c; with an acceleration record, "newmark" (Newmark's displacement at k_c, or why there is
+// none).
 nlohmann::json critical_coefficient_report(const slope::Section& section, slope::Method method,
-                                           const slope::CriticalCoefficient& k);
+                                           const slope::CriticalCoefficient& k,
+                                           const AccelerationRecordInput* record = nullptr,
+                                           const NewmarkOutcome* newmark = nullptr);
 
 // The "lem.noncircular" block: settings {initial_segments, segments, tolerance}, trial_surfaces, seconds, and
 // methods keyed by method key, each as method_report plus searched, from_circle, circle_factor_of_safety,

@@ -17,6 +17,8 @@ std::string lem_table(const LemAnalysis& analysis, const slope::SearchResult& re
 std::string noncircular_table(const slope::NonCircularResult& result);
 // "critical seismic coefficient (bishop): k_c = 0.2689 (FS 1.927 without k_h; ...)" or why there is none.
 std::string critical_coefficient_line(slope::Method method, const slope::CriticalCoefficient& k);
+// "Newmark displacement at k_c = 0.2689 under pulse.csv (PGA 0.40 g): 5.89 m (as given), 0.00 m (reversed)".
+std::string newmark_line(const AccelerationRecordInput& record, const NewmarkOutcome& newmark, double yield_coefficient);
 
 // One line per given slip surface (analyses.lem.surfaces) and method: FS, or why there is none.
 std::string given_surfaces_table(const std::vector<GivenSurfaceResult>& surfaces);

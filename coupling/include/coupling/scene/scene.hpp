@@ -24,6 +24,7 @@
 #include "coupling/scene/soil_material.hpp"
 #include "coupling/scene/sph_analysis.hpp"
 #include "slope/methods.hpp"
+#include "slope/newmark.hpp"
 #include "slope/search.hpp"
 #include "slope/section.hpp"
 
@@ -45,6 +46,15 @@ struct GivenSurface {
   std::optional<slope::Circle> circle;
 };
 
+// analyses.lem.critical_seismic_coefficient.acceleration_record: a ground acceleration record, read from its CSV
+// file when the scene is read, for Newmark's displacement at k_c (slope/newmark.hpp).
+struct AccelerationRecordInput {
+  std::string file;           // as the scene gives it (relative to the scene's folder)
+  slope::AccelerationRecord record;
+  double start_time = 0.0;    // s, the first sample's time in the file
+  double scale = 1.0;         // the accelerations times this
+};
+
 // analyses.lem, with every default applied.
 struct LemAnalysis {
   std::vector<GivenSurface> surfaces;   // analyses.lem.surfaces, checked admissible on the section
@@ -59,6 +69,7 @@ struct LemAnalysis {
   std::optional<double> fs_map_scale_max;
   // analyses.lem.critical_seismic_coefficient: the method whose search finds k_c (absent: k_c is not sought)
   std::optional<slope::Method> critical_coefficient_method;
+  std::optional<AccelerationRecordInput> acceleration_record;  // (only with critical_coefficient_method)
 };
 
 // The analyses the scene asks for, each read once into its typed settings (defaults applied).
