@@ -28,12 +28,13 @@ double first_stop(double v, double b, double c) {
 }  // namespace
 
 NewmarkResult newmark_displacement(const AccelerationRecord& record, double yield_coefficient, double scale,
-                                   double gravity) {
+                                   double gravity, std::vector<double>* history) {
   NewmarkResult out;
   const double kc = yield_coefficient, h = record.time_step, g = gravity;
   const std::vector<double>& a = record.acceleration;
   double v = 0.0;  // m/s, relative, downslope
   bool sliding = false;
+  if (history != nullptr) history->assign(1, 0.0);
   for (std::size_t i = 0; i + 1 < a.size(); ++i) {
     const double a0 = scale * a[i], slope = (scale * a[i + 1] - a0) / h;  // g and g/s over this interval
     double tau = 0.0;                                                     // s, into the interval
@@ -70,6 +71,7 @@ NewmarkResult newmark_displacement(const AccelerationRecord& record, double yiel
         out.peak_velocity = std::max(out.peak_velocity, v);
       }
     }
+    if (history != nullptr) history->push_back(out.displacement);
   }
   if (sliding && v > 0.0) {  // the ground at rest after the record: the block stops at k_c g
     out.displacement += v * v / (2.0 * kc * g);

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "coupling/analyses/pipeline.hpp"
+#include "coupling/output/newmark_figures.hpp"
+#include "coupling/scene/json_reader.hpp"
 #include "coupling/scene/scene.hpp"
 #include "slope/newmark.hpp"
 #include "test_support.hpp"
@@ -14,6 +16,7 @@
 namespace test_newmark_record {
 
 namespace fs = std::filesystem;
+using coupling::AccelerationRecordInput;
 
 // Griffiths & Lane's slope with k_c sought by Bishop and a record in `record_file` (relative to the scene).
 nlohmann::json scene_with_record(const std::string& record_file) {
@@ -65,6 +68,19 @@ TEST_CASE("Newmark: the displacement at k_c under a record read with the scene",
   const double A = 0.4, g = 9.81;
   CHECK(expected == Approx((A - kc) * A * g / (2.0 * kc)).epsilon(2e-3));
   CHECK(unexplained_nulls(out.report).empty());
+  // the figures: the record with k_c, the displacement both ways with the totals
+  const AccelerationRecordInput& record = *scene.analyses.lem->acceleration_record;
+  const coupling::LemStageResult* lem = out.results.lem_result();
+  REQUIRE(lem);
+  REQUIRE(lem->newmark);
+  CHECK(lem->newmark->as_given_history.size() == 2001);
+  CHECK(lem->newmark->as_given_history.back() < expected);  // still sliding at the record's end
+  CHECK(coupling::newmark_record_svg(record, kc, "t").find("k_c = " + coupling::format_number(kc)) !=
+        std::string::npos);
+  const std::string displacement = coupling::newmark_displacement_svg(record, *lem->newmark, "t");
+  CHECK(displacement.find("as given: " + coupling::format_number(expected) + " m (with the stop after the record") !=
+        std::string::npos);
+  CHECK(displacement.find("reversed: 0 m") != std::string::npos);
 }
 
 TEST_CASE("Newmark: a bad acceleration record is refused with its path, before anything runs", "[scene][seismic]") {

@@ -28,8 +28,9 @@ namespace {
 
 NewmarkOutcome newmark_outcome(const AccelerationRecordInput& input, double yield_coefficient) {
   NewmarkOutcome out;
-  out.as_given = slope::newmark_displacement(input.record, yield_coefficient, input.scale);
-  out.reversed = slope::newmark_displacement(input.record, yield_coefficient, -input.scale);
+  constexpr double g = sphslope::standard_gravity;
+  out.as_given = slope::newmark_displacement(input.record, yield_coefficient, input.scale, g, &out.as_given_history);
+  out.reversed = slope::newmark_displacement(input.record, yield_coefficient, -input.scale, g, &out.reversed_history);
   for (double a : input.record.acceleration) out.peak_acceleration = std::max(out.peak_acceleration, std::fabs(a));
   out.peak_acceleration *= input.scale;
   return out;

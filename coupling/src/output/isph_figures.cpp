@@ -19,22 +19,6 @@ using Legend = std::vector<std::tuple<std::string, std::string, std::string>>;
 
 const char* const kLineColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf"};
 
-constexpr double kPlotWidth = 700.0, kPlotHeight = 360.0;  // [px]
-
-// A plot of time [s] against a length [m], kPlotWidth x about kPlotHeight pixels, its axes labelled.
-SvgCanvas time_canvas(double t_end, double lo, double hi, const std::string& title, const std::string& y_label) {
-  if (!(t_end > 0)) t_end = 1.0;
-  if (!(hi > lo)) hi = lo + 1.0;
-  const double pad = 0.05 * (hi - lo);
-  lo -= pad;
-  hi += pad;
-  const double exaggeration = kPlotHeight / (kPlotWidth / t_end * (hi - lo));
-  SvgCanvas canvas(0.0, t_end, lo, hi, kPlotWidth, exaggeration);
-  canvas.title(title);
-  canvas.axes("time t (s)", y_label);
-  return canvas;
-}
-
 std::string colour_of(std::size_t k) { return kLineColours[k % std::size(kLineColours)]; }
 
 }  // namespace

@@ -1,10 +1,12 @@
-// The figures of a run: figures/section.svg, and figures/fs_map.svg after a limit-equilibrium search.
+// The figures of a run: figures/section.svg, and figures/fs_map.svg after a limit-equilibrium search (with
+// figures/newmark_record.svg and newmark_displacement.svg after Newmark's displacement).
 #include "coupling/output/run_figures.hpp"
 
 #include <cstdio>
 
 #include "coupling/compare/comparison.hpp"
 #include "coupling/output/figures.hpp"
+#include "coupling/output/newmark_figures.hpp"
 #include "sph/engine/atomic_file.hpp"
 
 namespace coupling {
@@ -90,6 +92,15 @@ std::optional<std::vector<std::string>> write_figures(const Scene& scene, const 
   if (lem && section && !lem->search.fs_map.empty() && scene.analyses.lem) {
     sph::write_file_atomically(figures / "fs_map.svg", fs_map_svg(fs_map_data(*scene.analyses.lem, *lem, *section)));
     written.push_back("figures/fs_map.svg");
+  }
+  if (lem && lem->newmark && lem->analysis.acceleration_record && lem->critical_coefficient) {
+    const AccelerationRecordInput& record = *lem->analysis.acceleration_record;
+    sph::write_file_atomically(figures / "newmark_record.svg",
+                               newmark_record_svg(record, *lem->critical_coefficient->coefficient, scene.name));
+    sph::write_file_atomically(figures / "newmark_displacement.svg",
+                               newmark_displacement_svg(record, *lem->newmark, scene.name));
+    written.push_back("figures/newmark_record.svg");
+    written.push_back("figures/newmark_displacement.svg");
   }
   return written;
 }

@@ -28,8 +28,10 @@ struct NewmarkResult {
 // The displacement of a rigid block of yield coefficient k_c (> 0) under the record times `scale` (-1: the record
 // the other way round); gravity in m/s^2. A block still sliding at the record's end stops on ground at rest,
 // decelerating at k_c g.
+// history (optional): the displacement (m) at each sample's time, for figures.
 NewmarkResult newmark_displacement(const AccelerationRecord& record, double yield_coefficient, double scale = 1.0,
-                                   double gravity = sphslope::standard_gravity);
+                                   double gravity = sphslope::standard_gravity,
+                                   std::vector<double>* history = nullptr);
 
 // Empty when the record can be used; otherwise what is wrong with it.
 std::string record_error(const AccelerationRecord& record);

@@ -31,6 +31,7 @@ struct GivenSurfaceResult {
 // given and reversed (which way is downslope in a recording is a matter of its orientation).
 struct NewmarkOutcome {
   slope::NewmarkResult as_given, reversed;
+  std::vector<double> as_given_history, reversed_history;  // m, the displacement at each sample (figures)
   double peak_acceleration = 0.0;  // g, the largest |a| times the scale
 };
 

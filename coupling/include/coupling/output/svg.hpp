@@ -64,4 +64,8 @@ class SvgCanvas {
   std::vector<std::tuple<std::string, std::string, std::string>> legend_;
 };
 
+// A plot of time [s] from 0 to t_end against a quantity from lo to hi (5 % margin), about 700 x 360 pixels, titled
+// and with its axes labelled (the y label names the quantity and its unit).
+SvgCanvas time_canvas(double t_end, double lo, double hi, const std::string& title, const std::string& y_label);
+
 }  // namespace coupling
