@@ -1,6 +1,7 @@
 // report.html (coupling/output/report_html.hpp): one printable page per run.
 #include "coupling/output/report_html.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -35,6 +36,7 @@ th { background: #eee; } td.l, th.l { text-align: left; }
 .low { font-weight: bold; background: #fde0dd; }
 .cols { display: flex; gap: 4mm; align-items: flex-start; } .cols > div { flex: 1 1 auto; }
 figure { margin: 1mm 0; text-align: center; } figure svg { width: 100%; height: auto; max-height: 70mm; }
+.pair > div { flex: 1 1 0; } .pair figure svg { max-height: 42mm; }
 figcaption { font-size: 7.5pt; color: #555; }
 ul { margin: 0.5mm 0; padding-left: 5mm; } .warn li { color: #8a4b00; }
 </style>
@@ -321,6 +323,16 @@ std::string fs_table(const RunResults& results) {
     else
       out << "<p>Critical seismic coefficient (" << esc(method) << "): none &ndash; " << esc(k->why) << ".</p>\n";
   }
+  if (const auto& n = lem->newmark) {
+    const AccelerationRecordInput& record = *lem->analysis.acceleration_record;
+    const bool given = n->as_given.displacement >= n->reversed.displacement;
+    out << "<p>Newmark's rigid-block displacement at k<sub>c</sub> under " << esc(record.file) << " (peak "
+        << fixed(n->peak_acceleration, 3) << " g): <b>" << fixed(std::max(n->as_given.displacement,
+                                                                            n->reversed.displacement), 3)
+        << " m</b> with the record " << (given ? "as given" : "reversed") << " ("
+        << fixed(std::min(n->as_given.displacement, n->reversed.displacement), 3) << " m the other way; figures "
+        << "newmark_record.svg, newmark_displacement.svg).</p>\n";
+  }
   return out.str();
 }
 
@@ -338,12 +350,20 @@ std::string figures(const std::vector<std::string>& list, const std::filesystem:
   if (list.empty()) return "";
   std::ostringstream out;
   out << "<h2>Figures</h2>\n";
+  // Newmark's two figures side by side, smaller, so that the page still prints on one sheet
+  bool pair_open = false;
   for (const std::string& file : list) {
     if (file.size() < 4 || file.substr(file.size() - 4) != ".svg") continue;
+    const bool paired = file.starts_with("figures/newmark_");
+    if (paired && !pair_open) out << "<div class=\"cols pair\">";
+    if (!paired && pair_open) out << "</div>\n";
+    pair_open = paired;
     const std::string svg = read_svg(dir / file);
-    out << "<figure>" << (svg.empty() ? "<p>(" + esc(file) + " could not be read)</p>" : svg) << "<figcaption>"
-        << esc(file) << "</figcaption></figure>\n";
+    out << (paired ? "<div>" : "") << "<figure>"
+        << (svg.empty() ? "<p>(" + esc(file) + " could not be read)</p>" : svg) << "<figcaption>" << esc(file)
+        << "</figcaption></figure>" << (paired ? "</div>" : "") << "\n";
   }
+  if (pair_open) out << "</div>\n";
   return out.str();
 }
 
