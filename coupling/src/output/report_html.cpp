@@ -36,7 +36,6 @@ th { background: #eee; } td.l, th.l { text-align: left; }
 .low { font-weight: bold; background: #fde0dd; }
 .cols { display: flex; gap: 4mm; align-items: flex-start; } .cols > div { flex: 1 1 auto; }
 figure { margin: 1mm 0; text-align: center; } figure svg { width: 100%; height: auto; max-height: 70mm; }
-.pair > div { flex: 1 1 0; } .pair figure svg { max-height: 42mm; }
 figcaption { font-size: 7.5pt; color: #555; }
 ul { margin: 0.5mm 0; padding-left: 5mm; } .warn li { color: #8a4b00; }
 </style>
@@ -355,7 +354,9 @@ std::string figures(const std::vector<std::string>& list, const std::filesystem:
   for (const std::string& file : list) {
     if (file.size() < 4 || file.substr(file.size() - 4) != ".svg") continue;
     const bool paired = file.starts_with("figures/newmark_");
-    if (paired && !pair_open) out << "<div class=\"cols pair\">";
+    if (paired && !pair_open)  // (its style here: the pages without the pair stay as they were)
+      out << "<style>.pair > div { flex: 1 1 0; } .pair figure svg { max-height: 42mm; }</style>\n"
+             "<div class=\"cols pair\">";
     if (!paired && pair_open) out << "</div>\n";
     pair_open = paired;
     const std::string svg = read_svg(dir / file);
