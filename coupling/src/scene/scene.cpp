@@ -440,6 +440,26 @@ std::vector<std::string> lem_method_keys(const Scene& scene) {
   return keys;
 }
 
+namespace {
+
+// "lem (7 methods, 2 given slip surfaces, k_c and Newmark's displacement under pulse.csv (...))" for summarize.
+std::string lem_summary(const LemAnalysis& lem) {
+  const std::size_t n = lem.methods.size();
+  const std::size_t given = lem.surfaces.size();
+  std::string record;
+  if (const auto& r = lem.acceleration_record)
+    record = ", k_c and Newmark's displacement under " + r->file + " (" +
+             std::to_string(r->record.acceleration.size()) + " samples every " + format_number(r->record.time_step) +
+             " s)";
+  else if (lem.critical_coefficient_method)
+    record = ", k_c";
+  return "lem (" + std::to_string(n) + " method" + (n == 1 ? "" : "s") +
+         (given > 0 ? ", " + std::to_string(given) + " given slip surface" + (given == 1 ? "" : "s") : std::string()) +
+         record + ")";
+}
+
+}  // namespace
+
 std::string summarize(const Scene& scene) {
   std::ostringstream out;
   out << '"' << scene.name << "\": ";
@@ -498,21 +518,7 @@ std::string summarize(const Scene& scene) {
     out << *scene.body_count << " particle bod" << (*scene.body_count == 1 ? "y" : "ies");
   }
   std::vector<std::string> analyses;
-  if (scene.analyses.lem) {
-    const std::size_t n = scene.analyses.lem->methods.size();
-    const std::size_t given = scene.analyses.lem->surfaces.size();
-    std::string record;
-    if (const auto& r = scene.analyses.lem->acceleration_record)
-      record = ", k_c and Newmark's displacement under " + r->file + " (" +
-               std::to_string(r->record.acceleration.size()) + " samples every " +
-               format_number(r->record.time_step) + " s)";
-    else if (scene.analyses.lem->critical_coefficient_method)
-      record = ", k_c";
-    analyses.push_back("lem (" + std::to_string(n) + " method" + (n == 1 ? "" : "s") +
-                       (given > 0 ? ", " + std::to_string(given) + " given slip surface" + (given == 1 ? "" : "s")
-                                  : std::string()) +
-                       record + ")");
-  }
+  if (scene.analyses.lem) analyses.push_back(lem_summary(*scene.analyses.lem));
   if (scene.analyses.sph) analyses.emplace_back("sph");
   if (scene.analyses.compare) analyses.emplace_back("compare");
   if (scene.analyses.srm) analyses.emplace_back("srm");
