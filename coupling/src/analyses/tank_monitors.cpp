@@ -10,20 +10,20 @@
 namespace coupling {
 
 namespace {
-constexpr std::uint8_t kMoving = 0;  // kind 0: the physics' moving material (fluid, sediment)
+constexpr std::uint8_t kTankMoving = 0;  // kind 0: the physics' moving material (fluid, sediment)
 }
 
 double surface_at(const sph::ParticleSet& p, double x, double dx, double floor) {
   double surface = floor;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == kMoving && std::abs(p.x[i] - x) < dx) surface = std::max(surface, p.y[i] + 0.5 * dx);
+    if (p.kind[i] == kTankMoving && std::abs(p.x[i] - x) < dx) surface = std::max(surface, p.y[i] + 0.5 * dx);
   return surface;
 }
 
 double front_of(const sph::ParticleSet& p, double dx) {
   double front = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == kMoving) front = std::max(front, p.x[i] + 0.5 * dx);
+    if (p.kind[i] == kTankMoving) front = std::max(front, p.x[i] + 0.5 * dx);
   return front;
 }
 
@@ -37,7 +37,7 @@ double farthest_in_contact(std::vector<double> xs, double gap) {
 double contact_front(const sph::ParticleSet& p, double dx) {
   std::vector<double> xs;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == kMoving) xs.push_back(p.x[i]);
+    if (p.kind[i] == kTankMoving) xs.push_back(p.x[i]);
   if (xs.empty()) return -std::numeric_limits<double>::infinity();
   return farthest_in_contact(std::move(xs), 1.5 * dx) + 0.5 * dx;
 }
