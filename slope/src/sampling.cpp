@@ -60,7 +60,9 @@ double from_score(const RandomVariable& v, double z) {
   return std::exp(lognormal_mu(v) + lognormal_sigma(v) * z);
 }
 
-std::string variable_fault(const RandomVariable& v) {
+}  // namespace
+
+std::string variable_error(const RandomVariable& v) {
   const bool normal_family = v.distribution == Distribution::normal || v.distribution == Distribution::lognormal;
   if (normal_family) {
     if (!(v.std_dev > 0.0) || !std::isfinite(v.std_dev)) return "its standard deviation must be > 0";
@@ -77,6 +79,8 @@ std::string variable_fault(const RandomVariable& v) {
   if (!(*v.min <= v.mean && v.mean <= *v.max)) return "its deterministic value must lie in [min, max]";
   return {};
 }
+
+namespace {
 
 // Latin hypercube: for each variable the stratum of each sample, a permutation of 0..N-1 (Fisher-Yates, from
 // stream 1 of the seed).
@@ -154,7 +158,7 @@ std::string plan_error(const SamplingPlan& plan) {
   if (plan.variables.empty()) return "no random variables";
   if (plan.samples < 1) return "the number of samples must be >= 1";
   for (std::size_t i = 0; i < plan.variables.size(); ++i) {
-    const std::string fault = variable_fault(plan.variables[i]);
+    const std::string fault = variable_error(plan.variables[i]);
     if (!fault.empty()) return "variable " + std::to_string(i) + ": " + fault;
   }
   std::vector<int> uses(plan.variables.size(), 0);

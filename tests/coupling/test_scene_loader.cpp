@@ -529,6 +529,10 @@ TEST_CASE("scene: each setting's names come from one table that the docs list", 
   check_names("ignore_loads", coupling::section_load_names);
   check_names("configuration", coupling::band_configuration_names);
   check_names("constitutive_model", coupling::constitutive_model_names);
+  check_names("mode", coupling::probabilistic_mode_names, "### `analyses.lem.probabilistic`");
+  check_names("sampling", coupling::sampling_names, "### `analyses.lem.probabilistic`");
+  check_names("distribution", coupling::distribution_names, "### `analyses.lem.probabilistic`");
+  check_names("parameter", coupling::random_parameter_names, "### `analyses.lem.probabilistic`");
   check_names("regularisation", sph::mps::regularisation_names);
   check_names("interaction_viscosity", sph::mps::interaction_viscosity_names);
   check_names("effective_pressure", sph::mps::effective_pressure_names);

@@ -67,7 +67,7 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back("lem: the automatic search found no valid slip circle: " + search.error);
   }
-  LemStageResult result{analysis, {}, analyse_given_surfaces(section, analysis), std::nullopt, std::nullopt, std::nullopt};
+  LemStageResult result{analysis, {}, analyse_given_surfaces(section, analysis), std::nullopt, std::nullopt, std::nullopt, std::nullopt};
   if (analysis.noncircular && search.error.empty()) {
     const StageClock::time_point noncircular_start = StageClock::now();
     result.noncircular = slope::search_noncircular(section, search, analysis.search, *analysis.noncircular);
@@ -92,6 +92,10 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
     }
   }
   result.search = std::move(search);
+  if (analysis.probabilistic && result.search.error.empty()) {
+    result.probabilistic = run_probabilistic(section, result, *analysis.probabilistic, context.options.log);
+    results.seconds["lem_probabilistic"] = result.probabilistic->seconds;
+  }
   record.result = std::move(result);
   return outcome;
 }

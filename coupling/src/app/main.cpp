@@ -23,6 +23,7 @@
 
 #include "coupling/app/batch.hpp"
 #include "coupling/output/report.hpp"
+#include "coupling/output/probabilistic_output.hpp"
 #include "coupling/scene/scene.hpp"
 #include "coupling/analyses/sph_stage.hpp"
 #include "coupling/studies/study.hpp"
@@ -105,6 +106,8 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
       std::cout << coupling::newmark_line(*lem->analysis.acceleration_record, *lem->newmark,
                                           *lem->critical_coefficient->coefficient);
     if (!lem->surfaces.empty()) std::cout << coupling::given_surfaces_table(lem->surfaces);
+    if (lem->probabilistic)
+      std::cout << coupling::probabilistic_line(*lem->analysis.probabilistic, *lem->probabilistic) << "\n";
   }
   if (result.results.srm) print_srm(*result.results.srm);
   for (const std::string& message : result.errors) std::cerr << "error: " << message << "\n";

@@ -88,6 +88,8 @@ std::string section_figure_svg(const SectionFigureData& data) {
     canvas.polyline(data.final_ground, "#000", 2.0, "2,2");
     legend.emplace_back("#000", "2,2", "final ground surface");
   }
+  for (const Polyline& line : data.sample_surfaces) canvas.polyline(line, "#9a9a9a", 0.7);
+  if (!data.sample_surfaces.empty()) legend.emplace_back("#9a9a9a", "", data.sample_surfaces_label);
   for (std::size_t k = 0; k < data.lem_surfaces.size(); ++k) {
     const std::string colour = kMethodColours[k % std::size(kMethodColours)];
     canvas.polyline(data.lem_surfaces[k].points, colour, 2.0);

@@ -1,5 +1,6 @@
 // report.html (coupling/output/report_html.hpp): one printable page per run.
 #include "coupling/output/report_html.hpp"
+#include "coupling/output/probabilistic_output.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -286,6 +287,31 @@ std::vector<FsColumn> fs_columns(const LemStageResult& lem, const ComparisonResu
   return columns;
 }
 
+// The probabilistic analysis's result in a sentence (none when it was not asked for).
+std::string probabilistic_paragraph(const LemStageResult& lem) {
+  if (!lem.probabilistic || !lem.analysis.probabilistic) return "";
+  const ProbabilisticAnalysis& a = *lem.analysis.probabilistic;
+  const ProbabilisticOutcome& o = *lem.probabilistic;
+  std::ostringstream out;
+  const std::string method(slope::method_key(a.method));
+  const std::string where = a.mode == ProbabilisticMode::overall        ? "each sample's own critical circle"
+                            : a.mode == ProbabilisticMode::given_surface ? "the given surface \"" +
+                                                                               lem.surfaces[*a.surface].name + "\""
+                                                                         : "the critical circle";
+  out << "<p>Probabilistic analysis (" << esc(method) << ", " << a.plan.samples << " "
+      << (a.plan.sampling == slope::Sampling::monte_carlo ? "Monte Carlo" : "Latin hypercube") << " samples of "
+      << a.variables.size() << " variable" << (a.variables.size() == 1 ? "" : "s") << " on " << esc(where) << "): ";
+  if (!o.error.empty()) return out.str() + "not run &ndash; " + esc(o.error) + ".</p>\n";
+  const slope::ProbabilisticStatistics& s = o.statistics;
+  out << "mean FS <b>" << fixed(s.mean) << "</b> (deterministic " << fixed(o.deterministic) << "), standard deviation "
+      << fixed(s.std_dev) << ", probability of failure <b>" << fixed(100.0 * s.probability_of_failure, 2)
+      << " %</b> (" << s.below_one << " of " << s.samples << " below 1), reliability index " << fixed(s.beta_normal, 2)
+      << " (lognormal " << fixed(s.beta_lognormal, 2) << ")";
+  if (s.failed_samples > 0) out << "; " << s.failed_samples << " samples without a factor of safety";
+  out << " (" << probabilistic_samples_file << "; figures probabilistic_histogram.svg, probabilistic_cdf.svg).</p>\n";
+  return out.str();
+}
+
 std::string fs_table(const RunResults& results) {
   const LemStageResult* lem = results.lem_result();
   if (!lem || lem->analysis.methods.empty()) return "";
@@ -332,6 +358,7 @@ std::string fs_table(const RunResults& results) {
         << fixed(std::min(n->as_given.displacement, n->reversed.displacement), 3) << " m the other way; figures "
         << "newmark_record.svg, newmark_displacement.svg).</p>\n";
   }
+  out << probabilistic_paragraph(*lem);
   return out.str();
 }
 
@@ -349,16 +376,24 @@ std::string figures(const std::vector<std::string>& list, const std::filesystem:
   if (list.empty()) return "";
   std::ostringstream out;
   out << "<h2>Figures</h2>\n";
-  // Newmark's two figures side by side, smaller, so that the page still prints on one sheet
-  bool pair_open = false;
+  // Newmark's two figures side by side, smaller, and the probabilistic analysis's two, so that the page still prints
+  // on one sheet
+  bool pair_open = false, styled = false;
+  std::string open_group;
   for (const std::string& file : list) {
     if (file.size() < 4 || file.substr(file.size() - 4) != ".svg") continue;
-    const bool paired = file.starts_with("figures/newmark_");
-    if (paired && !pair_open)  // (its style here: the pages without the pair stay as they were)
-      out << "<style>.pair > div { flex: 1 1 0; } .pair figure svg { max-height: 42mm; }</style>\n"
-             "<div class=\"cols pair\">";
-    if (!paired && pair_open) out << "</div>\n";
+    const std::string group = file.starts_with("figures/newmark_")         ? "newmark"
+                              : file.starts_with("figures/probabilistic_") ? "probabilistic"
+                                                                            : "";
+    const bool paired = !group.empty();
+    if (pair_open && group != open_group) out << "</div>\n";
+    if (paired && group != open_group) {  // (its style here: the pages without a pair stay as they were)
+      if (!styled) out << "<style>.pair > div { flex: 1 1 0; } .pair figure svg { max-height: 42mm; }</style>\n";
+      styled = true;
+      out << "<div class=\"cols pair\">";
+    }
     pair_open = paired;
+    open_group = group;
     const std::string svg = read_svg(dir / file);
     out << (paired ? "<div>" : "") << "<figure>"
         << (svg.empty() ? "<p>(" + esc(file) + " could not be read)</p>" : svg) << "<figcaption>" << esc(file)

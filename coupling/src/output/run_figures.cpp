@@ -1,5 +1,6 @@
 // The figures of a run: figures/section.svg, and figures/fs_map.svg after a limit-equilibrium search (with
-// figures/newmark_record.svg and newmark_displacement.svg after Newmark's displacement).
+// figures/newmark_record.svg and newmark_displacement.svg after Newmark's displacement, probabilistic_histogram.svg and
+// probabilistic_cdf.svg after a probabilistic analysis).
 #include "coupling/output/run_figures.hpp"
 
 #include <cstdio>
@@ -7,6 +8,7 @@
 #include "coupling/compare/comparison.hpp"
 #include "coupling/output/figures.hpp"
 #include "coupling/output/newmark_figures.hpp"
+#include "coupling/output/probabilistic_output.hpp"
 #include "sph/engine/atomic_file.hpp"
 
 namespace coupling {
@@ -86,6 +88,12 @@ std::optional<std::vector<std::string>> write_figures(const Scene& scene, const 
           "circle fitted to the SPH surface",
           circle_arc(failure->fitted_circle->circle, failure->band.points.front().x, failure->band.points.back().x)};
   }
+  if (lem && section && lem->probabilistic && lem->analysis.probabilistic &&
+      lem->analysis.probabilistic->mode == ProbabilisticMode::overall) {
+    data.sample_surfaces = sample_surface_lines(*section, *lem->probabilistic, lem->analysis.search.slicing);
+    data.sample_surfaces_label = "critical circles of the first " + std::to_string(data.sample_surfaces.size()) +
+                                 " samples (" + std::string(slope::method_key(lem->analysis.probabilistic->method)) + ")";
+  }
   sph::write_file_atomically(figures / "section.svg", section_figure_svg(data));
   written.push_back("figures/section.svg");
 
@@ -101,6 +109,13 @@ std::optional<std::vector<std::string>> write_figures(const Scene& scene, const 
                                newmark_displacement_svg(record, *lem->newmark, scene.name));
     written.push_back("figures/newmark_record.svg");
     written.push_back("figures/newmark_displacement.svg");
+  }
+  if (lem && lem->probabilistic && lem->probabilistic->error.empty()) {
+    sph::write_file_atomically(figures / "probabilistic_histogram.svg",
+                               probabilistic_histogram_svg(*lem->probabilistic, scene.name));
+    sph::write_file_atomically(figures / "probabilistic_cdf.svg", probabilistic_cdf_svg(*lem->probabilistic, scene.name));
+    written.push_back("figures/probabilistic_histogram.svg");
+    written.push_back("figures/probabilistic_cdf.svg");
   }
   return written;
 }

@@ -1,6 +1,7 @@
 // A run of a scene and its run folder (coupling/output/run_files.hpp): the analyses into typed results, then the
 // files, written from those results alone.
 #include "coupling/output/run_files.hpp"
+#include "coupling/output/probabilistic_output.hpp"
 
 #include <cmath>
 #include <exception>
@@ -95,6 +96,19 @@ void write_tank_files(const Scene& scene, const std::filesystem::path& dir, RunR
   }
 }
 
+// probabilistic_samples.csv after a probabilistic analysis; a failure to write it fails the run.
+void write_lem_files(const std::filesystem::path& dir, RunResults& results) {
+  const LemStageResult* lem = results.lem_result();
+  if (lem == nullptr || !lem->probabilistic || !lem->probabilistic->error.empty()) return;
+  try {
+    std::filesystem::create_directories(dir);
+    sph::write_file_atomically(dir / probabilistic_samples_file,
+                               probabilistic_samples_csv(*lem->analysis.probabilistic, *lem->probabilistic));
+  } catch (const std::exception& error) {
+    results.failures.push_back(std::string("lem: cannot write ") + probabilistic_samples_file + ": " + error.what());
+  }
+}
+
 // The "lem" block: the search, the given surfaces and the non-circular search, or the error.
 json lem_block(const Scene& scene, const StageRecord<LemStageResult>& record) {
   if (!record.result) return {{"error", record.error}};
@@ -107,6 +121,8 @@ json lem_block(const Scene& scene, const StageRecord<LemStageResult>& record) {
         section, *lem.analysis.critical_coefficient_method, *lem.critical_coefficient,
         lem.analysis.acceleration_record ? &*lem.analysis.acceleration_record : nullptr,
         lem.newmark ? &*lem.newmark : nullptr);
+  if (lem.probabilistic)
+    block["probabilistic"] = probabilistic_report(*lem.analysis.probabilistic, *lem.probabilistic, lem.analysis.surfaces);
   return block;
 }
 
@@ -157,6 +173,7 @@ WorkflowResult run_and_write(const Scene& scene, const WorkflowOptions& given, S
   std::optional<std::vector<std::string>> figures;
   if (options.output_dir) {
     write_tank_files(scene, *options.output_dir, results);
+    write_lem_files(*options.output_dir, results);
     try {
       figures = write_figures(scene, results, *options.output_dir);
     } catch (const std::exception& error) {

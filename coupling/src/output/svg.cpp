@@ -222,16 +222,22 @@ std::string SvgCanvas::str() const {
 }
 
 SvgCanvas time_canvas(double t_end, double lo, double hi, const std::string& title, const std::string& y_label) {
-  constexpr double width = 700.0, height = 360.0;  // [px]
   if (!(t_end > 0)) t_end = 1.0;
+  return plot_canvas(0.0, t_end, lo, hi, title, "time t (s)", y_label);
+}
+
+SvgCanvas plot_canvas(double x_lo, double x_hi, double lo, double hi, const std::string& title,
+                      const std::string& x_label, const std::string& y_label) {
+  constexpr double width = 700.0, height = 360.0;  // [px]
+  if (!(x_hi > x_lo)) x_hi = x_lo + 1.0;
   if (!(hi > lo)) hi = lo + 1.0;
   const double pad = 0.05 * (hi - lo);
   lo -= pad;
   hi += pad;
-  const double exaggeration = height / (width / t_end * (hi - lo));
-  SvgCanvas canvas(0.0, t_end, lo, hi, width, exaggeration);
+  const double exaggeration = height / (width / (x_hi - x_lo) * (hi - lo));
+  SvgCanvas canvas(x_lo, x_hi, lo, hi, width, exaggeration);
   canvas.title(title);
-  canvas.axes("time t (s)", y_label);
+  canvas.axes(x_label, y_label);
   return canvas;
 }
 

@@ -150,6 +150,23 @@ void read_critical_coefficient(JsonReader& lem, LemAnalysis& result, const std::
   block->finish();
 }
 
+// analyses.lem.probabilistic: the method (one of those analysed; default Bishop when analysed, else the first), the
+// rest in lem_probabilistic.cpp.
+void read_probabilistic_block(JsonReader& lem, LemAnalysis& result, const slope::Section* section,
+                              Diagnostics& diagnostics) {
+  auto block = lem.object("probabilistic", Need::optional,
+                          "an object: {\"variables\": [{\"parameter\": \"cohesion_kPa\", \"material\": \"clay\", "
+                          "\"std_dev\": 3.6}]}");
+  if (!block) return;
+  std::optional<slope::Method> method = default_method(result);
+  read_analysed_method(*block, result, method, diagnostics);
+  if (!method) {
+    block->finish();
+    return;
+  }
+  result.probabilistic = read_probabilistic(*block, result, section, *method);
+}
+
 void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics& diagnostics) {
   auto lem = analyses.object("lem", Need::optional, "an object (may be empty: {})");
   if (!lem) return;
@@ -200,6 +217,7 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
   read_critical_coefficient(*lem, result, scene.file, diagnostics);
   read_given_surfaces(*lem, scene.section ? &scene.section->section : nullptr, result.search.slicing,
                       result.surfaces);
+  read_probabilistic_block(*lem, result, scene.section ? &scene.section->section : nullptr, diagnostics);
   lem->finish();
 
   if (!scene.section) {

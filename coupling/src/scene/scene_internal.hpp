@@ -49,6 +49,11 @@ std::vector<slope::Reinforcement> read_reinforcement(const nlohmann::json& array
 std::optional<AccelerationRecordInput> read_acceleration_record(JsonReader& record,
                                                                  const std::filesystem::path& scene_file);
 
+// analyses.lem.probabilistic (lem_probabilistic.cpp), with its method resolved (one of those analysed) and after
+// analyses.lem.surfaces (a given surface is named); reports its own unknown keys. nullopt when anything is wrong.
+std::optional<ProbabilisticAnalysis> read_probabilistic(JsonReader& block, const LemAnalysis& lem,
+                                                        const slope::Section* section, slope::Method method);
+
 // Reads and validates "section"; nullopt when anything in it is invalid (the faults are in `diagnostics`).
 std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagnostics);
 

@@ -69,6 +69,10 @@ struct SamplingPlan {
   std::uint64_t seed = 1;
 };
 
+// Empty when the variable can be sampled; otherwise what is wrong with it (a standard deviation that is not > 0, a
+// truncation that excludes the mean, a uniform variable without min and max, ...).
+std::string variable_error(const RandomVariable& variable);
+
 // Empty when the plan can be sampled; otherwise what is wrong (a negative standard deviation, a truncation that
 // excludes the mean, a correlation outside [-1, 1], a variable in two correlations, ...), naming the variable by its
 // index.

@@ -2,6 +2,7 @@
 // What one run found, stage by stage, as typed results. The stages (coupling/analyses) fill it; coupling/output alone
 // turns it into report.json, report.html, monitors.csv, profiles and figures; the command line prints its tables
 // from it. Nothing here is JSON.
+#include <iosfwd>
 #include <map>
 #include <optional>
 #include <string>
@@ -15,6 +16,7 @@
 #include "coupling/compare/failure_surface.hpp"
 #include "coupling/scene/scene.hpp"
 #include "slope/newmark.hpp"
+#include "slope/probabilistic.hpp"
 #include "slope/search.hpp"
 
 namespace coupling {
@@ -35,6 +37,18 @@ struct NewmarkOutcome {
   double peak_acceleration = 0.0;  // g, the largest |a| times the scale
 };
 
+// analyses.lem.probabilistic's result (lem_probabilistic_stage.cpp): the surface, every sample's values and factor of
+// safety, and their statistics.
+struct ProbabilisticOutcome {
+  slope::ProbabilisticSurface surface;
+  std::optional<double> deterministic;  // FS at the scene's values (on the surface; overall: the search's least)
+  std::vector<double> values;           // SI, sample by sample: values[s * V + v] in the order of the variables
+  std::vector<slope::SampleOutcome> samples;
+  slope::ProbabilisticStatistics statistics;
+  double seconds = 0.0;
+  std::string error;  // why it did not run (no critical surface for its method); the rest is then empty
+};
+
 struct LemStageResult {
   LemAnalysis analysis;
   slope::SearchResult search;
@@ -42,6 +56,7 @@ struct LemStageResult {
   std::optional<slope::NonCircularResult> noncircular;
   std::optional<slope::CriticalCoefficient> critical_coefficient;  // analyses.lem.critical_seismic_coefficient
   std::optional<NewmarkOutcome> newmark;  // with its acceleration_record, when k_c was found
+  std::optional<ProbabilisticOutcome> probabilistic;  // analyses.lem.probabilistic
 };
 
 // One stage of a run: its typed result, or the error that stopped it before it had one.
@@ -74,5 +89,10 @@ struct RunResults {
 
 // Slices each surface of analysis.surfaces and solves it with every method of the analysis.
 std::vector<GivenSurfaceResult> analyse_given_surfaces(const slope::Section& section, const LemAnalysis& analysis);
+
+// analyses.lem.probabilistic on the search's and the given surfaces' result `lem` (lem_probabilistic_stage.cpp);
+// progress on `log` (may be null) every 2 s.
+ProbabilisticOutcome run_probabilistic(const slope::Section& section, const LemStageResult& lem,
+                                       const ProbabilisticAnalysis& analysis, std::ostream* log);
 
 }  // namespace coupling

@@ -22,6 +22,9 @@ struct SectionFigureData {
   const ParticleSnapshot* particles = nullptr; // optional: current positions coloured by plastic strain
   Polyline final_ground;                       // optional: deformed ground profile
   std::vector<NamedSurface> lem_surfaces;      // critical LEM surfaces (one per method)
+  // optional: the critical circles of some samples of a probabilistic analysis (thin, grey, under the others)
+  std::vector<Polyline> sample_surfaces;
+  std::string sample_surfaces_label;
   std::optional<NamedSurface> sph_surface;     // optional: the SPH failure surface
   std::optional<NamedSurface> sph_fitted_circle;
 };

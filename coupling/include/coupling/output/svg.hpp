@@ -67,5 +67,8 @@ class SvgCanvas {
 // A plot of time [s] from 0 to t_end against a quantity from lo to hi (5 % margin), about 700 x 360 pixels, titled
 // and with its axes labelled (the y label names the quantity and its unit).
 SvgCanvas time_canvas(double t_end, double lo, double hi, const std::string& title, const std::string& y_label);
+// The same for any quantity x from x_lo to x_hi (no margin) along the bottom.
+SvgCanvas plot_canvas(double x_lo, double x_hi, double lo, double hi, const std::string& title,
+                      const std::string& x_label, const std::string& y_label);
 
 }  // namespace coupling

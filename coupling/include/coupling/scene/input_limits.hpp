@@ -63,6 +63,13 @@ inline constexpr SizeLimit slip_surfaces{
 inline constexpr SizeLimit slip_surface_points{
     10'000, "points", "every vertex of a slip surface is a slice boundary: a surface of 10 000 slices is far finer "
                       "than the method of slices needs"};
+// analyses.lem.probabilistic.variables: every sample draws each variable.
+inline constexpr SizeLimit random_variables{
+    50, "variables", "every sample draws each variable, and a Latin hypercube keeps a permutation of the samples for "
+                     "each"};
+// analyses.lem.probabilistic.correlations: each joins two variables.
+inline constexpr SizeLimit random_correlations{
+    50, "correlations", "each correlation joins two of the variables, of which there are 50 at most"};
 // bodies: each body is filled with particles separately.
 inline constexpr SizeLimit bodies{1000, "bodies", "each body is filled with particles and checked separately"};
 // bodies[i].polygon_m: filling tests lattice points against the polygon's edges.

@@ -21,6 +21,7 @@
 #include "coupling/scene/analysis_options.hpp"
 #include "coupling/scene/isph_analysis.hpp"
 #include "coupling/scene/mps_analysis.hpp"
+#include "coupling/scene/probabilistic_analysis.hpp"
 #include "coupling/scene/soil_material.hpp"
 #include "coupling/scene/sph_analysis.hpp"
 #include "slope/methods.hpp"
@@ -70,6 +71,7 @@ struct LemAnalysis {
   // analyses.lem.critical_seismic_coefficient: the method whose search finds k_c (absent: k_c is not sought)
   std::optional<slope::Method> critical_coefficient_method;
   std::optional<AccelerationRecordInput> acceleration_record;  // (only with critical_coefficient_method)
+  std::optional<ProbabilisticAnalysis> probabilistic;          // analyses.lem.probabilistic (absent: not run)
 };
 
 // The analyses the scene asks for, each read once into its typed settings (defaults applied).
