@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "coupling/analyses/pipeline.hpp"
 #include "coupling/output/probabilistic_output.hpp"
@@ -129,6 +131,57 @@ TEST_CASE("probabilistic: the samples file, the figures and the page", "[scene][
   CHECK(read_text(folder.path / "figures/probabilistic_cdf.svg").find("FS = 1") != std::string::npos);
   const std::string page = read_text(folder.path / "report.html");
   CHECK(page.find("Probabilistic analysis (bishop, 100 Monte Carlo samples of 4 variables") != std::string::npos);
+}
+
+coupling::WorkflowResult run_part(const json& scene, const fs::path& dir, std::optional<coupling::SamplePart> part,
+                                  std::vector<fs::path> merge = {}) {
+  coupling::WorkflowOptions options;
+  options.mode = coupling::Mode::lem;
+  options.output_dir = dir;
+  options.sample_part = part;
+  options.merge_samples = std::move(merge);
+  return coupling::run_scene(coupling::parse_scene(scene.dump()), options);
+}
+
+TEST_CASE("probabilistic: samples split over runs and merged give exactly the result of one run",
+          "[scene][probabilistic]") {
+  // docs/pipelines.md: each array job runs its part (--sample-part K/M), a last run merges them (--merge-samples).
+  TemporaryFolder folder("probabilistic-parts");
+  json scene = li_lumb();
+  probabilistic(scene)["samples"] = 300;
+  probabilistic(scene)["sampling"] = "latin_hypercube";
+  probabilistic(scene)["correlations"] = {{{"material", "soil"}, {"cohesion_friction", -0.3}}};
+  const coupling::WorkflowResult whole = run_part(scene, folder.path / "whole", std::nullopt);
+  REQUIRE(whole.status == coupling::ExitStatus::ok);
+  std::vector<fs::path> parts;
+  for (long k = 0; k < 3; ++k) {
+    parts.push_back(folder.path / ("part" + std::to_string(k)));
+    const coupling::WorkflowResult part = run_part(scene, parts.back(), coupling::SamplePart{k, 3});
+    REQUIRE(part.status == coupling::ExitStatus::ok);
+    CHECK(part.report["lem"]["probabilistic"]["part"]["samples"] == 100);
+  }
+  std::swap(parts[0], parts[2]);  // in any order
+  const coupling::WorkflowResult merged = run_part(scene, folder.path / "merged", std::nullopt, parts);
+  REQUIRE(merged.status == coupling::ExitStatus::ok);
+  json a = whole.report["lem"]["probabilistic"], b = merged.report["lem"]["probabilistic"];
+  CHECK(b["merged_from"].size() == 3);
+  for (json* r : {&a, &b}) {
+    r->erase("seconds");
+    r->erase("merged_from");
+  }
+  CHECK(a == b);
+  CHECK(read_text(folder.path / "whole/probabilistic_samples.csv") ==
+        read_text(folder.path / "merged/probabilistic_samples.csv"));
+  // a missing part, a part drawn with another seed: refused, nothing written
+  const coupling::WorkflowResult missing = run_part(scene, folder.path / "missing", std::nullopt, {parts[0], parts[1]});
+  CHECK(missing.status == coupling::ExitStatus::invalid_input);
+  REQUIRE(!missing.errors.empty());
+  CHECK_THAT(missing.errors[0], Catch::Contains("--merge-samples: the parts do not hold sample"));
+  CHECK_FALSE(fs::exists(folder.path / "missing"));
+  probabilistic(scene)["seed"] = 9;
+  const coupling::WorkflowResult other = run_part(scene, folder.path / "other", std::nullopt, parts);
+  REQUIRE(!other.errors.empty());
+  CHECK_THAT(other.errors[0], Catch::Contains("was not drawn by this scene"));
 }
 
 TEST_CASE("probabilistic: bad input is refused with its JSON path", "[scene][probabilistic]") {

@@ -1,6 +1,11 @@
 // analyses.lem.probabilistic, run after the limit-equilibrium search: the surface the samples are analysed on, the
 // samples, and their statistics (slope/probabilistic.hpp).
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <ostream>
+#include <stdexcept>
 
 #include "coupling/analyses/stage.hpp"
 
@@ -38,23 +43,117 @@ void choose_surface(const ProbabilisticAnalysis& a, const LemStageResult& lem, P
                                                           : slope::ProbabilisticSurface::Kind::fixed_circle;
 }
 
+// The text between commas of one line of a samples file.
+std::vector<std::string> fields_of(const std::string& line) {
+  std::vector<std::string> fields(1);
+  for (char c : line) {
+    if (c == ',') fields.emplace_back();
+    else if (c != '\r') fields.back() += c;
+  }
+  return fields;
+}
+
+std::optional<double> number_in(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+// One line of a part's samples file into out.samples; throws std::invalid_argument naming the file and the line.
+void read_sample_line(const std::string& line, const std::string& where, const ProbabilisticAnalysis& a,
+                      ProbabilisticOutcome& out, std::vector<char>& seen) {
+  const std::size_t nv = a.variables.size();
+  const bool overall = a.mode == ProbabilisticMode::overall;
+  const std::vector<std::string> f = fields_of(line);
+  if (f.size() != nv + (overall ? 5 : 2)) throw std::invalid_argument(where + ": not a line of this analysis's samples");
+  const auto index = number_in(f[0]);
+  const long s = index ? static_cast<long>(*index) : -1;
+  if (!index || *index != static_cast<double>(s) || s < 0 || s >= a.plan.samples)
+    throw std::invalid_argument(where + ": sample index \"" + f[0] + "\" is not one of 0 to " +
+                                std::to_string(a.plan.samples - 1));
+  if (seen[static_cast<std::size_t>(s)]) throw std::invalid_argument(where + ": sample " + f[0] + " is there twice");
+  seen[static_cast<std::size_t>(s)] = 1;
+  for (std::size_t v = 0; v < nv; ++v) {
+    const double drawn = out.values[static_cast<std::size_t>(s) * nv + v] / a.variables[v].scene_unit;
+    const auto given = number_in(f[1 + v]);
+    if (!given || std::fabs(*given - drawn) > 1e-8 * std::max(1.0, std::fabs(drawn)))
+      throw std::invalid_argument(where + ": sample " + f[0] + " was not drawn by this scene (" +
+                                  variable_label(a.variables[v]) + " " + f[1 + v] + ", here " + std::to_string(drawn) +
+                                  "): the parts must come from the same scene, seed and number of samples");
+  }
+  slope::SampleOutcome& r = out.samples[static_cast<std::size_t>(s)];
+  r.factor_of_safety = number_in(f[1 + nv]);
+  if (overall) {
+    const auto x = number_in(f[nv + 2]), y = number_in(f[nv + 3]), radius = number_in(f[nv + 4]);
+    if (x && y && radius) r.circle = slope::Circle{*x, *y, *radius};
+  }
+}
+
+// Every sample's result from the parts' files; throws std::invalid_argument when one is missing or wrong.
+void merge_parts(const ProbabilisticAnalysis& a, const std::vector<std::filesystem::path>& merge,
+                 ProbabilisticOutcome& out) {
+  out.samples.assign(static_cast<std::size_t>(a.plan.samples), {});
+  std::vector<char> seen(static_cast<std::size_t>(a.plan.samples), 0);
+  for (std::filesystem::path file : merge) {
+    if (std::filesystem::is_directory(file)) file /= "probabilistic_samples.csv";
+    std::ifstream in(file);
+    if (!in) throw std::invalid_argument("--merge-samples: cannot read " + file.string() + " (a part's probabilistic_samples.csv)");
+    std::string line;
+    long number = 0;
+    bool header = false;
+    while (std::getline(in, line)) {
+      ++number;
+      if (line.empty() || line[0] == '#') continue;
+      if (!header) {  // the column names
+        header = true;
+        continue;
+      }
+      read_sample_line(line, "--merge-samples: " + file.string() + " line " + std::to_string(number), a, out, seen);
+    }
+    out.merged_from.push_back(file.string());
+  }
+  const auto missing = std::find(seen.begin(), seen.end(), 0);
+  if (missing != seen.end())
+    throw std::invalid_argument("--merge-samples: the parts do not hold sample " + std::to_string(missing - seen.begin()) + " (of " +
+                                std::to_string(a.plan.samples) + "): merge every part");
+}
+
 }  // namespace
 
 ProbabilisticOutcome run_probabilistic(const slope::Section& section, const LemStageResult& lem,
-                                       const ProbabilisticAnalysis& a, std::ostream* log) {
+                                       const ProbabilisticAnalysis& a, std::ostream* log,
+                                       const std::optional<SamplePart>& part,
+                                       const std::vector<std::filesystem::path>& merge) {
   ProbabilisticOutcome out;
   const StageClock::time_point start = StageClock::now();
   choose_surface(a, lem, out);
   if (!out.error.empty()) return out;
-  out.values = slope::draw_samples(a.plan, 0, a.plan.samples);
-  StageClock::time_point last = start;
-  const auto progress = [&](long done) {
-    if (log == nullptr || seconds_since(last) < 2.0) return;
-    last = StageClock::now();
-    *log << "lem probabilistic: " << done << " / " << a.plan.samples << " samples (" << static_cast<long>(seconds_since(start))
-         << " s)" << std::endl;
-  };
-  out.samples = slope::evaluate_samples(section, a.plan, out.surface, a.method, lem.analysis.search, out.values, progress);
+  long first = 0, count = a.plan.samples;
+  if (part) {
+    if (part->parts > a.plan.samples)
+      throw std::invalid_argument("--sample-part: " + std::to_string(part->parts) + " parts of " +
+                                  std::to_string(a.plan.samples) + " samples (at most one part a sample)");
+    first = part->index * a.plan.samples / part->parts;
+    count = (part->index + 1) * a.plan.samples / part->parts - first;
+    out.part = part;
+  }
+  out.first_sample = first;
+  out.values = slope::draw_samples(a.plan, first, count);
+  if (!merge.empty()) {
+    merge_parts(a, merge, out);
+  } else {
+    StageClock::time_point last = start;
+    const auto progress = [&](long done) {
+      if (log == nullptr || seconds_since(last) < 2.0) return;
+      last = StageClock::now();
+      *log << "lem probabilistic: " << done << " / " << count << " samples ("
+           << static_cast<long>(seconds_since(start)) << " s)" << std::endl;
+    };
+    out.samples = slope::evaluate_samples(section, a.plan, out.surface, a.method, lem.analysis.search, out.values,
+                                          progress);
+  }
   out.statistics = slope::probabilistic_statistics(out.samples);
   out.seconds = seconds_since(start);
   return out;

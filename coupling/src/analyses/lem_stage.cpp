@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <stdexcept>
 
 namespace coupling {
 
@@ -93,7 +94,14 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
   }
   result.search = std::move(search);
   if (analysis.probabilistic && result.search.error.empty()) {
-    result.probabilistic = run_probabilistic(section, result, *analysis.probabilistic, context.options.log);
+    try {
+      result.probabilistic = run_probabilistic(section, result, *analysis.probabilistic, context.options.log,
+                                               context.options.sample_part, context.options.merge_samples);
+    } catch (const std::invalid_argument& error) {  // a part that is not this analysis's (--sample-part, --merge-samples)
+      outcome.status = ExitStatus::invalid_input;
+      outcome.errors.push_back(error.what());
+      return outcome;
+    }
     results.seconds["lem_probabilistic"] = result.probabilistic->seconds;
   }
   record.result = std::move(result);

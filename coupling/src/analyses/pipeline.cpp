@@ -71,6 +71,12 @@ WorkflowResult run_analyses(const Scene& scene, const WorkflowOptions& options) 
     }
     if (!context.lem) context.lem = default_lem_analysis();
   }
+  if ((options.sample_part || !options.merge_samples.empty()) && !(context.lem && context.lem->probabilistic)) {
+    out.status = ExitStatus::invalid_input;
+    out.errors.push_back(std::string(options.sample_part ? "--sample-part" : "--merge-samples") +
+                         ": the scene has no analyses.lem.probabilistic to split or merge");
+    return out;
+  }
   const std::vector<const Stage*> stages = requested_stages(scene, context);
   for (const Stage* stage : stages) out.results.analyses.emplace_back(stage->key);
   for (const Stage* stage : stages)

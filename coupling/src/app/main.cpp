@@ -16,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -239,6 +240,8 @@ struct CommandLine {
   std::string scene_file;
   std::string output_dir;
   bool resume = false;               // run --resume
+  std::string sample_part;           // lem, run --sample-part K/M
+  std::vector<std::string> merge_samples;  // lem, run --merge-samples PATH...
   std::vector<double> spacings;      // study --spacings
   bool study_resume = false;         // study --resume
   bool no_lem_search = false;        // study --no-lem-search
@@ -272,6 +275,24 @@ void add_scene_commands(CLI::App& app, CommandLine& cli) {
   cli.run->add_flag("--resume", cli.resume,
                     "Continue an interrupted SPH run from DIR/checkpoint.bin (same scene, same DIR); the result is "
                     "the same as an uninterrupted run");
+  for (CLI::App* command : {cli.lem, cli.run}) {
+    command->add_option("--sample-part", cli.sample_part,
+                        "Run only part K (from 0) of M of analyses.lem.probabilistic's samples, e.g. a scheduler's "
+                        "array index ($SLURM_ARRAY_TASK_ID/M); merge the parts with --merge-samples")
+        ->type_name("K/M");
+    command->add_option("--merge-samples", cli.merge_samples,
+                        "Analyse no sample: take every sample's result from the parts' run folders (or their "
+                        "probabilistic_samples.csv); the result is that of one run")
+        ->type_name("PATH...");
+  }
+}
+
+// "K/M" with 0 <= K < M; nullopt when it is not.
+std::optional<coupling::SamplePart> parse_sample_part(const std::string& text) {
+  long k = -1, m = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%ld/%ld%c", &k, &m, &tail) != 2 || k < 0 || m < 1 || k >= m) return std::nullopt;
+  return coupling::SamplePart{k, m};
 }
 
 void add_study_command(CLI::App& app, CommandLine& cli) {
@@ -315,6 +336,15 @@ int run_study_command(const CommandLine& cli) {
 int run_scene_command(const CommandLine& cli) {
   coupling::WorkflowOptions options;
   options.log = &std::cerr;
+  if (!cli.sample_part.empty()) {
+    options.sample_part = parse_sample_part(cli.sample_part);
+    if (!options.sample_part || !cli.merge_samples.empty()) {
+      std::cerr << "error: --sample-part: \"" << cli.sample_part
+                << "\" is not K/M with 0 <= K < M (part K of M, from 0; not with --merge-samples)\n";
+      return static_cast<int>(coupling::ExitStatus::invalid_input);
+    }
+  }
+  for (const std::string& path : cli.merge_samples) options.merge_samples.emplace_back(path);
   if (cli.check->parsed()) {
     options.mode = coupling::Mode::check;
   } else if (cli.lem->parsed()) {

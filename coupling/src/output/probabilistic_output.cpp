@@ -85,6 +85,12 @@ json probabilistic_report(const ProbabilisticAnalysis& a, const ProbabilisticOut
     return out;
   }
   out["surface"] = surface_json(a, o, surfaces);
+  if (o.part)
+    out["part"] = {{"index", o.part->index},
+                   {"parts", o.part->parts},
+                   {"first_sample", o.first_sample},
+                   {"samples", static_cast<long>(o.samples.size())}};
+  if (!o.merged_from.empty()) out["merged_from"] = o.merged_from;
   json variables = json::array(), correlations = json::array();
   for (std::size_t v = 0; v < a.variables.size(); ++v) variables.push_back(variable_report(a, o, v));
   for (std::size_t k = 0; k < a.correlations.size(); ++k) correlations.push_back(correlation_report(a, o, k));
@@ -133,7 +139,7 @@ std::string probabilistic_samples_csv(const ProbabilisticAnalysis& a, const Prob
   const std::size_t nv = a.variables.size();
   char number[40];
   for (std::size_t s = 0; s < o.samples.size(); ++s) {
-    out += std::to_string(s);
+    out += std::to_string(o.first_sample + static_cast<long>(s));
     for (std::size_t v = 0; v < nv; ++v) {
       std::snprintf(number, sizeof number, ",%.10g", o.values[s * nv + v] / a.variables[v].scene_unit);
       out += number;
@@ -141,7 +147,7 @@ std::string probabilistic_samples_csv(const ProbabilisticAnalysis& a, const Prob
     const slope::SampleOutcome& r = o.samples[s];
     out += ",";
     if (r.factor_of_safety) {
-      std::snprintf(number, sizeof number, "%.10g", *r.factor_of_safety);
+      std::snprintf(number, sizeof number, "%.17g", *r.factor_of_safety);  // (exact: parts are merged from it)
       out += number;
     }
     if (overall) {
@@ -160,6 +166,11 @@ std::string probabilistic_line(const ProbabilisticAnalysis& a, const Probabilist
                      (a.plan.sampling == slope::Sampling::monte_carlo ? "Monte Carlo" : "Latin hypercube") +
                      " samples): ";
   if (!o.error.empty()) return head + "not run: " + o.error;
+  if (o.part) {
+    head += "part " + std::to_string(o.part->index) + " of " + std::to_string(o.part->parts) + " (samples ";
+    head += std::to_string(o.first_sample) + " to " + std::to_string(o.first_sample + static_cast<long>(o.samples.size()) - 1) + "): ";
+  }
+  if (!o.merged_from.empty()) head += "merged from " + std::to_string(o.merged_from.size()) + " parts: ";
   const slope::ProbabilisticStatistics& s = o.statistics;
   char text[256];
   std::snprintf(text, sizeof text, "mean FS %.3f, sd %.3f, P(FS < 1) %.3g %%", s.mean, s.std_dev,

@@ -41,6 +41,11 @@ struct WorkflowOptions {
   std::ostream* log = nullptr;  // progress and notes (stderr in the program); may be null
   bool resume = false;          // continue from output_dir/checkpoint.bin
   SnapshotFigure draw_snapshot;  // isph snapshots (analyses.isph.snapshots_s); none: not drawn
+  // analyses.lem.probabilistic split over several runs (docs/pipelines.md): this run draws and analyses only its
+  // part of the samples, or, with merge_samples, analyses none and takes every sample's result from the parts'
+  // probabilistic_samples.csv (their run folders or the files), which must hold each sample once.
+  std::optional<SamplePart> sample_part;
+  std::vector<std::filesystem::path> merge_samples;
 };
 
 struct WorkflowResult {

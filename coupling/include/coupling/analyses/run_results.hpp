@@ -2,6 +2,7 @@
 // What one run found, stage by stage, as typed results. The stages (coupling/analyses) fill it; coupling/output alone
 // turns it into report.json, report.html, monitors.csv, profiles and figures; the command line prints its tables
 // from it. Nothing here is JSON.
+#include <filesystem>
 #include <iosfwd>
 #include <map>
 #include <optional>
@@ -37,6 +38,13 @@ struct NewmarkOutcome {
   double peak_acceleration = 0.0;  // g, the largest |a| times the scale
 };
 
+// Part `index` (from 0) of `parts` of a probabilistic analysis's samples: samples [index N / parts, (index + 1) N /
+// parts), rounded down.
+struct SamplePart {
+  long index = 0;
+  long parts = 1;
+};
+
 // analyses.lem.probabilistic's result (lem_probabilistic_stage.cpp): the surface, every sample's values and factor of
 // safety, and their statistics.
 struct ProbabilisticOutcome {
@@ -44,6 +52,9 @@ struct ProbabilisticOutcome {
   std::optional<double> deterministic;  // FS at the scene's values (on the surface; overall: the search's least)
   std::vector<double> values;           // SI, sample by sample: values[s * V + v] in the order of the variables
   std::vector<slope::SampleOutcome> samples;
+  long first_sample = 0;                // the index of samples[0] (a part of the samples: see `part`)
+  std::optional<SamplePart> part;       // this run's part of the samples, when split
+  std::vector<std::string> merged_from; // the parts' sample files, when merged
   slope::ProbabilisticStatistics statistics;
   double seconds = 0.0;
   std::string error;  // why it did not run (no critical surface for its method); the rest is then empty
@@ -92,7 +103,12 @@ std::vector<GivenSurfaceResult> analyse_given_surfaces(const slope::Section& sec
 
 // analyses.lem.probabilistic on the search's and the given surfaces' result `lem` (lem_probabilistic_stage.cpp);
 // progress on `log` (may be null) every 2 s.
+// With `part`, only that part of the samples; with `merge` (sample files or the run folders holding them), none: the
+// samples' results read from them. Throws std::invalid_argument, saying what is wrong, when the parts are not those of
+// this analysis or do not hold every sample once.
 ProbabilisticOutcome run_probabilistic(const slope::Section& section, const LemStageResult& lem,
-                                       const ProbabilisticAnalysis& analysis, std::ostream* log);
+                                       const ProbabilisticAnalysis& analysis, std::ostream* log,
+                                       const std::optional<SamplePart>& part = {},
+                                       const std::vector<std::filesystem::path>& merge = {});
 
 }  // namespace coupling
