@@ -224,8 +224,8 @@ std::string probabilistic_histogram_svg(const ProbabilisticOutcome& o, const std
   double top = 0.0;
   for (double& s : share) top = std::max(top, s = 100.0 * s / static_cast<double>(std::max<std::size_t>(1, f.size())));
   const double x_hi = start + step * static_cast<double>(bins);
-  SvgCanvas canvas = plot_canvas(start, x_hi, 0.0, top, title + ": the factors of safety of " +
-                                 std::to_string(f.size()) + " samples", "factor of safety", "share of the samples (%)");
+  SvgCanvas canvas = plot_canvas(start, x_hi, 0.0, top, title + ": FS of " + std::to_string(f.size()) + " samples",
+                                 "factor of safety", "share of the samples (%)");
   for (std::size_t b = 0; b < bins; ++b) {
     if (share[b] <= 0.0) continue;
     const double x0 = start + step * static_cast<double>(b), x1 = x0 + step;
@@ -238,8 +238,8 @@ std::string probabilistic_histogram_svg(const ProbabilisticOutcome& o, const std
 std::string probabilistic_cdf_svg(const ProbabilisticOutcome& o, const std::string& title) {
   const std::vector<double> f = sorted_factors(o);
   const double lo = f.empty() ? 0.5 : std::min(f.front(), 1.0), hi = f.empty() ? 1.5 : std::max(f.back(), 1.0);
-  SvgCanvas canvas = plot_canvas(lo, hi, 0.0, 100.0, title + ": the share of the samples below each FS",
-                                 "factor of safety", "samples with a lower FS (%)");
+  SvgCanvas canvas = plot_canvas(lo, hi, 0.0, 100.0, title + ": the samples below each FS", "factor of safety",
+                                 "samples with a lower FS (%)");
   std::vector<slope::Point> line;
   const std::size_t n = f.size(), stride = std::max<std::size_t>(1, n / 2000);
   for (std::size_t i = 0; i < n; i += stride)

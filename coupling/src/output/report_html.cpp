@@ -388,9 +388,11 @@ std::string figures(const std::vector<std::string>& list, const std::filesystem:
     const bool paired = !group.empty();
     if (pair_open && group != open_group) out << "</div>\n";
     if (paired && group != open_group) {  // (its style here: the pages without a pair stay as they were)
-      if (!styled) out << "<style>.pair > div { flex: 1 1 0; } .pair figure svg { max-height: 42mm; }</style>\n";
+      if (!styled)
+        out << "<style>.pair > div { flex: 1 1 0; } .pair figure svg { max-height: 42mm; } .pair.low figure svg { "
+               "max-height: 30mm; }</style>\n";
       styled = true;
-      out << "<div class=\"cols pair\">";
+      out << (group == "probabilistic" ? "<div class=\"cols pair low\">" : "<div class=\"cols pair\">");
     }
     pair_open = paired;
     open_group = group;

@@ -112,8 +112,9 @@ std::optional<std::vector<std::string>> write_figures(const Scene& scene, const 
   }
   if (lem && lem->probabilistic && lem->probabilistic->error.empty()) {
     sph::write_file_atomically(figures / "probabilistic_histogram.svg",
-                               probabilistic_histogram_svg(*lem->probabilistic, scene.name));
-    sph::write_file_atomically(figures / "probabilistic_cdf.svg", probabilistic_cdf_svg(*lem->probabilistic, scene.name));
+                               probabilistic_histogram_svg(*lem->probabilistic, "Probabilistic analysis"));
+    sph::write_file_atomically(figures / "probabilistic_cdf.svg",
+                               probabilistic_cdf_svg(*lem->probabilistic, "Probabilistic analysis"));
     written.push_back("figures/probabilistic_histogram.svg");
     written.push_back("figures/probabilistic_cdf.svg");
   }

@@ -471,6 +471,9 @@ std::string lem_summary(const LemAnalysis& lem) {
              " s)";
   else if (lem.critical_coefficient_method)
     record = ", k_c";
+  if (const auto& p = lem.probabilistic)
+    record += ", a probabilistic analysis (" + std::to_string(p->plan.samples) + " samples of " +
+              std::to_string(p->variables.size()) + " variable" + (p->variables.size() == 1 ? "" : "s") + ")";
   return "lem (" + std::to_string(n) + " method" + (n == 1 ? "" : "s") +
          (given > 0 ? ", " + std::to_string(given) + " given slip surface" + (given == 1 ? "" : "s") : std::string()) +
          record + ")";
