@@ -70,7 +70,7 @@ TEST_CASE("probabilistic: Li & Lumb's slope, Bishop on the critical circle, agai
   CHECK(unexplained_nulls(out.report).empty());
 }
 
-TEST_CASE("probabilistic: the same seed gives the same samples; Latin hypercube and another seed give others",
+TEST_CASE("probabilistic: the same seed gives the same samples, Latin hypercube and another seed give others",
           "[scene][probabilistic]") {
   json scene = li_lumb();
   probabilistic(scene)["samples"] = 200;

@@ -122,7 +122,7 @@ TEST_CASE("probabilistic: a Latin hypercube puts one sample in each stratum of e
   CHECK(std::count(hits.begin(), hits.end(), 0) > 100);
 }
 
-TEST_CASE("probabilistic: samples drawn in parts are those drawn at once, bit for bit; another seed draws others",
+TEST_CASE("probabilistic: samples drawn in parts are those drawn at once, bit for bit, and another seed draws others",
           "[slope][probabilistic]") {
   for (slope::Sampling sampling : {slope::Sampling::monte_carlo, slope::Sampling::latin_hypercube}) {
     slope::SamplingPlan plan;
