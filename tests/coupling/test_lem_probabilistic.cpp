@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -265,6 +266,75 @@ TEST_CASE("probabilistic: a given surface, a correlation and a triangular variab
   CHECK(r["variables"][2]["sampled_mean"].get<double>() == Approx(18.0).margin(0.05));
   CHECK(r["variables"][2]["sampled_std_dev"].get<double>() == Approx(0.6124).epsilon(0.05));
   CHECK(unexplained_nulls(out.report).empty());
+}
+
+}  // namespace test_lem_probabilistic
+
+namespace test_lem_probabilistic {
+
+// A planar block (tests/slope/test_lem_probabilistic.cpp): ground (0,10)-(20,10)-(30,0)-(50,0), the plane from
+// (10,10) to the toe, gamma = 20 kN/m3: Janbu's F = c L / (W sin alpha) + tan(phi) / tan(alpha), W = 1000 kN/m.
+json block_scene() {
+  return json::parse(R"({
+    "format": "sphslope-scene/1",
+    "section": {"bottom_y_m": -5,
+                "profile_lines": [{"material": "soil", "points_m": [[0, 10], [20, 10], [30, 0], [50, 0]]}],
+                "materials": [{"name": "soil", "unit_weight_kN_m3": 20, "cohesion_kPa": 10, "friction_angle_deg": 21.801409486351812}]},
+    "analyses": {"lem": {"methods": ["janbu"], "surfaces": [{"name": "plane", "points_m": [[10, 10], [30, 0]]}],
+                         "sensitivity": {"mode": "given_surface", "surface": "plane", "points": 5,
+                                         "variables": [{"parameter": "cohesion_kPa", "material": "soil", "min": 5, "max": 15},
+                                                       {"parameter": "tan_friction_angle", "material": "soil", "min": 0.3, "max": 0.5}]}}}
+  })");
+}
+
+TEST_CASE("sensitivity: a planar block's factor of safety along each range is the closed form", "[scene][sensitivity]") {
+  const coupling::WorkflowResult out = run_lem(block_scene());
+  REQUIRE(out.status == coupling::ExitStatus::ok);
+  const json& s = out.report["lem"]["sensitivity"];
+  const double L = std::sqrt(500.0), alpha = std::atan(0.5), a = L / (1000.0 * std::sin(alpha)), b = 1.0 / std::tan(alpha);
+  // tan(21.8014 deg) = 0.4: F = 10 a + 0.4 b = 1.3 at the scene's values
+  CHECK(s["deterministic_factor_of_safety"].get<double>() == Approx(10.0 * a + 0.4 * b).epsilon(1e-9));
+  const json& c = s["variables"][0];
+  const json& t = s["variables"][1];
+  REQUIRE(c["values"].size() == 5);
+  for (std::size_t j = 0; j < 5; ++j) {
+    INFO("point " << j);
+    CHECK(c["values"][j].get<double>() == Approx(5.0 + 2.5 * j).epsilon(1e-12));
+    CHECK(c["factors_of_safety"][j].get<double>() == Approx(c["values"][j].get<double>() * a + 0.4 * b).epsilon(1e-9));
+    CHECK(t["factors_of_safety"][j].get<double>() == Approx(10.0 * a + t["values"][j].get<double>() * b).epsilon(1e-9));
+  }
+  CHECK(unexplained_nulls(out.report).empty());
+}
+
+TEST_CASE("sensitivity: Li & Lumb's slope, the figure and the refusals", "[scene][sensitivity]") {
+  TemporaryFolder folder("sensitivity");
+  json scene = li_lumb();
+  scene["analyses"]["lem"]["sensitivity"] = {
+      {"points", 9},
+      {"variables", {{{"parameter", "cohesion_kPa"}, {"material", "soil"}, {"min", 10}, {"max", 26}},
+                     {{"parameter", "pore_pressure_ratio"}, {"material", "soil"}, {"min", 0}, {"max", 0.4}}}}};
+  const coupling::WorkflowResult out = run_lem_into(coupling::parse_scene(scene.dump()), folder.path);
+  REQUIRE(out.status == coupling::ExitStatus::ok);
+  const json& s = out.report["lem"]["sensitivity"];
+  const double fs = s["deterministic_factor_of_safety"];
+  // c' = 18 and r_u = 0.2 are the fifth point of each: the deterministic factor; FS rises with c' and falls with r_u
+  CHECK(s["variables"][0]["factors_of_safety"][4].get<double>() == Approx(fs).epsilon(1e-12));
+  CHECK(s["variables"][1]["factors_of_safety"][4].get<double>() == Approx(fs).epsilon(1e-12));
+  for (std::size_t j = 1; j < 9; ++j) {
+    CHECK(s["variables"][0]["factors_of_safety"][j] > s["variables"][0]["factors_of_safety"][j - 1]);
+    CHECK(s["variables"][1]["factors_of_safety"][j] < s["variables"][1]["factors_of_safety"][j - 1]);
+  }
+  CHECK(read_text(folder.path / "figures/sensitivity.svg").find("soil cohesion_kPa 10 to 26") != std::string::npos);
+  CHECK(read_text(folder.path / "report.html").find("Sensitivity (bishop") != std::string::npos);
+  // a range without the scene's value, a range beyond the physical one, a missing max
+  const std::string at = "analyses.lem.sensitivity.variables[0]";
+  scene["analyses"]["lem"]["sensitivity"]["variables"][0]["min"] = 20;
+  CHECK_THAT(faults(scene), Catch::Contains(at + ": its deterministic value must lie in [min, max]"));
+  scene["analyses"]["lem"]["sensitivity"]["variables"][0]["min"] = -2;
+  CHECK_THAT(faults(scene), Catch::Contains(at + ".min: must be >= 0"));
+  scene["analyses"]["lem"]["sensitivity"]["variables"][0].erase("max");
+  CHECK_THAT(faults(scene), Catch::Contains(at + ": missing required key \"max\"") ||
+                                Catch::Contains(at + ".max: "));
 }
 
 }  // namespace test_lem_probabilistic

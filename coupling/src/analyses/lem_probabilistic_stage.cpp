@@ -20,7 +20,8 @@ const slope::CriticalSurface* critical_of(const slope::SearchResult& search, slo
 }
 
 // The surface and the deterministic factor of safety; error set when the method has none.
-void choose_surface(const ProbabilisticAnalysis& a, const LemStageResult& lem, ProbabilisticOutcome& out) {
+template <class Analysis, class Outcome>
+void choose_surface(const Analysis& a, const LemStageResult& lem, Outcome& out) {
   const std::string method(slope::method_key(a.method));
   if (a.mode == ProbabilisticMode::given_surface) {
     const GivenSurfaceResult& given = lem.surfaces[*a.surface];
@@ -121,6 +122,34 @@ void merge_parts(const ProbabilisticAnalysis& a, const std::vector<std::filesyst
 }
 
 }  // namespace
+
+SensitivityOutcome run_sensitivity(const slope::Section& section, const LemStageResult& lem,
+                                   const SensitivityAnalysis& a) {
+  SensitivityOutcome out;
+  const StageClock::time_point start = StageClock::now();
+  choose_surface(a, lem, out);
+  if (!out.error.empty()) return out;
+  // every point of every variable one row, the other variables at the scene's values
+  const std::size_t nv = a.variables.size(), points = static_cast<std::size_t>(a.points);
+  std::vector<double> rows;
+  out.values.assign(nv, {});
+  for (std::size_t k = 0; k < nv; ++k)
+    for (std::size_t j = 0; j < points; ++j) {
+      const slope::RandomVariable& v = a.variables[k];
+      const double x = *v.min + (*v.max - *v.min) * static_cast<double>(j) / static_cast<double>(points - 1);
+      out.values[k].push_back(x);
+      for (std::size_t i = 0; i < nv; ++i) rows.push_back(i == k ? x : a.variables[i].mean);
+    }
+  slope::SamplingPlan plan;
+  plan.variables = a.variables;
+  const std::vector<slope::SampleOutcome> outcomes =
+      slope::evaluate_samples(section, plan, out.surface, a.method, lem.analysis.search, rows);
+  out.factors.assign(nv, {});
+  for (std::size_t k = 0; k < nv; ++k)
+    for (std::size_t j = 0; j < points; ++j) out.factors[k].push_back(outcomes[k * points + j].factor_of_safety);
+  out.seconds = seconds_since(start);
+  return out;
+}
 
 ProbabilisticOutcome run_probabilistic(const slope::Section& section, const LemStageResult& lem,
                                        const ProbabilisticAnalysis& a, std::ostream* log,

@@ -68,7 +68,7 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back("lem: the automatic search found no valid slip circle: " + search.error);
   }
-  LemStageResult result{analysis, {}, analyse_given_surfaces(section, analysis), std::nullopt, std::nullopt, std::nullopt, std::nullopt};
+  LemStageResult result{analysis, {}, analyse_given_surfaces(section, analysis), std::nullopt, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
   if (analysis.noncircular && search.error.empty()) {
     const StageClock::time_point noncircular_start = StageClock::now();
     result.noncircular = slope::search_noncircular(section, search, analysis.search, *analysis.noncircular);
@@ -103,6 +103,10 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
       return outcome;
     }
     results.seconds["lem_probabilistic"] = result.probabilistic->seconds;
+  }
+  if (analysis.sensitivity && result.search.error.empty()) {
+    result.sensitivity = run_sensitivity(section, result, *analysis.sensitivity);
+    results.seconds["lem_sensitivity"] = result.sensitivity->seconds;
   }
   record.result = std::move(result);
   return outcome;

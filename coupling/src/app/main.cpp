@@ -109,6 +109,7 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
     if (!lem->surfaces.empty()) std::cout << coupling::given_surfaces_table(lem->surfaces);
     if (lem->probabilistic)
       std::cout << coupling::probabilistic_line(*lem->analysis.probabilistic, *lem->probabilistic) << "\n";
+    if (lem->sensitivity) std::cout << coupling::sensitivity_table(*lem->analysis.sensitivity, *lem->sensitivity);
   }
   if (result.results.srm) print_srm(*result.results.srm);
   for (const std::string& message : result.errors) std::cerr << "error: " << message << "\n";

@@ -250,6 +250,113 @@ std::string probabilistic_cdf_svg(const ProbabilisticOutcome& o, const std::stri
   return canvas.str();
 }
 
+json sensitivity_report(const SensitivityAnalysis& a, const SensitivityOutcome& o,
+                        const std::vector<GivenSurface>& surfaces) {
+  json out = {{"method", std::string(slope::method_key(a.method))},
+              {"mode", std::string(sphslope::name_of(probabilistic_mode_names, a.mode))},
+              {"points", a.points}};
+  if (!o.error.empty()) {
+    out["error"] = o.error;
+    return out;
+  }
+  ProbabilisticAnalysis like;  // (for the surface's description)
+  like.mode = a.mode;
+  like.surface = a.surface;
+  ProbabilisticOutcome where;
+  where.surface = o.surface;
+  out["surface"] = surface_json(like, where, surfaces);
+  out["deterministic_factor_of_safety"] = optional_number(o.deterministic);
+  json variables = json::array();
+  for (std::size_t k = 0; k < a.variables.size(); ++k) {
+    const ProbabilisticVariableInput& in = a.inputs[k];
+    const double u = in.scene_unit;
+    json v = {{"name", variable_label(in)},
+              {"parameter", std::string(sphslope::name_of(random_parameter_names, in.parameter))},
+              {"value", a.variables[k].mean / u},
+              {"min", *a.variables[k].min / u},
+              {"max", *a.variables[k].max / u}};
+    if (!in.material.empty()) v["material"] = in.material;
+    if (in.surcharge) v["surcharge"] = *in.surcharge;
+    json values = json::array(), factors = json::array();
+    bool failed = false;
+    for (std::size_t j = 0; j < o.values[k].size(); ++j) {
+      values.push_back(o.values[k][j] / u);
+      factors.push_back(optional_number(o.factors[k][j]));
+      failed = failed || !o.factors[k][j];
+    }
+    v["values"] = std::move(values);
+    v["factors_of_safety"] = std::move(factors);
+    if (failed) v["factors_of_safety_error"] = "null where " + std::string(slope::method_key(a.method)) + " failed";
+    variables.push_back(std::move(v));
+  }
+  out["variables"] = std::move(variables);
+  out["seconds"] = o.seconds;
+  return out;
+}
+
+namespace {
+
+// The least and largest factor of safety of a variable's sweep (nullopt when the method failed everywhere).
+std::optional<std::pair<double, double>> factor_range(const std::vector<std::optional<double>>& factors) {
+  std::optional<std::pair<double, double>> out;
+  for (const auto& f : factors)
+    if (f) out = out ? std::make_pair(std::min(out->first, *f), std::max(out->second, *f)) : std::make_pair(*f, *f);
+  return out;
+}
+
+}  // namespace
+
+std::string sensitivity_table(const SensitivityAnalysis& a, const SensitivityOutcome& o) {
+  std::string text = "sensitivity (" + std::string(slope::method_key(a.method)) + ", " +
+                     std::string(sphslope::name_of(probabilistic_mode_names, a.mode)) + "): ";
+  if (!o.error.empty()) return text + "not run: " + o.error + "\n";
+  text += "FS over each range, the others at the scene's values\n";
+  char line[256];
+  for (std::size_t k = 0; k < a.variables.size(); ++k) {
+    const double u = a.inputs[k].scene_unit;
+    const auto range = factor_range(o.factors[k]);
+    std::snprintf(line, sizeof line, "  %-40s %10.4g to %-10.4g FS %s\n", variable_label(a.inputs[k]).c_str(),
+                  *a.variables[k].min / u, *a.variables[k].max / u,
+                  range ? (format_number(o.factors[k].front().value_or(NAN)) + " to " +
+                           format_number(o.factors[k].back().value_or(NAN)) + " (" + format_number(range->first) +
+                           " to " + format_number(range->second) + ")").c_str()
+                        : "-");
+    text += line;
+  }
+  return text;
+}
+
+std::string sensitivity_svg(const SensitivityAnalysis& a, const SensitivityOutcome& o, const std::string& title) {
+  double lo = 1.0, hi = 1.0;
+  for (const auto& factors : o.factors)
+    if (const auto r = factor_range(factors)) {
+      lo = std::min(lo, r->first);
+      hi = std::max(hi, r->second);
+    }
+  SvgCanvas canvas = plot_canvas(0.0, 100.0, lo, hi, title + ": FS with one variable at a time",
+                                 "place in the variable's range, min to max (%)", "factor of safety");
+  static const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b",
+                                  "#e377c2", "#17becf", "#bcbd22", "#7f7f7f", "#d62728"};
+  std::vector<std::tuple<std::string, std::string, std::string>> legend;
+  canvas.polyline({{0.0, 1.0}, {100.0, 1.0}}, "#d62728", 1.2, "6,4");
+  legend.emplace_back("#d62728", "6,4", "FS = 1");
+  for (std::size_t k = 0; k < a.variables.size(); ++k) {
+    const std::string colour = colours[k % std::size(colours)];
+    const double span = *a.variables[k].max - *a.variables[k].min;
+    std::vector<slope::Point> line;
+    for (std::size_t j = 0; j < o.values[k].size(); ++j)
+      if (o.factors[k][j]) line.push_back({100.0 * (o.values[k][j] - *a.variables[k].min) / span, *o.factors[k][j]});
+    canvas.polyline(line, colour, 1.6);
+    if (o.deterministic)
+      canvas.dot(100.0 * (a.variables[k].mean - *a.variables[k].min) / span, *o.deterministic, 3.5, colour);
+    const double u = a.inputs[k].scene_unit;
+    legend.emplace_back(colour, "", variable_label(a.inputs[k]) + " " + format_number(*a.variables[k].min / u) +
+                                        " to " + format_number(*a.variables[k].max / u));
+  }
+  canvas.legend(legend);
+  return canvas.str();
+}
+
 std::vector<Polyline> sample_surface_lines(const slope::Section& section, const ProbabilisticOutcome& o,
                                            const slope::SliceOptions& slicing, std::size_t count) {
   std::vector<Polyline> lines;

@@ -312,6 +312,34 @@ std::string probabilistic_paragraph(const LemStageResult& lem) {
   return out.str();
 }
 
+// The sensitivity analysis in a sentence: the variables by how far FS moves over their ranges, largest first.
+std::string sensitivity_paragraph(const LemStageResult& lem) {
+  if (!lem.sensitivity || !lem.analysis.sensitivity) return "";
+  const SensitivityAnalysis& a = *lem.analysis.sensitivity;
+  const SensitivityOutcome& o = *lem.sensitivity;
+  std::ostringstream out;
+  out << "<p>Sensitivity (" << esc(std::string(slope::method_key(a.method))) << ", one variable at a time, the others "
+      << "at the scene's values): ";
+  if (!o.error.empty()) return out.str() + "not run &ndash; " + esc(o.error) + ".</p>\n";
+  std::vector<std::pair<double, std::size_t>> spread;
+  for (std::size_t k = 0; k < a.variables.size(); ++k) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& f : o.factors[k])
+      if (f) lo = std::min(lo, *f), hi = std::max(hi, *f);
+    spread.emplace_back(hi >= lo ? hi - lo : 0.0, k);
+  }
+  std::stable_sort(spread.begin(), spread.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  for (std::size_t i = 0; i < spread.size(); ++i) {
+    const std::size_t k = spread[i].second;
+    const double u = a.inputs[k].scene_unit;
+    out << (i == 0 ? "" : "; ") << esc(variable_label(a.inputs[k])) << " " << format_number(*a.variables[k].min / u)
+        << "&ndash;" << format_number(*a.variables[k].max / u) << ": FS " << fixed(o.factors[k].front()) << "&ndash;"
+        << fixed(o.factors[k].back());
+  }
+  out << " (figure sensitivity.svg).</p>\n";
+  return out.str();
+}
+
 std::string fs_table(const RunResults& results) {
   const LemStageResult* lem = results.lem_result();
   if (!lem || lem->analysis.methods.empty()) return "";
@@ -358,7 +386,7 @@ std::string fs_table(const RunResults& results) {
         << fixed(std::min(n->as_given.displacement, n->reversed.displacement), 3) << " m the other way; figures "
         << "newmark_record.svg, newmark_displacement.svg).</p>\n";
   }
-  out << probabilistic_paragraph(*lem);
+  out << probabilistic_paragraph(*lem) << sensitivity_paragraph(*lem);
   return out.str();
 }
 

@@ -118,6 +118,11 @@ std::optional<std::vector<std::string>> write_figures(const Scene& scene, const 
     written.push_back("figures/probabilistic_histogram.svg");
     written.push_back("figures/probabilistic_cdf.svg");
   }
+  if (lem && lem->sensitivity && lem->sensitivity->error.empty() && lem->analysis.sensitivity) {
+    sph::write_file_atomically(figures / "sensitivity.svg",
+                               sensitivity_svg(*lem->analysis.sensitivity, *lem->sensitivity, scene.name));
+    written.push_back("figures/sensitivity.svg");
+  }
   return written;
 }
 

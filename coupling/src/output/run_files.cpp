@@ -123,6 +123,8 @@ json lem_block(const Scene& scene, const StageRecord<LemStageResult>& record) {
         lem.newmark ? &*lem.newmark : nullptr);
   if (lem.probabilistic)
     block["probabilistic"] = probabilistic_report(*lem.analysis.probabilistic, *lem.probabilistic, lem.analysis.surfaces);
+  if (lem.sensitivity)
+    block["sensitivity"] = sensitivity_report(*lem.analysis.sensitivity, *lem.sensitivity, lem.analysis.surfaces);
   return block;
 }
 

@@ -146,12 +146,14 @@ bool read_range(JsonReader& r, const ParameterRule& rule, slope::RandomVariable&
   return ok;
 }
 
+// One variable; `sweep`: a range of analyses.lem.sensitivity (min and max, no distribution: taken as uniform).
 std::optional<slope::RandomVariable> read_variable(JsonReader& r, const slope::Section& section,
-                                                   ProbabilisticVariableInput& input) {
+                                                   ProbabilisticVariableInput& input, bool sweep) {
   const auto parameter = read_named_required(r, "parameter", random_parameter_names);
   slope::RandomVariable v;
-  read_named(r, "distribution", distribution_names, v.distribution);
-  const auto std_dev = r.number("std_dev", Need::optional);
+  if (sweep) v.distribution = slope::Distribution::uniform;
+  else read_named(r, "distribution", distribution_names, v.distribution);
+  const auto std_dev = sweep ? std::nullopt : r.number("std_dev", Need::optional);
   const std::size_t faults = r.diagnostics().size();
   std::optional<std::size_t> owner;
   if (parameter) owner = owner_of(r, section, *parameter, input);
@@ -193,10 +195,13 @@ bool same_owner(const ProbabilisticVariableInput& a, const ProbabilisticVariable
   return a.parameter == b.parameter && a.material == b.material && a.surcharge == b.surcharge;
 }
 
-void read_variables(JsonReader& block, const slope::Section& section, ProbabilisticAnalysis& out, bool& ok) {
+void read_variables(JsonReader& block, const slope::Section& section, std::vector<slope::RandomVariable>& variables,
+                    std::vector<ProbabilisticVariableInput>& inputs, bool& ok, bool sweep) {
   const nlohmann::json* list = block.array("variables", Need::required, 1, limits::random_variables,
-                                           "an array of random variables, e.g. [{\"parameter\": \"cohesion_kPa\", "
-                                           "\"material\": \"clay\", \"std_dev\": 3.6}]");
+                                           sweep ? "an array of ranges, e.g. [{\"parameter\": \"cohesion_kPa\", "
+                                                   "\"material\": \"clay\", \"min\": 10, \"max\": 26}]"
+                                                 : "an array of random variables, e.g. [{\"parameter\": \"cohesion_kPa\", "
+                                                   "\"material\": \"clay\", \"std_dev\": 3.6}]");
   if (list == nullptr) {
     ok = false;
     return;
@@ -204,18 +209,36 @@ void read_variables(JsonReader& block, const slope::Section& section, Probabilis
   for (std::size_t i = 0; i < list->size(); ++i) {
     JsonReader r((*list)[i], index_path(block.path_of("variables"), i), block.diagnostics());
     ProbabilisticVariableInput input;
-    const auto v = read_variable(r, section, input);
+    const auto v = read_variable(r, section, input, sweep);
     if (!v) {
       ok = false;
       continue;
     }
-    for (const ProbabilisticVariableInput& earlier : out.variables)
+    for (const ProbabilisticVariableInput& earlier : inputs)
       if (same_owner(earlier, input)) {
         block.diagnostics().error(r.path(), variable_label(input) + " is listed twice (list each variable once)");
         ok = false;
       }
-    out.plan.variables.push_back(*v);
-    out.variables.push_back(std::move(input));
+    variables.push_back(*v);
+    inputs.push_back(std::move(input));
+  }
+}
+
+// "mode" and "surface": the given surface's index into `surface` (mode given_surface); ok false after an error.
+void resolve_surface(JsonReader& block, const LemAnalysis& lem, ProbabilisticMode mode,
+                     const std::optional<std::string>& name, std::optional<std::size_t>& surface, bool& ok) {
+  Diagnostics& d = block.diagnostics();
+  if (mode == ProbabilisticMode::given_surface) {
+    if (!name && !block.has("surface"))
+      d.error(block.path_of("surface"), "mode \"given_surface\" needs the name of one of analyses.lem.surfaces");
+    for (std::size_t i = 0; name && i < lem.surfaces.size(); ++i)
+      if (lem.surfaces[i].name == *name) surface = i;
+    if (name && !surface)
+      d.error(block.path_of("surface"), "no surface of analyses.lem.surfaces is named \"" + *name + "\"");
+    ok = ok && surface.has_value();
+  } else if (name) {
+    d.error(block.path_of("surface"), "a surface is named only with \"mode\": \"given_surface\"");
+    ok = false;
   }
 }
 
@@ -272,22 +295,25 @@ std::optional<ProbabilisticAnalysis> read_probabilistic(JsonReader& block, const
   out.plan.seed = static_cast<std::uint64_t>(block.integer_or("seed", static_cast<long>(out.plan.seed)));
   const auto surface = block.string("surface", Need::optional);
   bool ok = section != nullptr;
-  if (section) read_variables(block, *section, out, ok);
+  if (section) read_variables(block, *section, out.plan.variables, out.variables, ok, false);
   read_correlations(block, out, ok);
   block.finish();
-  Diagnostics& d = block.diagnostics();
-  if (out.mode == ProbabilisticMode::given_surface) {
-    if (!surface && !block.has("surface"))
-      d.error(block.path_of("surface"), "mode \"given_surface\" needs the name of one of analyses.lem.surfaces");
-    for (std::size_t i = 0; surface && i < lem.surfaces.size(); ++i)
-      if (lem.surfaces[i].name == *surface) out.surface = i;
-    if (surface && !out.surface)
-      d.error(block.path_of("surface"), "no surface of analyses.lem.surfaces is named \"" + *surface + "\"");
-    ok = ok && out.surface.has_value();
-  } else if (surface) {
-    d.error(block.path_of("surface"), "a surface is named only with \"mode\": \"given_surface\"");
-    ok = false;
-  }
+  resolve_surface(block, lem, out.mode, surface, out.surface, ok);
+  if (!ok) return std::nullopt;
+  return out;
+}
+
+std::optional<SensitivityAnalysis> read_sensitivity(JsonReader& block, const LemAnalysis& lem,
+                                                    const slope::Section* section, slope::Method method) {
+  SensitivityAnalysis out;
+  out.method = method;
+  read_named(block, "mode", probabilistic_mode_names, out.mode);
+  out.points = static_cast<int>(block.integer_or("points", out.points));
+  const auto surface = block.string("surface", Need::optional);
+  bool ok = section != nullptr;
+  if (section) read_variables(block, *section, out.variables, out.inputs, ok, true);
+  block.finish();
+  resolve_surface(block, lem, out.mode, surface, out.surface, ok);
   if (!ok) return std::nullopt;
   return out;
 }

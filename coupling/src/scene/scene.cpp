@@ -167,6 +167,22 @@ void read_probabilistic_block(JsonReader& lem, LemAnalysis& result, const slope:
   result.probabilistic = read_probabilistic(*block, result, section, *method);
 }
 
+// analyses.lem.sensitivity: the method as for the probabilistic analysis, the rest in lem_probabilistic.cpp.
+void read_sensitivity_block(JsonReader& lem, LemAnalysis& result, const slope::Section* section,
+                            Diagnostics& diagnostics) {
+  auto block = lem.object("sensitivity", Need::optional,
+                          "an object: {\"variables\": [{\"parameter\": \"cohesion_kPa\", \"material\": \"clay\", "
+                          "\"min\": 10, \"max\": 26}]}");
+  if (!block) return;
+  std::optional<slope::Method> method = default_method(result);
+  read_analysed_method(*block, result, method, diagnostics);
+  if (!method) {
+    block->finish();
+    return;
+  }
+  result.sensitivity = read_sensitivity(*block, result, section, *method);
+}
+
 void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics& diagnostics) {
   auto lem = analyses.object("lem", Need::optional, "an object (may be empty: {})");
   if (!lem) return;
@@ -218,6 +234,7 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
   read_given_surfaces(*lem, scene.section ? &scene.section->section : nullptr, result.search.slicing,
                       result.surfaces);
   read_probabilistic_block(*lem, result, scene.section ? &scene.section->section : nullptr, diagnostics);
+  read_sensitivity_block(*lem, result, scene.section ? &scene.section->section : nullptr, diagnostics);
   lem->finish();
 
   if (!scene.section) {

@@ -54,6 +54,10 @@ std::optional<AccelerationRecordInput> read_acceleration_record(JsonReader& reco
 std::optional<ProbabilisticAnalysis> read_probabilistic(JsonReader& block, const LemAnalysis& lem,
                                                         const slope::Section* section, slope::Method method);
 
+// analyses.lem.sensitivity (lem_probabilistic.cpp), the same way.
+std::optional<SensitivityAnalysis> read_sensitivity(JsonReader& block, const LemAnalysis& lem,
+                                                    const slope::Section* section, slope::Method method);
+
 // Reads and validates "section"; nullopt when anything in it is invalid (the faults are in `diagnostics`).
 std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagnostics);
 

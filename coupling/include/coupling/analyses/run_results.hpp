@@ -60,6 +60,17 @@ struct ProbabilisticOutcome {
   std::string error;  // why it did not run (no critical surface for its method); the rest is then empty
 };
 
+// analyses.lem.sensitivity's result: for each variable its values from min to max and the factor of safety at each
+// (empty where the method failed), the others at the scene's values.
+struct SensitivityOutcome {
+  slope::ProbabilisticSurface surface;
+  std::optional<double> deterministic;  // FS at the scene's values
+  std::vector<std::vector<double>> values;                  // SI, per variable
+  std::vector<std::vector<std::optional<double>>> factors;  // per variable, per value
+  double seconds = 0.0;
+  std::string error;  // why it did not run (no critical surface for its method)
+};
+
 struct LemStageResult {
   LemAnalysis analysis;
   slope::SearchResult search;
@@ -68,6 +79,7 @@ struct LemStageResult {
   std::optional<slope::CriticalCoefficient> critical_coefficient;  // analyses.lem.critical_seismic_coefficient
   std::optional<NewmarkOutcome> newmark;  // with its acceleration_record, when k_c was found
   std::optional<ProbabilisticOutcome> probabilistic;  // analyses.lem.probabilistic
+  std::optional<SensitivityOutcome> sensitivity;      // analyses.lem.sensitivity
 };
 
 // One stage of a run: its typed result, or the error that stopped it before it had one.
@@ -103,6 +115,8 @@ std::vector<GivenSurfaceResult> analyse_given_surfaces(const slope::Section& sec
 
 // analyses.lem.probabilistic on the search's and the given surfaces' result `lem` (lem_probabilistic_stage.cpp);
 // progress on `log` (may be null) every 2 s.
+SensitivityOutcome run_sensitivity(const slope::Section& section, const LemStageResult& lem,
+                                   const SensitivityAnalysis& analysis);
 // With `part`, only that part of the samples; with `merge` (sample files or the run folders holding them), none: the
 // samples' results read from them. Throws std::invalid_argument, saying what is wrong, when the parts are not those of
 // this analysis or do not hold every sample once.

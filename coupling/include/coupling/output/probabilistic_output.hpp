@@ -31,6 +31,16 @@ std::string probabilistic_line(const ProbabilisticAnalysis& analysis, const Prob
 std::string probabilistic_histogram_svg(const ProbabilisticOutcome& outcome, const std::string& title);
 std::string probabilistic_cdf_svg(const ProbabilisticOutcome& outcome, const std::string& title);
 
+// lem.sensitivity: the settings and, per variable, its values (the scene's units) and the factor of safety at each.
+nlohmann::json sensitivity_report(const SensitivityAnalysis& analysis, const SensitivityOutcome& outcome,
+                                  const std::vector<GivenSurface>& surfaces);
+// The sensitivity analysis for the terminal: one line per variable with its range and the factors over it.
+std::string sensitivity_table(const SensitivityAnalysis& analysis, const SensitivityOutcome& outcome);
+// figures/sensitivity.svg: the spider plot, FS against each variable's place in its range (%), the scene's values
+// marked.
+std::string sensitivity_svg(const SensitivityAnalysis& analysis, const SensitivityOutcome& outcome,
+                            const std::string& title);
+
 // Overall mode: the critical circles of the first `count` samples that have one, for the section figure.
 std::vector<Polyline> sample_surface_lines(const slope::Section& section, const ProbabilisticOutcome& outcome,
                                            const slope::SliceOptions& slicing, std::size_t count = 100);

@@ -75,6 +75,17 @@ struct ProbabilisticAnalysis {
   std::vector<ProbabilisticCorrelationInput> correlations;  // beside plan.correlations
 };
 
+// analyses.lem.sensitivity: one variable at a time over its range, the others at the scene's values.
+struct SensitivityAnalysis {
+  slope::Method method = slope::Method::bishop;
+  ProbabilisticMode mode = ProbabilisticMode::critical_surface;
+  std::optional<std::size_t> surface;  // given_surface: index into LemAnalysis::surfaces
+  int points = 11;                     // values of each variable, evenly from min to max
+  // SI; each uniform on [min, max] (the range swept), its mean the scene's value
+  std::vector<slope::RandomVariable> variables;
+  std::vector<ProbabilisticVariableInput> inputs;  // beside `variables`
+};
+
 // "soil cohesion_kPa", "horizontal_seismic_coefficient", "surcharges[1] surcharge_kPa": a variable's name in reports.
 std::string variable_label(const ProbabilisticVariableInput& variable);
 

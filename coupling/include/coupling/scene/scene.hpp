@@ -72,6 +72,7 @@ struct LemAnalysis {
   std::optional<slope::Method> critical_coefficient_method;
   std::optional<AccelerationRecordInput> acceleration_record;  // (only with critical_coefficient_method)
   std::optional<ProbabilisticAnalysis> probabilistic;          // analyses.lem.probabilistic (absent: not run)
+  std::optional<SensitivityAnalysis> sensitivity;              // analyses.lem.sensitivity (absent: not run)
 };
 
 // The analyses the scene asks for, each read once into its typed settings (defaults applied).
