@@ -40,6 +40,24 @@ FsMapFigureData fs_map_data(const LemAnalysis& analysis, const LemStageResult& l
   return data;
 }
 
+// The probabilistic analysis's pair of figures and the sensitivity's spider plot.
+void write_variation_figures(const Scene& scene, const LemStageResult& lem, const std::filesystem::path& figures,
+                             std::vector<std::string>& written) {
+  if (lem.probabilistic && lem.probabilistic->error.empty()) {
+    sph::write_file_atomically(figures / "probabilistic_histogram.svg",
+                               probabilistic_histogram_svg(*lem.probabilistic, "Probabilistic analysis"));
+    sph::write_file_atomically(figures / "probabilistic_cdf.svg",
+                               probabilistic_cdf_svg(*lem.probabilistic, "Probabilistic analysis"));
+    written.push_back("figures/probabilistic_histogram.svg");
+    written.push_back("figures/probabilistic_cdf.svg");
+  }
+  if (lem.sensitivity && lem.sensitivity->error.empty() && lem.analysis.sensitivity) {
+    sph::write_file_atomically(figures / "sensitivity.svg",
+                               sensitivity_svg(*lem.analysis.sensitivity, *lem.sensitivity, scene.name));
+    written.push_back("figures/sensitivity.svg");
+  }
+}
+
 }  // namespace
 
 // figures/section.svg (and figures/fs_map.svg after a limit-equilibrium search) in the output folder.
@@ -110,19 +128,7 @@ std::optional<std::vector<std::string>> write_figures(const Scene& scene, const 
     written.push_back("figures/newmark_record.svg");
     written.push_back("figures/newmark_displacement.svg");
   }
-  if (lem && lem->probabilistic && lem->probabilistic->error.empty()) {
-    sph::write_file_atomically(figures / "probabilistic_histogram.svg",
-                               probabilistic_histogram_svg(*lem->probabilistic, "Probabilistic analysis"));
-    sph::write_file_atomically(figures / "probabilistic_cdf.svg",
-                               probabilistic_cdf_svg(*lem->probabilistic, "Probabilistic analysis"));
-    written.push_back("figures/probabilistic_histogram.svg");
-    written.push_back("figures/probabilistic_cdf.svg");
-  }
-  if (lem && lem->sensitivity && lem->sensitivity->error.empty() && lem->analysis.sensitivity) {
-    sph::write_file_atomically(figures / "sensitivity.svg",
-                               sensitivity_svg(*lem->analysis.sensitivity, *lem->sensitivity, scene.name));
-    written.push_back("figures/sensitivity.svg");
-  }
+  if (lem) write_variation_figures(scene, *lem, figures, written);
   return written;
 }
 
