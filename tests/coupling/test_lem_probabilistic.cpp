@@ -338,3 +338,34 @@ TEST_CASE("sensitivity: Li & Lumb's slope, the figure and the refusals", "[scene
 }
 
 }  // namespace test_lem_probabilistic
+
+namespace test_lem_probabilistic {
+
+TEST_CASE("probabilistic: FS_SPH of the strength reduction beside the LE distribution", "[scene][probabilistic][sph]") {
+  // Griffiths & Lane's slope with the SPH strength reduction at a coarse 1 m spacing (as the golden report run) and
+  // 200 samples of c' and phi': the report places FS_SPH (at the scene's values, the means) beside them, with the
+  // share of the LE samples below it.
+  json scene = read_json(fs::path(test_paths::source_dir()) / "cases/griffiths_lane_1999_srm.json");
+  scene["analyses"]["sph"]["particle_spacing_m"] = 1.0;
+  scene["analyses"]["srm"]["tolerance"] = 0.1;
+  scene["analyses"]["lem"]["methods"] = {"bishop"};
+  scene["analyses"]["lem"]["probabilistic"] = {
+      {"samples", 200},
+      {"variables", {{{"parameter", "cohesion_kPa"}, {"material", "soil"}, {"std_dev", 2}},
+                     {{"parameter", "friction_angle_deg"}, {"material", "soil"}, {"std_dev", 2}}}}};
+  TemporaryFolder folder("probabilistic-srm");
+  coupling::WorkflowOptions options;
+  options.output_dir = folder.path;
+  const coupling::WorkflowResult out = coupling::run_scene(coupling::parse_scene(scene.dump()), options);
+  REQUIRE(out.status == coupling::ExitStatus::ok);
+  const json& beside = out.report["lem"]["probabilistic"]["sph_strength_reduction"];
+  const double fs_sph = out.report["srm"]["factor_of_safety"];
+  CHECK(beside["factor_of_safety"].get<double>() == fs_sph);
+  const auto& samples = out.results.lem_result()->probabilistic->samples;
+  const long below = std::count_if(samples.begin(), samples.end(),
+                                   [&](const slope::SampleOutcome& s) { return *s.factor_of_safety < fs_sph; });
+  CHECK(beside["share_of_samples_below"].get<double>() == Approx(below / 200.0).epsilon(1e-12));
+  CHECK(read_text(folder.path / "report.html").find("FS<sub>SPH</sub> = ") != std::string::npos);
+}
+
+}  // namespace test_lem_probabilistic

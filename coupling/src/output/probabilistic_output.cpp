@@ -73,8 +73,29 @@ json surface_json(const ProbabilisticAnalysis& a, const ProbabilisticOutcome& o,
 
 }  // namespace
 
+json sph_beside_probabilistic(const SrmResult& srm, const ProbabilisticOutcome& o) {
+  json out = {{"particle_spacing_m", srm.particle_spacing_m}};
+  if (!srm.bisection.bracketed) {
+    out["factor_of_safety"] = nullptr;
+    out["factor_of_safety_error"] = "the strength reduction found no factor of safety (see srm)";
+    return out;
+  }
+  const double fs = srm.bisection.factor_of_safety;
+  long below = 0, with = 0;
+  for (const slope::SampleOutcome& s : o.samples)
+    if (s.factor_of_safety) {
+      ++with;
+      below += *s.factor_of_safety < fs ? 1 : 0;
+    }
+  out["factor_of_safety"] = fs;
+  out["bracket"] = {srm.bisection.lo, srm.bisection.hi};
+  out["share_of_samples_below"] = with > 0 ? static_cast<double>(below) / static_cast<double>(with) : 0.0;
+  out["note"] = "FS_SPH at the scene's values (the means), beside the distribution of the LE factor of safety";
+  return out;
+}
+
 json probabilistic_report(const ProbabilisticAnalysis& a, const ProbabilisticOutcome& o,
-                          const std::vector<GivenSurface>& surfaces) {
+                          const std::vector<GivenSurface>& surfaces, const SrmResult* srm) {
   json out = {{"method", std::string(slope::method_key(a.method))},
               {"mode", std::string(sphslope::name_of(probabilistic_mode_names, a.mode))},
               {"sampling", std::string(sphslope::name_of(sampling_names, a.plan.sampling))},
@@ -121,6 +142,7 @@ json probabilistic_report(const ProbabilisticAnalysis& a, const ProbabilisticOut
                            {"std_dev_factor_of_safety", p.std_dev},
                            {"probability_of_failure", p.probability_of_failure}});
   out["convergence"] = std::move(convergence);
+  if (srm != nullptr) out["sph_strength_reduction"] = sph_beside_probabilistic(*srm, o);
   out["samples_file"] = probabilistic_samples_file;
   out["seconds"] = o.seconds;
   return out;

@@ -288,7 +288,7 @@ std::vector<FsColumn> fs_columns(const LemStageResult& lem, const ComparisonResu
 }
 
 // The probabilistic analysis's result in a sentence (none when it was not asked for).
-std::string probabilistic_paragraph(const LemStageResult& lem) {
+std::string probabilistic_paragraph(const LemStageResult& lem, const SrmResult* srm) {
   if (!lem.probabilistic || !lem.analysis.probabilistic) return "";
   const ProbabilisticAnalysis& a = *lem.analysis.probabilistic;
   const ProbabilisticOutcome& o = *lem.probabilistic;
@@ -308,7 +308,14 @@ std::string probabilistic_paragraph(const LemStageResult& lem) {
       << " %</b> (" << s.below_one << " of " << s.samples << " below 1), reliability index " << fixed(s.beta_normal, 2)
       << " (lognormal " << fixed(s.beta_lognormal, 2) << ")";
   if (s.failed_samples > 0) out << "; " << s.failed_samples << " samples without a factor of safety";
-  out << " (" << probabilistic_samples_file << "; figures probabilistic_histogram.svg, probabilistic_cdf.svg).</p>\n";
+  out << " (" << probabilistic_samples_file << "; figures probabilistic_histogram.svg, probabilistic_cdf.svg).";
+  if (srm != nullptr && srm->bisection.bracketed) {
+    const nlohmann::json beside = sph_beside_probabilistic(*srm, o);
+    out << " Beside it, the SPH strength reduction at the means: <b>FS<sub>SPH</sub> = "
+        << fixed(srm->bisection.factor_of_safety) << "</b>, above "
+        << fixed(100.0 * beside["share_of_samples_below"].get<double>(), 1) << " % of the LE samples.";
+  }
+  out << "</p>\n";
   return out.str();
 }
 
@@ -386,7 +393,8 @@ std::string fs_table(const RunResults& results) {
         << fixed(std::min(n->as_given.displacement, n->reversed.displacement), 3) << " m the other way; figures "
         << "newmark_record.svg, newmark_displacement.svg).</p>\n";
   }
-  out << probabilistic_paragraph(*lem) << sensitivity_paragraph(*lem);
+  const SrmResult* srm = results.srm && results.srm->result ? &*results.srm->result : nullptr;
+  out << probabilistic_paragraph(*lem, srm) << sensitivity_paragraph(*lem);
   return out.str();
 }
 

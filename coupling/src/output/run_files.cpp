@@ -110,7 +110,7 @@ void write_lem_files(const std::filesystem::path& dir, RunResults& results) {
 }
 
 // The "lem" block: the search, the given surfaces and the non-circular search, or the error.
-json lem_block(const Scene& scene, const StageRecord<LemStageResult>& record) {
+json lem_block(const Scene& scene, const StageRecord<LemStageResult>& record, const SrmResult* srm) {
   if (!record.result) return {{"error", record.error}};
   const LemStageResult& lem = *record.result;
   const slope::Section& section = scene.section->section;
@@ -122,7 +122,8 @@ json lem_block(const Scene& scene, const StageRecord<LemStageResult>& record) {
         lem.analysis.acceleration_record ? &*lem.analysis.acceleration_record : nullptr,
         lem.newmark ? &*lem.newmark : nullptr);
   if (lem.probabilistic)
-    block["probabilistic"] = probabilistic_report(*lem.analysis.probabilistic, *lem.probabilistic, lem.analysis.surfaces);
+    block["probabilistic"] =
+        probabilistic_report(*lem.analysis.probabilistic, *lem.probabilistic, lem.analysis.surfaces, srm);
   if (lem.sensitivity)
     block["sensitivity"] = sensitivity_report(*lem.analysis.sensitivity, *lem.sensitivity, lem.analysis.surfaces);
   return block;
@@ -203,7 +204,8 @@ json run_report(const Scene& scene, const RunResults& results, const std::vector
   report["timing_s"] = json::object();
   for (const auto& [key, seconds] : results.seconds) report["timing_s"][key] = seconds;
   report["analyses"] = results.analyses;
-  if (results.lem) report["lem"] = lem_block(scene, *results.lem);
+  if (results.lem)
+    report["lem"] = lem_block(scene, *results.lem, results.srm && results.srm->result ? &*results.srm->result : nullptr);
   add_block(report, "sph", results.sph, sph_report, sph_error_report);
   add_block(report, "comparison", results.comparison, comparison_report, comparison_error_report);
   add_block(report, "srm", results.srm, srm_report, srm_error_report);

@@ -14,9 +14,12 @@ namespace coupling {
 inline constexpr const char* probabilistic_samples_file = "probabilistic_samples.csv";
 
 // lem.probabilistic: the settings, the variables (scene units) with the mean and standard deviation of their samples,
-// the deterministic and the sampled statistics of the factor of safety, their convergence with the samples.
+// the deterministic and the sampled statistics of the factor of safety, their convergence with the samples; with the
+// SPH strength reduction of the same scene (`srm`, at the scene's values: the means), its FS_SPH beside them.
 nlohmann::json probabilistic_report(const ProbabilisticAnalysis& analysis, const ProbabilisticOutcome& outcome,
-                                    const std::vector<GivenSurface>& surfaces);
+                                    const std::vector<GivenSurface>& surfaces, const SrmResult* srm = nullptr);
+// lem.probabilistic.sph_strength_reduction: FS_SPH and its bracket, and the share of the LE samples below it.
+nlohmann::json sph_beside_probabilistic(const SrmResult& srm, const ProbabilisticOutcome& outcome);
 
 // probabilistic_samples.csv: one line per sample, its values in the scene's units and its factor of safety (empty
 // when the method failed); overall mode adds the sample's critical circle.
