@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <omp.h>
+
 #include "coupling/analyses/pipeline.hpp"
 #include "coupling/output/probabilistic_output.hpp"
 #include "coupling/scene/scene.hpp"
@@ -366,6 +368,31 @@ TEST_CASE("probabilistic: FS_SPH of the strength reduction beside the LE distrib
                                    [&](const slope::SampleOutcome& s) { return *s.factor_of_safety < fs_sph; });
   CHECK(beside["share_of_samples_below"].get<double>() == Approx(below / 200.0).epsilon(1e-12));
   CHECK(read_text(folder.path / "report.html").find("FS<sub>SPH</sub> = ") != std::string::npos);
+}
+
+}  // namespace test_lem_probabilistic
+
+namespace test_lem_probabilistic {
+
+TEST_CASE("probabilistic: the samples' factors are bitwise the same with 1 and 2 threads, searches included",
+          "[scene][probabilistic][threads]") {
+  json scene = li_lumb();
+  probabilistic(scene)["samples"] = 24;
+  probabilistic(scene)["mode"] = "overall";
+  const int before = omp_get_max_threads();
+  std::vector<std::vector<slope::SampleOutcome>> runs;
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    runs.push_back(run_lem(scene).results.lem_result()->probabilistic->samples);
+  }
+  omp_set_num_threads(before);
+  REQUIRE(runs[0].size() == 24);
+  for (std::size_t s = 0; s < 24; ++s) {
+    INFO("sample " << s);
+    CHECK(runs[0][s].factor_of_safety == runs[1][s].factor_of_safety);
+    REQUIRE(runs[0][s].circle);
+    CHECK(runs[0][s].circle->radius == runs[1][s].circle->radius);
+  }
 }
 
 }  // namespace test_lem_probabilistic

@@ -70,8 +70,9 @@ void read_sample_line(const std::string& line, const std::string& where, const P
   const std::vector<std::string> f = fields_of(line);
   if (f.size() != nv + (overall ? 5 : 2)) throw std::invalid_argument(where + ": not a line of this analysis's samples");
   const auto index = number_in(f[0]);
-  const long s = index ? static_cast<long>(*index) : -1;
-  if (!index || *index != static_cast<double>(s) || s < 0 || s >= a.plan.samples)
+  const bool in_range = index && *index >= 0.0 && *index < static_cast<double>(a.plan.samples);
+  const long s = in_range ? static_cast<long>(*index) : -1;
+  if (!in_range || *index != static_cast<double>(s))
     throw std::invalid_argument(where + ": sample index \"" + f[0] + "\" is not one of 0 to " +
                                 std::to_string(a.plan.samples - 1));
   if (seen[static_cast<std::size_t>(s)]) throw std::invalid_argument(where + ": sample " + f[0] + " is there twice");

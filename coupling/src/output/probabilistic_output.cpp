@@ -237,7 +237,8 @@ void mark_factors(SvgCanvas& canvas, const ProbabilisticOutcome& o, double lo, d
 
 std::string probabilistic_histogram_svg(const ProbabilisticOutcome& o, const std::string& title) {
   const std::vector<double> f = sorted_factors(o);
-  const double lo = f.empty() ? 0.5 : std::min(f.front(), 1.0), hi = f.empty() ? 1.5 : std::max(f.back(), 1.0);
+  const double lo = f.empty() ? 0.5 : std::min(f.front(), 1.0);
+  const double hi = std::max(f.empty() ? 1.5 : std::max(f.back(), 1.0), lo + 0.01);  // (every sample at FS = 1)
   const double step = nice_step(hi - lo, 30);
   const double start = std::floor(lo / step) * step;
   const std::size_t bins = static_cast<std::size_t>(std::ceil((hi - start) / step + 1e-9)) + 1;
