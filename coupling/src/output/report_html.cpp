@@ -412,23 +412,28 @@ std::string figures(const std::vector<std::string>& list, const std::filesystem:
   if (list.empty()) return "";
   std::ostringstream out;
   out << "<h2>Figures</h2>\n";
-  // Newmark's two figures side by side, smaller, and the probabilistic analysis's two, so that the page still prints
-  // on one sheet
+  // Newmark's two figures side by side, smaller, and the probabilistic analysis's two with the sensitivity's spider
+  // plot, so that the page still prints on one sheet
   bool pair_open = false, styled = false;
   std::string open_group;
+  // the probabilistic pair and the sensitivity's plot in one row, lower still
+  const bool three_variation_figures =
+      std::find(list.begin(), list.end(), "figures/sensitivity.svg") != list.end() &&
+      std::find(list.begin(), list.end(), "figures/probabilistic_cdf.svg") != list.end();
   for (const std::string& file : list) {
     if (file.size() < 4 || file.substr(file.size() - 4) != ".svg") continue;
     const std::string group = file.starts_with("figures/newmark_")         ? "newmark"
-                              : file.starts_with("figures/probabilistic_") ? "probabilistic"
+                              : file.starts_with("figures/probabilistic_") || file == "figures/sensitivity.svg"
+                                  ? "probabilistic"
                                                                             : "";
     const bool paired = !group.empty();
     if (pair_open && group != open_group) out << "</div>\n";
     if (paired && group != open_group) {  // (its style here: the pages without a pair stay as they were)
       if (!styled)
-        out << "<style>.pair > div { flex: 1 1 0; } .pair figure svg { max-height: 42mm; } .pair.low figure svg { "
-               "max-height: 30mm; }</style>\n";
+        out << "<style>.pair > div { flex: 1 1 0; } .pair figure svg { max-height: 42mm; } .pair.short figure svg { "
+               "max-height: " << (three_variation_figures ? 22 : 30) << "mm; }</style>\n";
       styled = true;
-      out << (group == "probabilistic" ? "<div class=\"cols pair low\">" : "<div class=\"cols pair\">");
+      out << (group == "probabilistic" ? "<div class=\"cols pair short\">" : "<div class=\"cols pair\">");
     }
     pair_open = paired;
     open_group = group;

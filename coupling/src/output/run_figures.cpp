@@ -41,7 +41,7 @@ FsMapFigureData fs_map_data(const LemAnalysis& analysis, const LemStageResult& l
 }
 
 // The probabilistic analysis's pair of figures and the sensitivity's spider plot.
-void write_variation_figures(const Scene& scene, const LemStageResult& lem, const std::filesystem::path& figures,
+void write_variation_figures(const LemStageResult& lem, const std::filesystem::path& figures,
                              std::vector<std::string>& written) {
   if (lem.probabilistic && lem.probabilistic->error.empty()) {
     sph::write_file_atomically(figures / "probabilistic_histogram.svg",
@@ -53,7 +53,7 @@ void write_variation_figures(const Scene& scene, const LemStageResult& lem, cons
   }
   if (lem.sensitivity && lem.sensitivity->error.empty() && lem.analysis.sensitivity) {
     sph::write_file_atomically(figures / "sensitivity.svg",
-                               sensitivity_svg(*lem.analysis.sensitivity, *lem.sensitivity, scene.name));
+                               sensitivity_svg(*lem.analysis.sensitivity, *lem.sensitivity, "Sensitivity"));
     written.push_back("figures/sensitivity.svg");
   }
 }
@@ -128,7 +128,7 @@ std::optional<std::vector<std::string>> write_figures(const Scene& scene, const 
     written.push_back("figures/newmark_record.svg");
     written.push_back("figures/newmark_displacement.svg");
   }
-  if (lem) write_variation_figures(scene, *lem, figures, written);
+  if (lem) write_variation_figures(*lem, figures, written);
   return written;
 }
 
