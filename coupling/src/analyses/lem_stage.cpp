@@ -37,6 +37,17 @@ NewmarkOutcome newmark_outcome(const AccelerationRecordInput& input, double yiel
   return out;
 }
 
+// analyses.lem.rapid_drawdown on every given surface.
+std::vector<DrawdownSurfaceResult> analyse_drawdown(const slope::Section& section, const LemAnalysis& analysis) {
+  const DrawdownAnalysis& drawdown = *analysis.rapid_drawdown;
+  slope::DrawdownInput input{section, section, drawdown.envelopes, drawdown.method, analysis.search.slicing};
+  input.after.water = drawdown.water_after;
+  std::vector<DrawdownSurfaceResult> out;
+  for (const GivenSurface& given : analysis.surfaces)
+    out.push_back({given.name, slope::rapid_drawdown(input, std::nullopt, given.polyline)});
+  return out;
+}
+
 }  // namespace
 
 StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
@@ -68,7 +79,9 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
     outcome.status = ExitStatus::failed;
     outcome.errors.push_back("lem: the automatic search found no valid slip circle: " + search.error);
   }
-  LemStageResult result{analysis, {}, analyse_given_surfaces(section, analysis), std::nullopt, std::nullopt, std::nullopt, std::nullopt, std::nullopt};
+  LemStageResult result;
+  result.analysis = analysis;
+  result.surfaces = analyse_given_surfaces(section, analysis);
   if (analysis.noncircular && search.error.empty()) {
     const StageClock::time_point noncircular_start = StageClock::now();
     result.noncircular = slope::search_noncircular(section, search, analysis.search, *analysis.noncircular);
@@ -103,6 +116,11 @@ StageOutcome run_lem_stage(const Scene& scene, StageContext& context) {
       return outcome;
     }
     results.seconds["lem_probabilistic"] = result.probabilistic->seconds;
+  }
+  if (analysis.rapid_drawdown) {
+    const StageClock::time_point drawdown_start = StageClock::now();
+    result.rapid_drawdown = analyse_drawdown(section, analysis);
+    results.seconds["lem_rapid_drawdown"] = seconds_since(drawdown_start);
   }
   if (analysis.sensitivity && result.search.error.empty()) {
     result.sensitivity = run_sensitivity(section, result, *analysis.sensitivity);

@@ -109,6 +109,8 @@ int print_outcome(const std::filesystem::path& scene_file, const coupling::Workf
     if (!lem->surfaces.empty()) std::cout << coupling::given_surfaces_table(lem->surfaces);
     if (lem->probabilistic)
       std::cout << coupling::probabilistic_line(*lem->analysis.probabilistic, *lem->probabilistic) << "\n";
+    if (lem->analysis.rapid_drawdown)
+      std::cout << coupling::drawdown_lines(*lem->analysis.rapid_drawdown, lem->rapid_drawdown);
     if (lem->sensitivity) std::cout << coupling::sensitivity_table(*lem->analysis.sensitivity, *lem->sensitivity);
   }
   if (result.results.srm) print_srm(*result.results.srm);

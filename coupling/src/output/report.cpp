@@ -290,6 +290,38 @@ nlohmann::json noncircular_report(const slope::Section& section, const slope::No
           {"methods", std::move(methods)}};
 }
 
+nlohmann::json drawdown_report(const DrawdownAnalysis& analysis, const std::vector<DrawdownSurfaceResult>& surfaces) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const DrawdownSurfaceResult& s : surfaces) {
+    const slope::DrawdownResult& r = s.result;
+    nlohmann::json one = {{"name", s.name},
+                          {"factor_of_safety", optional_number(r.factor_of_safety)},
+                          {"before_drawdown", optional_number(r.stage1)},
+                          {"undrained", optional_number(r.stage2)},
+                          {"drained_where_lower", optional_number(r.stage3)}};
+    if (!r.error.empty()) one["factor_of_safety_error"] = one["before_drawdown_error"] = one["undrained_error"] = r.error;
+    if (!r.stage3) one["drained_where_lower_error"] = r.error.empty() ? "no slice's drained strength is lower" : r.error;
+    nlohmann::json slices = nlohmann::json::array();
+    long drained = 0;
+    for (const slope::DrawdownSlice& d : r.slices) {
+      drained += d.drained_governs ? 1 : 0;
+      slices.push_back({{"base_x_m", d.base_x},
+                        {"undrained", d.undrained},
+                        {"consolidation_normal_kPa", d.consolidation_normal / 1e3},
+                        {"consolidation_shear_kPa", d.consolidation_shear / 1e3},
+                        {"undrained_strength_kPa", d.undrained_strength / 1e3},
+                        {"drained_strength_kPa", d.drained_strength / 1e3},
+                        {"drained_governs", d.drained_governs}});
+    }
+    one["slices_drained"] = drained;
+    one["slices"] = std::move(slices);
+    list.push_back(std::move(one));
+  }
+  return {{"method", std::string(slope::method_key(analysis.method))},
+          {"procedure", "duncan_wright_wong"},
+          {"surfaces", std::move(list)}};
+}
+
 std::string report_text(const nlohmann::json& report) { return json_text(report); }
 
 }  // namespace coupling

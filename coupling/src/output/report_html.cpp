@@ -319,6 +319,26 @@ std::string probabilistic_paragraph(const LemStageResult& lem, const SrmResult* 
   return out.str();
 }
 
+// Rapid drawdown in a sentence per given surface.
+std::string drawdown_paragraph(const LemStageResult& lem) {
+  if (!lem.analysis.rapid_drawdown) return "";
+  std::ostringstream out;
+  for (const DrawdownSurfaceResult& s : lem.rapid_drawdown) {
+    const slope::DrawdownResult& r = s.result;
+    out << "<p>Rapid drawdown (" << esc(std::string(slope::method_key(lem.analysis.rapid_drawdown->method)))
+        << ", Duncan, Wright &amp; Wong's three stages) on &ldquo;" << esc(s.name) << "&rdquo;: ";
+    if (!r.factor_of_safety) {
+      out << "no factor of safety &ndash; " << esc(r.error) << ".</p>\n";
+      continue;
+    }
+    out << "<b>FS = " << fixed(r.factor_of_safety) << "</b> after drawdown (" << fixed(r.stage1)
+        << " before it; undrained " << fixed(r.stage2);
+    if (r.stage3) out << ", with the drained strength where it is lower " << fixed(r.stage3);
+    out << ").</p>\n";
+  }
+  return out.str();
+}
+
 // The sensitivity analysis in a sentence: the variables by how far FS moves over their ranges, largest first.
 std::string sensitivity_paragraph(const LemStageResult& lem) {
   if (!lem.sensitivity || !lem.analysis.sensitivity) return "";
@@ -394,7 +414,7 @@ std::string fs_table(const RunResults& results) {
         << "newmark_record.svg, newmark_displacement.svg).</p>\n";
   }
   const SrmResult* srm = results.srm && results.srm->result ? &*results.srm->result : nullptr;
-  out << probabilistic_paragraph(*lem, srm) << sensitivity_paragraph(*lem);
+  out << drawdown_paragraph(*lem) << probabilistic_paragraph(*lem, srm) << sensitivity_paragraph(*lem);
   return out.str();
 }
 

@@ -124,6 +124,8 @@ json lem_block(const Scene& scene, const StageRecord<LemStageResult>& record, co
   if (lem.probabilistic)
     block["probabilistic"] =
         probabilistic_report(*lem.analysis.probabilistic, *lem.probabilistic, lem.analysis.surfaces, srm);
+  if (lem.analysis.rapid_drawdown)
+    block["rapid_drawdown"] = drawdown_report(*lem.analysis.rapid_drawdown, lem.rapid_drawdown);
   if (lem.sensitivity)
     block["sensitivity"] = sensitivity_report(*lem.analysis.sensitivity, *lem.sensitivity, lem.analysis.surfaces);
   return block;

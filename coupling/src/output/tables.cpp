@@ -60,6 +60,27 @@ std::string critical_coefficient_line(slope::Method method, const slope::Critica
   return line;
 }
 
+std::string drawdown_lines(const DrawdownAnalysis& analysis, const std::vector<DrawdownSurfaceResult>& surfaces) {
+  std::string text;
+  char line[512];
+  for (const DrawdownSurfaceResult& s : surfaces) {
+    const slope::DrawdownResult& r = s.result;
+    if (!r.factor_of_safety) {
+      std::snprintf(line, sizeof line, "rapid drawdown (%s, Duncan-Wright-Wong) on \"%s\": no factor of safety: %s\n",
+                    std::string(slope::method_key(analysis.method)).c_str(), s.name.c_str(), r.error.c_str());
+    } else {
+      std::snprintf(line, sizeof line,
+                    "rapid drawdown (%s, Duncan-Wright-Wong) on \"%s\": FS %.3f (before drawdown %.3f, undrained "
+                    "%.3f%s)\n",
+                    std::string(slope::method_key(analysis.method)).c_str(), s.name.c_str(), *r.factor_of_safety,
+                    r.stage1.value_or(NAN), r.stage2.value_or(NAN),
+                    r.stage3 ? (", drained where lower " + format_number(*r.stage3)).c_str() : "");
+    }
+    text += line;
+  }
+  return text;
+}
+
 std::string newmark_line(const AccelerationRecordInput& record, const NewmarkOutcome& newmark, double yield_coefficient) {
   char line[512];
   std::snprintf(line, sizeof line,

@@ -167,6 +167,21 @@ void read_probabilistic_block(JsonReader& lem, LemAnalysis& result, const slope:
   result.probabilistic = read_probabilistic(*block, result, section, *method);
 }
 
+// analyses.lem.rapid_drawdown: the method as for the probabilistic analysis, the rest in lem_drawdown.cpp.
+void read_drawdown_block(JsonReader& lem, LemAnalysis& result, const slope::Section* section,
+                         Diagnostics& diagnostics) {
+  auto block = lem.object("rapid_drawdown", Need::optional,
+                          "an object: {\"water_after\": {\"piezometric_line_m\": [[x, y], ...]}, \"materials\": [...]}");
+  if (!block) return;
+  std::optional<slope::Method> method = default_method(result);
+  read_analysed_method(*block, result, method, diagnostics);
+  if (!method) {
+    block->finish();
+    return;
+  }
+  result.rapid_drawdown = read_drawdown(*block, result, section, *method);
+}
+
 // analyses.lem.sensitivity: the method as for the probabilistic analysis, the rest in lem_probabilistic.cpp.
 void read_sensitivity_block(JsonReader& lem, LemAnalysis& result, const slope::Section* section,
                             Diagnostics& diagnostics) {
@@ -235,6 +250,7 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
                       result.surfaces);
   read_probabilistic_block(*lem, result, scene.section ? &scene.section->section : nullptr, diagnostics);
   read_sensitivity_block(*lem, result, scene.section ? &scene.section->section : nullptr, diagnostics);
+  read_drawdown_block(*lem, result, scene.section ? &scene.section->section : nullptr, diagnostics);
   lem->finish();
 
   if (!scene.section) {

@@ -58,6 +58,13 @@ std::optional<ProbabilisticAnalysis> read_probabilistic(JsonReader& block, const
 std::optional<SensitivityAnalysis> read_sensitivity(JsonReader& block, const LemAnalysis& lem,
                                                     const slope::Section* section, slope::Method method);
 
+// A second water of a valid section (analyses.lem.rapid_drawdown.water_after), checked as section.water is.
+std::optional<slope::Water> read_other_water(JsonReader& water, const slope::Section& section);
+
+// analyses.lem.rapid_drawdown (lem_drawdown.cpp), with its method resolved; nullopt when anything is wrong.
+std::optional<DrawdownAnalysis> read_drawdown(JsonReader& block, const LemAnalysis& lem, const slope::Section* section,
+                                              slope::Method method);
+
 // Reads and validates "section"; nullopt when anything in it is invalid (the faults are in `diagnostics`).
 std::optional<SceneSection> read_section(JsonReader& section, Diagnostics& diagnostics);
 

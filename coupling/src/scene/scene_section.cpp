@@ -291,6 +291,10 @@ std::optional<slope::Range> read_range(JsonReader& reader, std::string_view key,
 
 }  // namespace
 
+std::optional<slope::Water> read_other_water(JsonReader& water, const slope::Section& section) {
+  return read_water(water, section.x_min(), section.x_max(), section.bottom_y, true);
+}
+
 bool read_search_limits(JsonReader& search, const slope::Section* section, slope::SearchLimits& limits) {
   Diagnostics& diagnostics = search.diagnostics();
   Bounds on_ground = Bounds::any();

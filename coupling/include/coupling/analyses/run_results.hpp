@@ -16,6 +16,7 @@
 #include "coupling/compare/comparison.hpp"
 #include "coupling/compare/failure_surface.hpp"
 #include "coupling/scene/scene.hpp"
+#include "slope/drawdown.hpp"
 #include "slope/newmark.hpp"
 #include "slope/probabilistic.hpp"
 #include "slope/search.hpp"
@@ -71,6 +72,12 @@ struct SensitivityOutcome {
   std::string error;  // why it did not run (no critical surface for its method)
 };
 
+// analyses.lem.rapid_drawdown's result on one given surface (its name: LemAnalysis::surfaces).
+struct DrawdownSurfaceResult {
+  std::string name;
+  slope::DrawdownResult result;
+};
+
 struct LemStageResult {
   LemAnalysis analysis;
   slope::SearchResult search;
@@ -80,6 +87,7 @@ struct LemStageResult {
   std::optional<NewmarkOutcome> newmark;  // with its acceleration_record, when k_c was found
   std::optional<ProbabilisticOutcome> probabilistic;  // analyses.lem.probabilistic
   std::optional<SensitivityOutcome> sensitivity;      // analyses.lem.sensitivity
+  std::vector<DrawdownSurfaceResult> rapid_drawdown;  // analyses.lem.rapid_drawdown, one per given surface
 };
 
 // One stage of a run: its typed result, or the error that stopped it before it had one.

@@ -44,6 +44,11 @@ nlohmann::json critical_coefficient_report(const slope::Section& section, slope:
 nlohmann::json noncircular_report(const slope::Section& section, const slope::NonCircularOptions& options,
                                   const slope::NonCircularResult& result);
 
+// lem.rapid_drawdown: the method, the procedure and per given surface its factor of safety (the lower of stages 2 and
+// 3; null with `factor_of_safety_error`), the three stages' factors, and its slices' consolidation stresses and
+// strengths (kPa).
+nlohmann::json drawdown_report(const DrawdownAnalysis& analysis, const std::vector<DrawdownSurfaceResult>& surfaces);
+
 // Pretty-printed JSON text of a report, ending in a newline; throws NonFiniteNumber (coupling/scene/json_text.hpp),
 // naming the keys, when a number in it is NaN or infinite.
 std::string report_text(const nlohmann::json& report);

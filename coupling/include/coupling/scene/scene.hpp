@@ -24,6 +24,7 @@
 #include "coupling/scene/probabilistic_analysis.hpp"
 #include "coupling/scene/soil_material.hpp"
 #include "coupling/scene/sph_analysis.hpp"
+#include "slope/drawdown.hpp"
 #include "slope/methods.hpp"
 #include "slope/newmark.hpp"
 #include "slope/search.hpp"
@@ -56,6 +57,15 @@ struct AccelerationRecordInput {
   double scale = 1.0;         // the accelerations times this
 };
 
+// analyses.lem.rapid_drawdown: Duncan, Wright & Wong's three stages (slope/drawdown.hpp) on every given surface, the
+// section's water before drawdown and this one after.
+struct DrawdownAnalysis {
+  slope::Method method = slope::Method::bishop;
+  slope::Water water_after;
+  // per material of the section: its K_c = 1 envelope (SI), empty: free-draining
+  std::vector<std::optional<slope::ConsolidatedEnvelope>> envelopes;
+};
+
 // analyses.lem, with every default applied.
 struct LemAnalysis {
   std::vector<GivenSurface> surfaces;   // analyses.lem.surfaces, checked admissible on the section
@@ -73,6 +83,7 @@ struct LemAnalysis {
   std::optional<AccelerationRecordInput> acceleration_record;  // (only with critical_coefficient_method)
   std::optional<ProbabilisticAnalysis> probabilistic;          // analyses.lem.probabilistic (absent: not run)
   std::optional<SensitivityAnalysis> sensitivity;              // analyses.lem.sensitivity (absent: not run)
+  std::optional<DrawdownAnalysis> rapid_drawdown;              // analyses.lem.rapid_drawdown (absent: not run)
 };
 
 // The analyses the scene asks for, each read once into its typed settings (defaults applied).
