@@ -137,6 +137,7 @@ const GoldenRun golden_runs[] = {
                       "lem": {"noncircular_search": {}}, "compare": {}}})"},
     {"acads3_lem", "acads_ex3_weak_layer.json", "{}", coupling::Mode::lem},
     {"two_layer_water_lem", "two_layer_water.json", "{}", coupling::Mode::lem},
+    {"usace_rapid_drawdown", "usace_1902_rapid_drawdown.json", "{}", coupling::Mode::lem},
     {"li_lumb_probabilistic", "li_lumb_1987_probabilistic.json",
      R"({"analyses": {"lem": {"probabilistic": {"samples": 500, "sampling": "latin_hypercube",
                                                 "correlations": [{"material": "soil", "cohesion_friction": -0.3}]}}}})",
