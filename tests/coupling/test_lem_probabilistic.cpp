@@ -70,6 +70,12 @@ TEST_CASE("probabilistic: Li & Lumb's slope, Bishop on the critical circle, agai
     CHECK(v["sampled_std_dev"].get<double>() == Approx(v["std_dev"].get<double>()).epsilon(0.03));
   }
   CHECK(p["convergence"].back()["samples"] == 10000);
+  // Duncan's (2000) Taylor series method beside it (Hassan & Wolff's 2.336 is a first-order estimate too): within 5 %,
+  // and its sigma_F within 3 % of the samples' (F is nearly linear in the variables here)
+  const json& taylor = p["taylor_series"];
+  CHECK(taylor["evaluations"] == 8);
+  CHECK(taylor["reliability_index_lognormal"].get<double>() == Approx(2.336).epsilon(0.05));
+  CHECK(taylor["std_dev_factor_of_safety"].get<double>() == Approx(sd).epsilon(0.03));
   CHECK(unexplained_nulls(out.report).empty());
 }
 
@@ -290,7 +296,15 @@ json block_scene() {
 }
 
 TEST_CASE("sensitivity: a planar block's factor of safety along each range is the closed form", "[scene][sensitivity]") {
-  const coupling::WorkflowResult out = run_lem(block_scene());
+  json scene = block_scene();
+  // and the Taylor series method on it, exact for a factor linear in c' and tan(phi'): sigma_F^2 = (a s_c)^2 +
+  // (b s_t)^2 + 2 rho (a s_c)(b s_t)
+  scene["analyses"]["lem"]["probabilistic"] = json::parse(R"({
+    "mode": "given_surface", "surface": "plane", "samples": 10,
+    "variables": [{"parameter": "cohesion_kPa", "material": "soil", "std_dev": 2},
+                  {"parameter": "tan_friction_angle", "material": "soil", "std_dev": 0.05}],
+    "correlations": [{"material": "soil", "cohesion_friction": 0.5}]})");
+  const coupling::WorkflowResult out = run_lem(scene);
   REQUIRE(out.status == coupling::ExitStatus::ok);
   const json& s = out.report["lem"]["sensitivity"];
   const double L = std::sqrt(500.0), alpha = std::atan(0.5), a = L / (1000.0 * std::sin(alpha)), b = 1.0 / std::tan(alpha);
@@ -305,6 +319,9 @@ TEST_CASE("sensitivity: a planar block's factor of safety along each range is th
     CHECK(c["factors_of_safety"][j].get<double>() == Approx(c["values"][j].get<double>() * a + 0.4 * b).epsilon(1e-9));
     CHECK(t["factors_of_safety"][j].get<double>() == Approx(10.0 * a + t["values"][j].get<double>() * b).epsilon(1e-9));
   }
+  const double sc = 2.0 * a, st = 0.05 * b;
+  CHECK(out.report["lem"]["probabilistic"]["taylor_series"]["std_dev_factor_of_safety"].get<double>() ==
+        Approx(std::sqrt(sc * sc + st * st + sc * st)).epsilon(1e-9));
   CHECK(unexplained_nulls(out.report).empty());
 }
 

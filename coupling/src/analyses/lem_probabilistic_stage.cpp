@@ -122,6 +122,46 @@ void merge_parts(const ProbabilisticAnalysis& a, const std::vector<std::filesyst
                                 std::to_string(a.plan.samples) + "): merge every part");
 }
 
+// A variable's standard deviation (uniform and triangular: of their distribution).
+double standard_deviation(const slope::RandomVariable& v) {
+  if (v.distribution == slope::Distribution::uniform) return (*v.max - *v.min) / std::sqrt(12.0);
+  if (v.distribution == slope::Distribution::triangular) {
+    const double a = *v.min, b = *v.max, c = v.mean;
+    return std::sqrt((a * a + b * b + c * c - a * b - a * c - b * c) / 18.0);
+  }
+  return v.std_dev;
+}
+
+// The Taylor series method: 2 V factors of safety, each variable at its mean +- one standard deviation.
+void taylor_series(const slope::Section& section, const LemStageResult& lem, const ProbabilisticAnalysis& a,
+                   ProbabilisticOutcome& out) {
+  const std::vector<slope::RandomVariable>& vars = a.plan.variables;
+  const std::size_t nv = vars.size();
+  std::vector<double> rows;
+  for (std::size_t k = 0; k < nv; ++k)
+    for (double sign : {1.0, -1.0}) {
+      const double x = vars[k].mean + sign * standard_deviation(vars[k]);
+      for (std::size_t i = 0; i < nv; ++i)
+        rows.push_back(i != k ? vars[i].mean
+                              : std::clamp(x, vars[k].min.value_or(-INFINITY), vars[k].max.value_or(INFINITY)));
+    }
+  const std::vector<slope::SampleOutcome> f =
+      slope::evaluate_samples(section, a.plan, out.surface, a.method, lem.analysis.search, rows);
+  double variance = 0.0;
+  bool complete = true;
+  for (std::size_t k = 0; k < nv; ++k) {
+    const auto& up = f[2 * k].factor_of_safety;
+    const auto& down = f[2 * k + 1].factor_of_safety;
+    out.taylor_change.push_back(up && down ? std::optional<double>(*up - *down) : std::nullopt);
+    if (out.taylor_change.back()) variance += 0.25 * *out.taylor_change.back() * *out.taylor_change.back();
+    else complete = false;
+  }
+  for (const slope::VariableCorrelation& c : a.plan.correlations)
+    if (out.taylor_change[c.first] && out.taylor_change[c.second])
+      variance += 2.0 * c.coefficient * 0.25 * *out.taylor_change[c.first] * *out.taylor_change[c.second];
+  if (complete && variance >= 0.0) out.taylor_std_dev = std::sqrt(variance);
+}
+
 }  // namespace
 
 SensitivityOutcome run_sensitivity(const slope::Section& section, const LemStageResult& lem,
@@ -185,6 +225,7 @@ ProbabilisticOutcome run_probabilistic(const slope::Section& section, const LemS
                                           progress);
   }
   out.statistics = slope::probabilistic_statistics(out.samples);
+  taylor_series(section, lem, a, out);
   out.seconds = seconds_since(start);
   return out;
 }

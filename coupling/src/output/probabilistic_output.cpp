@@ -61,6 +61,24 @@ json correlation_report(const ProbabilisticAnalysis& a, const ProbabilisticOutco
           {"sampled_correlation", sampled}};
 }
 
+// lem.probabilistic.taylor_series: Duncan's (2000) Taylor series method about the deterministic FS.
+json taylor_report(const ProbabilisticAnalysis& a, const ProbabilisticOutcome& o) {
+  json changes = json::array();
+  for (const auto& d : o.taylor_change) changes.push_back(optional_number(d));
+  json out = {{"evaluations", 2 * a.variables.size()}, {"changes", std::move(changes)}};
+  if (!o.taylor_std_dev || !o.deterministic || !(*o.taylor_std_dev > 0.0)) {
+    out["std_dev_factor_of_safety"] = nullptr;
+    out["std_dev_factor_of_safety_error"] = "the method failed at a variable's mean +- one standard deviation, or "
+                                            "FS does not change";
+    return out;
+  }
+  const double f = *o.deterministic, sd = *o.taylor_std_dev, v = sd / f, s2 = std::log1p(v * v);
+  out["std_dev_factor_of_safety"] = sd;
+  out["reliability_index_normal"] = (f - 1.0) / sd;
+  out["reliability_index_lognormal"] = std::log(f / std::sqrt(1.0 + v * v)) / std::sqrt(s2);
+  return out;
+}
+
 json surface_json(const ProbabilisticAnalysis& a, const ProbabilisticOutcome& o,
                   const std::vector<GivenSurface>& surfaces) {
   if (a.mode == ProbabilisticMode::given_surface) return {{"given_surface", surfaces[*a.surface].name}};
@@ -142,6 +160,7 @@ json probabilistic_report(const ProbabilisticAnalysis& a, const ProbabilisticOut
                            {"std_dev_factor_of_safety", p.std_dev},
                            {"probability_of_failure", p.probability_of_failure}});
   out["convergence"] = std::move(convergence);
+  out["taylor_series"] = taylor_report(a, o);
   if (srm != nullptr) out["sph_strength_reduction"] = sph_beside_probabilistic(*srm, o);
   out["samples_file"] = probabilistic_samples_file;
   out["seconds"] = o.seconds;

@@ -57,6 +57,11 @@ struct ProbabilisticOutcome {
   std::optional<SamplePart> part;       // this run's part of the samples, when split
   std::vector<std::string> merged_from; // the parts' sample files, when merged
   slope::ProbabilisticStatistics statistics;
+  // The Taylor series method (Duncan 2000) beside the samples: FS with each variable at its mean +- one standard
+  // deviation (kept in its range), the others at the scene's values; sigma_F^2 = sum (dF_i / 2)^2 with the
+  // correlations' cross terms, about the deterministic FS.
+  std::vector<std::optional<double>> taylor_change;  // per variable: FS(+sd) - FS(-sd); empty where either failed
+  std::optional<double> taylor_std_dev;
   double seconds = 0.0;
   std::string error;  // why it did not run (no critical surface for its method); the rest is then empty
 };
