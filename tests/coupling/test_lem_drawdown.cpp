@@ -16,17 +16,6 @@ using nlohmann::json;
 
 json usace() { return read_json(fs::path(test_paths::source_dir()) / "cases/usace_1902_rapid_drawdown.json"); }
 
-std::string faults(const json& scene) {
-  try {
-    coupling::parse_scene(scene.dump());
-  } catch (const coupling::SceneError& error) {
-    std::string all;
-    for (const std::string& m : error.messages()) all += m + "\n";
-    return all;
-  }
-  return "";
-}
-
 TEST_CASE("rapid drawdown: USACE EM 1110-2-1902 App. G from its scene, on the specified circle",
           "[scene][drawdown][validation]") {
   // USACE 1.44, Slide (Duncan-Wright-Wong) 1.443 on the circle (169.5, 210) ft, R = 210 ft; the xslope project's
@@ -51,25 +40,25 @@ TEST_CASE("rapid drawdown: bad input is refused with its JSON path", "[scene][dr
   const std::string at = "analyses.lem.rapid_drawdown";
   json scene = usace();
   scene["analyses"]["lem"]["rapid_drawdown"]["materials"][0]["material"] = "core";
-  CHECK_THAT(faults(scene), Catch::Contains(at + ".materials[0].material: no material of section.materials is named"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + ".materials[0].material: no material of section.materials is named"));
   scene = usace();
   scene["analyses"]["lem"]["rapid_drawdown"]["materials"].push_back(scene["analyses"]["lem"]["rapid_drawdown"]["materials"][0]);
-  CHECK_THAT(faults(scene), Catch::Contains(at + ".materials[1].material: \"embankment\" is listed twice"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + ".materials[1].material: \"embankment\" is listed twice"));
   scene = usace();
   scene["analyses"]["lem"].erase("surfaces");
-  CHECK_THAT(faults(scene), Catch::Contains(at + ": rapid drawdown is analysed on the given slip surfaces"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + ": rapid drawdown is analysed on the given slip surfaces"));
   scene = usace();
   scene["section"].erase("water");
-  CHECK_THAT(faults(scene), Catch::Contains(at + ": rapid drawdown needs section.water"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + ": rapid drawdown needs section.water"));
   scene = usace();
   scene["analyses"]["lem"]["rapid_drawdown"]["water_after"]["piezometric_line_m"] = {{10, 7}, {121.92, 7}};
-  CHECK_THAT(faults(scene), Catch::Contains(at + ".water_after.piezometric_line_m: must span the section's x range"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + ".water_after.piezometric_line_m: must span the section's x range"));
   scene = usace();
   scene["analyses"]["lem"]["rapid_drawdown"].erase("water_after");
-  CHECK_THAT(faults(scene), Catch::Contains(at + ".water_after"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + ".water_after"));
   scene = usace();
   scene["analyses"]["lem"]["rapid_drawdown"]["materials"][0]["kc1_friction_angle_deg"] = -3;
-  CHECK_THAT(faults(scene), Catch::Contains(at + ".materials[0].kc1_friction_angle_deg: "));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + ".materials[0].kc1_friction_angle_deg: "));
 }
 
 }  // namespace test_lem_drawdown

@@ -33,18 +33,6 @@ coupling::WorkflowResult run_lem(const json& scene) {
   return coupling::run_scene(coupling::parse_scene(scene.dump()), options);
 }
 
-// Every fault of the scene, one per line (empty when it is valid).
-std::string faults(const json& scene) {
-  try {
-    coupling::parse_scene(scene.dump());
-  } catch (const coupling::SceneError& error) {
-    std::string all;
-    for (const std::string& m : error.messages()) all += m + "\n";
-    return all;
-  }
-  return "";
-}
-
 TEST_CASE("probabilistic: Li & Lumb's slope, Bishop on the critical circle, against the published reliability index",
           "[scene][probabilistic][validation]") {
   // Slide2 Verification Manual, problem #36 (Table 36.2): on the critical deterministic circle Hassan & Wolff (1999)
@@ -201,56 +189,56 @@ TEST_CASE("probabilistic: bad input is refused with its JSON path", "[scene][pro
     return scene;
   };
   // a negative standard deviation (the schema), a truncation that excludes the mean, a min below the physical range
-  CHECK_THAT(faults(variable({{"parameter", "cohesion_kPa"}, {"material", "soil"}, {"std_dev", -1}})),
+  CHECK_THAT(scene_faults(variable({{"parameter", "cohesion_kPa"}, {"material", "soil"}, {"std_dev", -1}})),
              Catch::Contains(at + "variables[0].std_dev: "));
-  CHECK_THAT(faults(variable({{"parameter", "cohesion_kPa"}, {"material", "soil"}, {"std_dev", 3}, {"min", 20}})),
+  CHECK_THAT(scene_faults(variable({{"parameter", "cohesion_kPa"}, {"material", "soil"}, {"std_dev", 3}, {"min", 20}})),
              Catch::Contains(at + "variables[0]: its truncation's min must be below the mean"));
-  CHECK_THAT(faults(variable({{"parameter", "cohesion_kPa"}, {"material", "soil"}, {"std_dev", 3}, {"min", -5}})),
+  CHECK_THAT(scene_faults(variable({{"parameter", "cohesion_kPa"}, {"material", "soil"}, {"std_dev", 3}, {"min", -5}})),
              Catch::Contains(at + "variables[0].min: must be >= 0 (a cohesion is >= 0)"));
-  CHECK_THAT(faults(variable({{"parameter", "friction_angle_deg"}, {"material", "soil"}, {"distribution", "uniform"},
+  CHECK_THAT(scene_faults(variable({{"parameter", "friction_angle_deg"}, {"material", "soil"}, {"distribution", "uniform"},
                               {"min", 31}, {"max", 35}})),
              Catch::Contains(at + "variables[0]: its deterministic value must lie in [min, max]"));
-  CHECK_THAT(faults(variable({{"parameter", "friction_angle_deg"}, {"material", "soil"}, {"distribution", "uniform"},
+  CHECK_THAT(scene_faults(variable({{"parameter", "friction_angle_deg"}, {"material", "soil"}, {"distribution", "uniform"},
                               {"std_dev", 2}, {"min", 25}, {"max", 35}})),
              Catch::Contains(at + "variables[0].std_dev: a uniform or triangular variable is set by min and max"));
-  CHECK_THAT(faults(variable({{"parameter", "cohesion_kPa"}, {"std_dev", 3}})),
+  CHECK_THAT(scene_faults(variable({{"parameter", "cohesion_kPa"}, {"std_dev", 3}})),
              Catch::Contains(at + "variables[0].material: cohesion_kPa is a material's"));
-  CHECK_THAT(faults(variable({{"parameter", "cohesion_kPa"}, {"material", "clay"}, {"std_dev", 3}})),
+  CHECK_THAT(scene_faults(variable({{"parameter", "cohesion_kPa"}, {"material", "clay"}, {"std_dev", 3}})),
              Catch::Contains(at + "variables[0].material: no material of section.materials is named \"clay\""));
-  CHECK_THAT(faults(variable({{"parameter", "water_level_m"}, {"std_dev", 0.5}})),
+  CHECK_THAT(scene_faults(variable({{"parameter", "water_level_m"}, {"std_dev", 0.5}})),
              Catch::Contains(at + "variables[0].parameter: water_level_m raises and lowers"));
-  CHECK_THAT(faults(variable({{"parameter", "surcharge_kPa"}, {"surcharge", 0}, {"std_dev", 1}})),
+  CHECK_THAT(scene_faults(variable({{"parameter", "surcharge_kPa"}, {"surcharge", 0}, {"std_dev", 1}})),
              Catch::Contains(at + "variables[0].surcharge: section.surcharges has 0 entries"));
-  CHECK_THAT(faults(variable({{"parameter", "cohesion_kPa"}, {"material", "soil"}, {"std_dev", 3},
+  CHECK_THAT(scene_faults(variable({{"parameter", "cohesion_kPa"}, {"material", "soil"}, {"std_dev", 3},
                               {"distribution", "beta"}})),
              Catch::Contains(at + "variables[0].distribution: "));
   // a correlation outside [-1, 1], of a material without both variables, listed twice
   json scene = li_lumb();
   probabilistic(scene)["correlations"] = {{{"material", "soil"}, {"cohesion_friction", 1.5}}};
-  CHECK_THAT(faults(scene), Catch::Contains(at + "correlations[0].cohesion_friction: "));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + "correlations[0].cohesion_friction: "));
   probabilistic(scene)["correlations"] = {{{"material", "soil"}, {"cohesion_friction", -0.5}},
                                           {{"material", "soil"}, {"cohesion_friction", 0.2}}};
-  CHECK_THAT(faults(scene), Catch::Contains(at + "correlations[1].material: \"soil\" is correlated twice"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + "correlations[1].material: \"soil\" is correlated twice"));
   probabilistic(scene)["correlations"] = {{{"material", "soil"}, {"cohesion_friction", -0.5}}};
-  CHECK(faults(scene).empty());
+  CHECK(scene_faults(scene).empty());
   probabilistic(scene)["variables"].erase(1);
-  CHECK_THAT(faults(scene), Catch::Contains(at + "correlations[0].material: correlating c' and phi' of \"soil\" needs"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + "correlations[0].material: correlating c' and phi' of \"soil\" needs"));
   // the mode and its surface; a method not analysed; a variable listed twice
   scene = li_lumb();
   probabilistic(scene)["mode"] = "given_surface";
-  CHECK_THAT(faults(scene), Catch::Contains(at + "surface: mode \"given_surface\" needs the name"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + "surface: mode \"given_surface\" needs the name"));
   probabilistic(scene)["surface"] = "nowhere";
-  CHECK_THAT(faults(scene), Catch::Contains(at + "surface: no surface of analyses.lem.surfaces is named \"nowhere\""));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + "surface: no surface of analyses.lem.surfaces is named \"nowhere\""));
   probabilistic(scene)["mode"] = "overall";
-  CHECK_THAT(faults(scene), Catch::Contains(at + "surface: a surface is named only with"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + "surface: a surface is named only with"));
   scene = li_lumb();
   probabilistic(scene)["method"] = "spencer";
-  CHECK_THAT(faults(scene), Catch::Contains(at + "method: \"spencer\" is not one of the methods analysed"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + "method: \"spencer\" is not one of the methods analysed"));
   scene = li_lumb();
   probabilistic(scene)["variables"].push_back(probabilistic(scene)["variables"][0]);
-  CHECK_THAT(faults(scene), Catch::Contains(at + "variables[4]: soil cohesion_kPa is listed twice"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + "variables[4]: soil cohesion_kPa is listed twice"));
   probabilistic(scene)["samples"] = 5;
-  CHECK_THAT(faults(scene), Catch::Contains(at + "samples: "));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + "samples: "));
 }
 
 TEST_CASE("probabilistic: a given surface, a correlation and a triangular variable reach the report",
@@ -348,11 +336,11 @@ TEST_CASE("sensitivity: Li & Lumb's slope, the figure and the refusals", "[scene
   // a range without the scene's value, a range beyond the physical one, a missing max
   const std::string at = "analyses.lem.sensitivity.variables[0]";
   scene["analyses"]["lem"]["sensitivity"]["variables"][0]["min"] = 20;
-  CHECK_THAT(faults(scene), Catch::Contains(at + ": its deterministic value must lie in [min, max]"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + ": its deterministic value must lie in [min, max]"));
   scene["analyses"]["lem"]["sensitivity"]["variables"][0]["min"] = -2;
-  CHECK_THAT(faults(scene), Catch::Contains(at + ".min: must be >= 0"));
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + ".min: must be >= 0"));
   scene["analyses"]["lem"]["sensitivity"]["variables"][0].erase("max");
-  CHECK_THAT(faults(scene), Catch::Contains(at + ": missing required key \"max\"") ||
+  CHECK_THAT(scene_faults(scene), Catch::Contains(at + ": missing required key \"max\"") ||
                                 Catch::Contains(at + ".max: "));
 }
 

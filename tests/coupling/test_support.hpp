@@ -88,6 +88,18 @@ inline ProgramRun run_sphslope(const std::string& arguments) {
   return result;
 }
 
+// Every fault parse_scene finds in the scene, one per line (empty when it is valid).
+inline std::string scene_faults(const nlohmann::json& scene) {
+  try {
+    coupling::parse_scene(scene.dump());
+  } catch (const coupling::SceneError& error) {
+    std::string all;
+    for (const std::string& m : error.messages()) all += m + "\n";
+    return all;
+  }
+  return "";
+}
+
 inline std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in.good()) throw std::runtime_error("cannot read " + file.string());  // fails the test

@@ -150,13 +150,13 @@ void read_critical_coefficient(JsonReader& lem, LemAnalysis& result, const std::
   block->finish();
 }
 
-// analyses.lem.probabilistic: the method (one of those analysed; default Bishop when analysed, else the first), the
-// rest in lem_probabilistic.cpp.
-void read_probabilistic_block(JsonReader& lem, LemAnalysis& result, const slope::Section* section,
-                              Diagnostics& diagnostics) {
-  auto block = lem.object("probabilistic", Need::optional,
-                          "an object: {\"variables\": [{\"parameter\": \"cohesion_kPa\", \"material\": \"clay\", "
-                          "\"std_dev\": 3.6}]}");
+// analyses.lem.<key> of the analyses that take one method (probabilistic, sensitivity, rapid_drawdown): the method
+// (one of those analysed; default Bishop when analysed, else the first), the rest by `read` (lem_probabilistic.cpp,
+// lem_drawdown.cpp) into `target`.
+template <class Analysis, class Reader>
+void read_method_block(JsonReader& lem, LemAnalysis& result, const slope::Section* section, Diagnostics& diagnostics,
+                       const char* key, const char* expected, std::optional<Analysis>& target, Reader read) {
+  auto block = lem.object(key, Need::optional, expected);
   if (!block) return;
   std::optional<slope::Method> method = default_method(result);
   read_analysed_method(*block, result, method, diagnostics);
@@ -164,38 +164,22 @@ void read_probabilistic_block(JsonReader& lem, LemAnalysis& result, const slope:
     block->finish();
     return;
   }
-  result.probabilistic = read_probabilistic(*block, result, section, *method);
+  target = read(*block, result, section, *method);
 }
 
-// analyses.lem.rapid_drawdown: the method as for the probabilistic analysis, the rest in lem_drawdown.cpp.
-void read_drawdown_block(JsonReader& lem, LemAnalysis& result, const slope::Section* section,
-                         Diagnostics& diagnostics) {
-  auto block = lem.object("rapid_drawdown", Need::optional,
-                          "an object: {\"water_after\": {\"piezometric_line_m\": [[x, y], ...]}, \"materials\": [...]}");
-  if (!block) return;
-  std::optional<slope::Method> method = default_method(result);
-  read_analysed_method(*block, result, method, diagnostics);
-  if (!method) {
-    block->finish();
-    return;
-  }
-  result.rapid_drawdown = read_drawdown(*block, result, section, *method);
-}
-
-// analyses.lem.sensitivity: the method as for the probabilistic analysis, the rest in lem_probabilistic.cpp.
-void read_sensitivity_block(JsonReader& lem, LemAnalysis& result, const slope::Section* section,
-                            Diagnostics& diagnostics) {
-  auto block = lem.object("sensitivity", Need::optional,
-                          "an object: {\"variables\": [{\"parameter\": \"cohesion_kPa\", \"material\": \"clay\", "
-                          "\"min\": 10, \"max\": 26}]}");
-  if (!block) return;
-  std::optional<slope::Method> method = default_method(result);
-  read_analysed_method(*block, result, method, diagnostics);
-  if (!method) {
-    block->finish();
-    return;
-  }
-  result.sensitivity = read_sensitivity(*block, result, section, *method);
+void read_method_blocks(JsonReader& lem, LemAnalysis& result, const slope::Section* section,
+                        Diagnostics& diagnostics) {
+  read_method_block(lem, result, section, diagnostics, "probabilistic",
+                    "an object: {\"variables\": [{\"parameter\": \"cohesion_kPa\", \"material\": \"clay\", "
+                    "\"std_dev\": 3.6}]}",
+                    result.probabilistic, read_probabilistic);
+  read_method_block(lem, result, section, diagnostics, "sensitivity",
+                    "an object: {\"variables\": [{\"parameter\": \"cohesion_kPa\", \"material\": \"clay\", "
+                    "\"min\": 10, \"max\": 26}]}",
+                    result.sensitivity, read_sensitivity);
+  read_method_block(lem, result, section, diagnostics, "rapid_drawdown",
+                    "an object: {\"water_after\": {\"piezometric_line_m\": [[x, y], ...]}, \"materials\": [...]}",
+                    result.rapid_drawdown, read_drawdown);
 }
 
 void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics& diagnostics) {
@@ -248,9 +232,7 @@ void read_lem(JsonReader& analyses, Scene& scene, bool has_section, Diagnostics&
   read_critical_coefficient(*lem, result, scene.file, diagnostics);
   read_given_surfaces(*lem, scene.section ? &scene.section->section : nullptr, result.search.slicing,
                       result.surfaces);
-  read_probabilistic_block(*lem, result, scene.section ? &scene.section->section : nullptr, diagnostics);
-  read_sensitivity_block(*lem, result, scene.section ? &scene.section->section : nullptr, diagnostics);
-  read_drawdown_block(*lem, result, scene.section ? &scene.section->section : nullptr, diagnostics);
+  read_method_blocks(*lem, result, scene.section ? &scene.section->section : nullptr, diagnostics);
   lem->finish();
 
   if (!scene.section) {
