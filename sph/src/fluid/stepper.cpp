@@ -55,7 +55,7 @@ void Step::initialise() {
   ParticleSet& p = model_.particles;
   const double* speed = p.field(model_.fields.body_speed).data();
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] == kFluid) continue;
+    if (p.kind[i] == kFluid || p.material[i] == coupled_wall_material) continue;  // the coupling moves those
     if (!is_body(i)) {
       p.vx[i] = p.vy[i] = 0.0;  // fixed walls
       continue;

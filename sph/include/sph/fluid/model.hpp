@@ -43,6 +43,11 @@ inline constexpr sphslope::NameTable<RigidBody::Motion, 3> motion_law_names{{{"f
                                                                             {"ln_cosh", RigidBody::Motion::ln_cosh},
                                                                             {"table", RigidBody::Motion::table}}};
 
+// Wall particles of another physics in a coupled run (the soil's, sph/coupled/exchange.hpp): kind wall with this
+// material. The fluid treats them as walls whose positions and velocities the coupling sets before each step; it
+// keeps those through the step (its fixed walls it sets at rest, its bodies' particles it moves itself).
+inline constexpr std::uint16_t coupled_wall_material = 0xffff;
+
 struct Model {
   explicit Model(const Settings& s);
   Settings settings;

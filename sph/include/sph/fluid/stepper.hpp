@@ -8,7 +8,8 @@
 //      V^{n+1} = V** - dt sum m_j (P_i/rho*_i^2 + P_j/rho*_j^2) grad W   correction (eqs. 38-40, 46)
 //      r^{n+1} = r^n + dt/2 (V^n + V^{n+1})                  trapezoidal rule (eqs. 31, 41-42)
 //      rigid bodies moved (prescribed or by gravity and the fluid's pressure force); fluid that left the domain removed
-// Wall particles are fixed (velocity 0) or belong to a rigid body (its velocity), and take part in the continuity
+// Wall particles are fixed (velocity 0), belong to a rigid body (its velocity) or to another physics of a coupled run
+// (coupled_wall_material: the velocity the coupling gives them), and take part in the continuity
 // sums and the viscous term (no-slip); their pressure is extrapolated from the fluid with the hydrostatic difference
 // (and the body's acceleration) and enters the fluid's pressure equation and gradient as a given value.
 // docs/isph.md gives the decisions.

@@ -1,0 +1,51 @@
+#pragma once
+// One time step of a coupled run: the elasto-plastic soil (sph/soil) and the ISPH water (sph/fluid) in one domain,
+// each with its own particle set, stepper and time-step bound, and the exchange between them (exchange.hpp).
+// A step of the water's size dt (docs/coupled.md):
+//   1  the soil's twins in the water take the soil's positions and velocities at t;
+//   2  the water advances from t to t + dt (the soil's surface a moving wall);
+//   3  the water table is read from the water at t + dt and becomes the soil's pore-pressure line;
+//   4  the soil advances from t to t + dt in n = ceil(dt / dt_soil) equal sub-steps, dt_soil its own stable step.
+// A staggered (Gauss-Seidel) explicit scheme: each physics keeps its own stability bound, the water's being the
+// step's and the soil's the sub-steps'. The water's run state is the run's clock.
+#include <memory>
+
+#include "sph/coupled/exchange.hpp"
+#include "sph/engine/stepper.hpp"
+#include "sph/fluid/stepper.hpp"
+#include "sph/soil/soil_step.hpp"
+
+namespace sph::coupled {
+
+class CoupledStep : public Stepper {
+ public:
+  // Adds the soil's twins to the water when it has none. Throws std::invalid_argument when the two models'
+  // gravities or particle spacings differ.
+  CoupledStep(soil::Model& soil, fluid::Model& water);
+
+  // The water table on the soil, then each physics' own start (the soil's geostatic stress with its pore pressure).
+  void initialise() override;
+  // The water's stable step (the soil sub-cycles inside it).
+  double stable_time_step() const override;
+  void advance(double dt) override;
+  Energies energies() const override;  // the sums of both phases
+  Health check_health() const override;  // the soil's, then the water's
+
+  int last_substeps() const { return substeps_; }  // soil sub-steps of the last step
+  double last_soil_time_step() const { return soil_dt_; }  // [s]
+  const fluid::StepDiagnostics& water_diagnostics() const { return water_step_.diagnostics(); }
+  const SoilBoundary& boundary() const { return boundary_; }
+
+ private:
+  void share_water_table();
+
+  soil::Model& soil_;
+  fluid::Model& water_;
+  soil::SoilStep soil_step_;
+  SoilBoundary boundary_;
+  fluid::Step water_step_;
+  int substeps_ = 0;
+  double soil_dt_ = 0;
+};
+
+}  // namespace sph::coupled

@@ -1,0 +1,76 @@
+#include "sph/coupled/coupled_step.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace sph::coupled {
+
+namespace {
+
+const soil::Model& checked(const soil::Model& soil, const fluid::Model& water) {
+  if (soil.settings.gravity_x != water.settings.gravity_x || soil.settings.gravity_y != water.settings.gravity_y) {
+    std::ostringstream os;
+    os << "coupled run: the soil's gravity (" << soil.settings.gravity_x << ", " << soil.settings.gravity_y
+       << ") m/s^2 must equal the water's (" << water.settings.gravity_x << ", " << water.settings.gravity_y << ")";
+    throw std::invalid_argument(os.str());
+  }
+  return soil;
+}
+
+}  // namespace
+
+CoupledStep::CoupledStep(soil::Model& soil, fluid::Model& water)
+    : soil_(soil),
+      water_(water),
+      soil_step_(soil),
+      boundary_(water, checked(soil, water)),
+      water_step_(water) {}
+
+void CoupledStep::share_water_table() {
+  auto table = water_table(water_);
+  soil_.loads.water = std::move(table);
+}
+
+void CoupledStep::initialise() {
+  share_water_table();
+  soil_step_.initialise();
+  boundary_.update(water_, soil_);
+  water_step_.initialise();
+}
+
+double CoupledStep::stable_time_step() const { return water_step_.stable_time_step(); }
+
+void CoupledStep::advance(double dt) {
+  boundary_.update(water_, soil_);
+  water_step_.advance(dt);
+  share_water_table();
+  const double bound = soil_step_.stable_time_step();
+  substeps_ = bound > 0 && std::isfinite(bound) ? static_cast<int>(std::ceil(dt / bound)) : 1;
+  if (substeps_ < 1) substeps_ = 1;
+  soil_dt_ = dt / substeps_;
+  for (int k = 0; k < substeps_; ++k) soil_step_.advance(soil_dt_);
+}
+
+Energies CoupledStep::energies() const {
+  const Energies s = soil_step_.energies(), w = water_step_.energies();
+  Energies e;
+  e.kinetic = s.kinetic + w.kinetic;
+  e.potential = s.potential + w.potential;
+  e.plastic_dissipation = s.plastic_dissipation + w.plastic_dissipation;
+  e.max_speed = std::max(s.max_speed, w.max_speed);
+  return e;
+}
+
+Health CoupledStep::check_health() const {
+  Health h = soil_step_.check_health();
+  if (!h.ok) {
+    h.diagnostic = "soil: " + h.diagnostic;
+    return h;
+  }
+  h = water_step_.check_health();
+  if (!h.ok) h.diagnostic = "water: " + h.diagnostic;
+  return h;
+}
+
+}  // namespace sph::coupled
