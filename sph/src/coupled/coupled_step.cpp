@@ -27,10 +27,7 @@ CoupledStep::CoupledStep(soil::Model& soil, fluid::Model& water)
       boundary_(water, checked(soil, water)),
       water_step_(water) {}
 
-void CoupledStep::share_water_table() {
-  auto table = water_table(water_);
-  soil_.loads.water = std::move(table);
-}
+void CoupledStep::share_water_table() { soil_.loads.water = water_table(water_); }
 
 void CoupledStep::initialise() {
   share_water_table();
