@@ -27,6 +27,25 @@ fs::path case_file(const std::string& stem) { return fs::path(test_paths::source
 
 // ---- scene keys of the matrix's features ----
 
+TEST_CASE("scene: the walls' friction angle comes with the frictional wall condition only", "[stability][scene]") {
+  json scene = read_json(case_file("sph_gravity_ramped"));
+  json& walls = scene["analyses"]["sph"]["walls"];
+  walls["slip"] = "frictional";
+  walls["friction_angle_deg"] = 25;
+  const coupling::Scene read = coupling::parse_scene(scene.dump(), "scene.json");
+  CHECK(read.analyses.sph->settings.wall_slip == sph::soil::WallSlip::frictional);
+  CHECK(read.analyses.sph->settings.wall_friction_angle_deg == 25.0);
+  walls.erase("friction_angle_deg");
+  CHECK(scene_faults(scene).find("analyses.sph.walls.friction_angle_deg: is required with \"slip\": \"frictional\"") !=
+        std::string::npos);
+  walls["friction_angle_deg"] = 90;
+  CHECK(scene_faults(scene).find("analyses.sph.walls.friction_angle_deg: must be in [0, 90) (got 90)") != std::string::npos);
+  walls["friction_angle_deg"] = 20;
+  walls["slip"] = "free_slip";
+  CHECK(scene_faults(scene).find("analyses.sph.walls.friction_angle_deg: is used only with \"slip\": \"frictional\"") !=
+        std::string::npos);
+}
+
 TEST_CASE("stability: gravity ramp and wall layers are read and validated with their JSON paths", "[stability][scene]") {
   json scene = read_json(case_file("sph_gravity_ramped"));
   auto errors_of = [](const json& document) {

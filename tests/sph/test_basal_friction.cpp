@@ -17,6 +17,7 @@
 #include "sph/soil/model.hpp"
 #include "sph/soil/soil_step.hpp"
 #include "sphslope/units.hpp"
+#include "sliding_layer.hpp"
 
 namespace test_basal_friction {
 
@@ -50,31 +51,6 @@ double middle_speed(const sph::ParticleSet& p) {
   return sum / count;
 }
 
-// A layer `rows` particles thick and 1 m long, at rest under its geostatic (K0) stress on a no-slip floor, set
-// sliding at 1 m/s at its middle (x = 1 m) and stretched at `stretch` [1/s] (v = 1 + stretch (x - 1)).
-sph::soil::Model sliding_layer(int rows, double dx, double stretch) {
-  sph::soil::Model m;
-  const sph::soil::Material mat = sph::soil::aluminium_bars();
-  m.materials.push_back(mat);
-  auto& s = m.settings;
-  s.particle_spacing = dx;
-  s.gravity_mode = sph::GravityMode::geostatic_k0;
-  s.output_interval = 0;
-  sph::add_soil(m.particles,
-                sph::lattice_points_in_region(0.5, 0, 1.5, rows * dx, dx, [](double, double) { return true; }), dx,
-                0, mat.density);
-  sph::BoxWalls floor;
-  floor.x_min = 0;
-  floor.x_max = 3.0;
-  floor.y_min = 0;
-  floor.height = 0.1;
-  floor.left = floor.right = false;
-  sph::add_box_walls(m.particles, floor, dx, s.smoothing_length(), 0, mat.density);
-  for (std::size_t i = 0; i < m.particles.size(); ++i)
-    if (is_soil(m.particles, i)) m.particles.vx[i] = 1.0 + stretch * (m.particles.x[i] - 1.0);
-  return m;
-}
-
 // The least-squares slope of y against t.
 double least_squares_slope(const std::vector<double>& t, const std::vector<double>& y) {
   double mt = 0, my = 0;
@@ -95,7 +71,7 @@ double least_squares_slope(const std::vector<double>& t, const std::vector<doubl
 // The deceleration of the sliding layer's middle third [m/s^2]: the least-squares slope of its speed over 0.08-0.24 s
 // (after the start-up, before it stops at about 0.3 s), sampled every 5 ms.
 double sliding_deceleration(int rows, double dx, double stretch = 0.0) {
-  sph::soil::Model m = sliding_layer(rows, dx, stretch);
+  sph::soil::Model m = test_layer::sliding_layer(rows, dx, stretch);
   sph::soil::SoilStep step(m);
   step.initialise();
   std::vector<double> times, speeds;

@@ -147,6 +147,16 @@ std::optional<long> read_section_walls(JsonReader& r, SphAnalysis& a) {
   if (auto sides = read_sides(*walls, "sides", a.section_walls)) a.section_walls = *sides;
   wall_layers = walls->integer("layers", Need::optional);
   read_named(*walls, "slip", sph::soil::wall_slip_names, a.settings.wall_slip);
+  const bool frictional = a.settings.wall_slip == sph::soil::WallSlip::frictional;
+  const auto delta = walls->number("friction_angle_deg", Need::optional, Bounds::half_open(0.0, 90.0));
+  if (delta && !frictional)
+    walls->diagnostics().error(walls->path_of("friction_angle_deg"),
+                               "is used only with \"slip\": \"frictional\" (the walls' Coulomb friction on the soil)");
+  else if (frictional && !walls->has("friction_angle_deg"))
+    walls->diagnostics().error(walls->path_of("friction_angle_deg"),
+                               "is required with \"slip\": \"frictional\": the walls' friction angle delta on the "
+                               "soil in [0, 90) degrees");
+  if (delta && frictional) a.settings.wall_friction_angle_deg = *delta;
   walls->finish();
   return wall_layers;
 }

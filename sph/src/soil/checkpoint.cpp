@@ -14,6 +14,7 @@ void write_checkpoint(const std::string& path, const Model& model) {
 }
 
 void read_checkpoint(const std::string& path, Model& model) {
+  if (model.settings.wall_slip == WallSlip::frictional) register_wall_friction_state(model.particles);
   sph::read_checkpoint(path, model.particles, model.state, fingerprint(model));
 }
 

@@ -25,6 +25,8 @@ SoilFields SoilFields::register_in(ParticleSet& set) {
   return f;
 }
 
+FieldId register_wall_friction_state(ParticleSet& set) { return set.add_field({"wall_friction_push", true, false}); }
+
 SoilArrays::SoilArrays(ParticleSet& s, const SoilFields& f)
     : sxx(s.field(f.sxx).data()),
       syy(s.field(f.syy).data()),

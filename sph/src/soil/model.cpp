@@ -39,6 +39,10 @@ void Settings::validate() const {
           "settings.artificial_stress.exponent must be > 0 (typical 2.55-4)");
   require(std::isfinite(xsph.chi) && xsph.chi >= 0 && xsph.chi <= 1, "settings.xsph.chi must lie in [0, 1]");
   require(std::isfinite(damping) && damping >= 0, "settings.damping must be >= 0 1/s");
+  require(std::isfinite(wall_friction_angle_deg) && wall_friction_angle_deg >= 0 && wall_friction_angle_deg < 90,
+          "settings.wall_friction_angle_deg must lie in [0, 90) degrees");
+  require(wall_friction_angle_deg == 0 || wall_slip == WallSlip::frictional,
+          "settings.wall_friction_angle_deg is used only with the frictional wall condition (wall_slip)");
   require(stress_substeps >= 1 && stress_substeps <= 64, "settings.stress_substeps must lie in [1, 64]");
   require(stress_substeps == 1 || integration == TimeIntegration::verlet,
           "settings.stress_substeps > 1 needs the verlet time integration (the predictor-corrector updates the stress "

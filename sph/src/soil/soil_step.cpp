@@ -59,6 +59,7 @@ SoilStep::SoilStep(Model& model) : model_(model), impl_(std::make_unique<Impl>()
   auto& w = *impl_;
   const std::size_t n = model_.particles.size();
   register_workspace(model_.particles, &w);
+  if (st.wall_slip == WallSlip::frictional) w.wall_push = register_wall_friction_state(model_.particles);
   for (auto* a : {&w.pxx, &w.pyy, &w.pxy, &w.volume, &w.sound, &w.is_soil, &w.rxx, &w.ryy, &w.rxy, &w.xsph_dx,
                   &w.xsph_dy})
     a->assign(n, 0.0);
@@ -211,6 +212,7 @@ void SoilStep::advance_verlet(double dt) {
   ParticleSet& p = model_.particles;
   auto& w = *impl_;
   const double half = 0.5 * dt;
+  w.step_dt = dt;
   {
     const SoilArrays sa = model_.soil();
     const Index ns = static_cast<Index>(w.soil.size());
@@ -322,6 +324,7 @@ void SoilStep::advance_predictor_corrector(double dt) {
   ParticleSet& p = model_.particles;
   auto& w = *impl_;
   const double half = 0.5 * dt;
+  w.step_dt = dt;
   {
     const SoilArrays sa = model_.soil();
     const HalfStep hs(p, w);

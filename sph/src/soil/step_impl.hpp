@@ -60,6 +60,9 @@ struct SoilStep::Impl {
   double w_dx = 1.0;  // kernel value at the particle spacing (artificial stress)
   double gravity_x = 0.0, gravity_y = 0.0;  // gravity of the current evaluation (ramped: at its time), m/s^2
   double load_factor = 0.0;                 // the fraction of the loads acting at that time (as of gravity)
+  double step_dt = 0.0;  // the current step's size (the frictional walls' sticking bound); 0 before the first step
+  std::vector<double> contact_push, contact_nx, contact_ny;  // frictional walls: per-evaluation scratch
+  FieldId wall_push = 0;  // frictional walls: each soil particle's relaxed wall push (register_wall_friction_state)
 
   // Gravity and loads of an evaluation at simulated time `time` (full, or their ramped fraction).
   void set_gravity(const Settings& st, double time) {

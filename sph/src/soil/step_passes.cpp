@@ -2,6 +2,7 @@
 // the neighbours); the equations of each pair term are in terms.hpp.
 #include "step_impl.hpp"
 #include "terms.hpp"
+#include "wall_friction.hpp"
 
 #include <omp.h>
 
@@ -39,7 +40,7 @@ void wall_pass(Model& model, SoilStep::Impl& w, const Kernel& kernel) {
   const SoilArrays sa = model.soil();
   const double support2 = kernel.support() * kernel.support();
   const double gx = w.gravity_x, gy = w.gravity_y;  // the soil's current load (ramped gravity included)
-  const bool no_slip = model.settings.wall_slip == WallSlip::no_slip;
+  const bool no_slip = model.settings.wall_slip == WallSlip::no_slip;  // frictional walls: free-slip ghosts
   const Index nw = static_cast<Index>(w.walls.size());
   const double* x = p.x.data();
   const double* y = p.y.data();
@@ -93,7 +94,7 @@ void wall_pass(Model& model, SoilStep::Impl& w, const Kernel& kernel) {
       sa.sxx[i] -= hydro * inv;
       sa.syy[i] -= hydro * inv;
       sa.szz[i] = (szz - hydro) * inv;
-    } else {
+  } else {
       sa.sxx[i] = sa.syy[i] = sa.szz[i] = sa.sxy[i] = 0.0;
       p.vx[i] = p.vy[i] = 0.0;
     }
@@ -175,6 +176,7 @@ struct PairOptions {
   bool artificial_stress = false;  // the artificial stress term (Model::uses_artificial_stress)
   bool xsph = false;               // the XSPH velocity correction (Settings::xsph)
   bool corrected = false;          // the corrected kernel gradient (Settings::kernel_gradient)
+  bool frictional = false;         // the walls' forces gathered apart, for their friction (WallSlip::frictional)
 };
 
 // What the pair sums read, gathered once per evaluation (after the sort, the wall pass and the prepare pass).
@@ -182,15 +184,16 @@ struct PairInputs {
   const double *x, *y, *vx, *vy, *rho, *mass;
   const double *pxx, *pyy, *pxy, *vol, *snd, *rxx, *ryy, *rxy, *is_soil;  // prepare_pass
   const double *bxx, *bxy, *byy;                                           // correction_pass (corrected gradient)
+  const double *wall_nx, *wall_ny;                                         // the walls' inward normals
   double h, support2, eta2, alpha, beta, inv_w_dx, as_n;
   PairOptions options;
 
-  PairInputs(const ParticleSet& p, const SoilStep::Impl& w, const Settings& st, double h_, double support,
-             const PairOptions& options_)
+  PairInputs(const ParticleSet& p, const ConstSoilArrays& sa, const SoilStep::Impl& w, const Settings& st, double h_,
+             double support, const PairOptions& options_)
       : x(p.x.data()), y(p.y.data()), vx(p.vx.data()), vy(p.vy.data()), rho(p.rho.data()), mass(p.mass.data()),
         pxx(w.pxx.data()), pyy(w.pyy.data()), pxy(w.pxy.data()), vol(w.volume.data()), snd(w.sound.data()),
         rxx(w.rxx.data()), ryy(w.ryy.data()), rxy(w.rxy.data()), is_soil(w.is_soil.data()), bxx(w.bxx.data()),
-        bxy(w.bxy.data()), byy(w.byy.data()), h(h_),
+        bxy(w.bxy.data()), byy(w.byy.data()), wall_nx(sa.wall_nx), wall_ny(sa.wall_ny), h(h_),
         support2(support * support), eta2(st.viscosity.eta_factor * h_ * h_), alpha(st.viscosity.alpha),
         beta(st.viscosity.beta), inv_w_dx(1.0 / w.w_dx), as_n(st.artificial_stress.exponent), options(options_) {}
 };
@@ -199,6 +202,8 @@ struct PairInputs {
 struct PairSums {
   double drho = 0, ax = 0, ay = 0, xsph_x = 0, xsph_y = 0;
   VelocityGradient gradient;
+  // With frictional walls: the walls' share of the acceleration (not in ax, ay) and sum_j W_ij n_j over the walls.
+  double wall_ax = 0, wall_ay = 0, wall_nx = 0, wall_ny = 0;
 };
 
 // grad_i W_ij of a pair multiplied by a particle's symmetric correction B = [bxx bxy; bxy byy].
@@ -209,7 +214,7 @@ inline PairGeometry corrected(const PairGeometry& g, double bxx, double bxy, dou
 // The forces of a pair with the corrected gradient: m_j [(P_i - Pi/2 I + f^n R_i) B_i + (P_j - Pi/2 I + f^n R_j) B_j]
 // grad_i W_ij, P = sigma/rho^2: antisymmetric in i and j, exact for a linear stress field in a regular interior.
 inline void corrected_momentum(std::size_t i, std::uint32_t j, const PairInputs& in, double pi_ij, double fn,
-                               const PairGeometry& gi, const PairGeometry& gj, PairSums& sum) {
+                               const PairGeometry& gi, const PairGeometry& gj, double& ax, double& ay) {
   const double half = 0.5 * pi_ij;
   double ixx = in.pxx[i] - half, iyy = in.pyy[i] - half, ixy = in.pxy[i];
   double jxx = in.pxx[j] - half, jyy = in.pyy[j] - half, jxy = in.pxy[j];
@@ -217,8 +222,8 @@ inline void corrected_momentum(std::size_t i, std::uint32_t j, const PairInputs&
     ixx += fn * in.rxx[i]; iyy += fn * in.ryy[i]; ixy += fn * in.rxy[i];
     jxx += fn * in.rxx[j]; jyy += fn * in.ryy[j]; jxy += fn * in.rxy[j];
   }
-  momentum(in.mass[j], ixx, iyy, ixy, gi, sum.ax, sum.ay);
-  momentum(in.mass[j], jxx, jyy, jxy, gj, sum.ax, sum.ay);
+  momentum(in.mass[j], ixx, iyy, ixy, gi, ax, ay);
+  momentum(in.mass[j], jxx, jyy, jxy, gj, ax, ay);
 }
 
 // The pair terms of particle i: the kinematic terms [C, L, X] when kRates, the forces [AV, AS, M] when kForces
@@ -255,7 +260,9 @@ struct PairTerms {
       if constexpr (kForces) {
         const double pi_ij = artificial_viscosity(in.h, in.eta2, in.alpha, in.beta, ci, in.snd[j], rho_bar, dvx, dvy, g);
         const double fn = artificial_stress ? artificial_stress_weight(kernel.value(r), in.inv_w_dx, in.as_n) : 0.0;
-        corrected_momentum(i, j, in, pi_ij, fn, gi, corrected(g, in.bxx[j], in.bxy[j], in.byy[j]), sum);
+        const bool wall = wall_share(j, r, sum);
+        corrected_momentum(i, j, in, pi_ij, fn, gi, corrected(g, in.bxx[j], in.bxy[j], in.byy[j]),
+                           wall ? sum.wall_ax : sum.ax, wall ? sum.wall_ay : sum.ay);
       }
       if constexpr (kRates) add_xsph(mj, rho_bar, r, dvx, dvy, sum);
       return;
@@ -278,9 +285,22 @@ struct PairTerms {
         tyy += fn * (ryyi + in.ryy[j]);
         txy += fn * (rxyi + in.rxy[j]);
       }
-      momentum(mj, txx, tyy, txy, g, sum.ax, sum.ay);
+      if (wall_share(j, r, sum))
+        momentum(mj, txx, tyy, txy, g, sum.wall_ax, sum.wall_ay);
+      else
+        momentum(mj, txx, tyy, txy, g, sum.ax, sum.ay);
     }
     if constexpr (kRates) add_xsph(mj, rho_bar, r, dvx, dvy, sum);
+  }
+
+  // With frictional walls, whether j is a wall (its force then goes to the walls' share), adding W_ij n_j to the
+  // walls' normal sum.
+  bool wall_share(std::uint32_t j, double r, PairSums& sum) const {
+    if (!in.options.frictional || in.is_soil[j] != 0.0) return false;
+    const double wr = kernel.value(r);
+    sum.wall_nx += wr * in.wall_nx[j];
+    sum.wall_ny += wr * in.wall_ny[j];
+    return true;
   }
 
   // [X] the XSPH sum, when the run has it.
@@ -373,6 +393,34 @@ struct LoadTerms {
   }
 };
 
+// Particle i's density and stress rates (and the velocity gradient, for stress sub-steps) from its pair sums [C, L,
+// E, P, J], and its XSPH correction when the run has it.
+inline void write_kinematic_rates(const ParticleSet& p, const SoilArrays& sa, SoilStep::Impl& w,
+                                  const MaterialConstants& mc, std::size_t i, const PairSums& sum, bool xsph,
+                                  double chi) {
+  sa.drho[i] = sum.drho;
+  // [L] strain rate and spin, [E, P, J] the stress rate of the material
+  const VelocityGradient& L = sum.gradient;
+  const Stress s{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
+  const StressRate sr = stress_rate(mc, s, L.xx, L.yy, 0.5 * (L.xy + L.yx), 0.5 * (L.xy - L.yx));
+  if (!w.lxx.empty()) {
+    w.lxx[i] = L.xx;
+    w.lyy[i] = L.yy;
+    w.lexy[i] = 0.5 * (L.xy + L.yx);
+    w.lwxy[i] = 0.5 * (L.xy - L.yx);
+  }
+  sa.dsxx[i] = sr.rate.xx;
+  sa.dsyy[i] = sr.rate.yy;
+  sa.dszz[i] = sr.rate.zz;
+  sa.dsxy[i] = sr.rate.xy;
+  sa.dplastic_strain[i] = sr.plastic_strain_rate;
+  sa.dplastic_work[i] = sr.plastic_work_rate / p.rho[i];
+  if (xsph) {
+    w.xsph_dx[i] = chi * sum.xsph_x;
+    w.xsph_dy[i] = chi * sum.xsph_y;
+  }
+}
+
 // The rates of every soil particle; pairs are gathered from the perspective of i (no write conflicts). kRates: sorts
 // by cell first and writes the density and stress rates (and XSPH); kForces: writes the acceleration.
 template <class Kernel, bool kRates, bool kForces>
@@ -380,7 +428,7 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   ParticleSet& p = model.particles;
   const Settings& st = model.settings;
   const PairOptions options{self.artificial_stress_enabled(), st.xsph.enabled,
-                            st.kernel_gradient == KernelGradient::corrected};
+                            st.kernel_gradient == KernelGradient::corrected, st.wall_slip == WallSlip::frictional};
   const Kernel kernel(self.smoothing_length());
   if constexpr (kRates) sort_and_index(model, w, kernel.support());
   wall_pass(model, w, kernel);
@@ -388,10 +436,11 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
                st.artificial_stress.epsilon);
   if (options.corrected) correction_pass(p, w, kernel);
   const SoilArrays sa = model.soil();  // after the sort: it may have swapped the arrays' buffers
-  const PairInputs in(p, w, st, kernel.h(), kernel.support(), options);
+  const PairInputs in(p, ConstSoilArrays(sa), w, st, kernel.h(), kernel.support(), options);
   const double chi = st.xsph.chi;
   const double gx = w.gravity_x, gy = w.gravity_y, damping = st.damping;
   const LoadTerms loads(model, w.load_factor);
+  const WallFriction friction(model, w, self.max_sound_speed());  // inert without frictional walls
   const auto& mc = self.material_constants();
   const CellList& cells = w.sorted.cells();
 
@@ -428,31 +477,16 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
       sa.ax[i] = sum.ax + gx - damping * vxi;
       sa.ay[i] = sum.ay + gy - damping * vyi;
       if (loads.active) loads.add(p, i, sa.ax[i], sa.ay[i]);
-    }
-    if constexpr (kRates) {
-      sa.drho[i] = sum.drho;
-      // [L] strain rate and spin, [E, P, J] the stress rate of the material
-      const VelocityGradient& L = sum.gradient;
-      const Stress s{sa.sxx[i], sa.syy[i], sa.szz[i], sa.sxy[i]};
-      const StressRate sr = stress_rate(mc[p.material[i]], s, L.xx, L.yy, 0.5 * (L.xy + L.yx), 0.5 * (L.xy - L.yx));
-      if (!w.lxx.empty()) {
-        w.lxx[i] = L.xx;
-        w.lyy[i] = L.yy;
-        w.lexy[i] = 0.5 * (L.xy + L.yx);
-        w.lwxy[i] = 0.5 * (L.xy - L.yx);
-      }
-      sa.dsxx[i] = sr.rate.xx;
-      sa.dsyy[i] = sr.rate.yy;
-      sa.dszz[i] = sr.rate.zz;
-      sa.dsxy[i] = sr.rate.xy;
-      sa.dplastic_strain[i] = sr.plastic_strain_rate;
-      sa.dplastic_work[i] = sr.plastic_work_rate / p.rho[i];
-      if (options.xsph) {
-        w.xsph_dx[i] = chi * sum.xsph_x;
-        w.xsph_dy[i] = chi * sum.xsph_y;
+      if (options.frictional) {
+        sa.ax[i] += sum.wall_ax;
+        sa.ay[i] += sum.wall_ay;
+        friction.record(i, sum.wall_ax, sum.wall_ay, sum.wall_nx, sum.wall_ny);
       }
     }
+    if constexpr (kRates) write_kinematic_rates(p, sa, w, mc[p.material[i]], i, sum, options.xsph, chi);
   }
+  if constexpr (kForces)
+    if (options.frictional) friction.apply(model, w, kernel);
 }
 
 template <class Kernel>

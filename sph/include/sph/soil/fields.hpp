@@ -19,6 +19,11 @@ struct SoilFields {
   static SoilFields register_in(ParticleSet& set);
 };
 
+// The frictional walls' state (WallSlip::frictional): each soil particle's wall push relaxed in time [m/s^2]
+// (sph/src/soil/step_passes.cpp, WallFriction), checkpointed. SoilStep and read_checkpoint register it when the walls
+// are frictional; other models do not carry it. Returns its id (the same on a second call).
+FieldId register_wall_friction_state(ParticleSet& set);
+
 // Raw pointers into the soil arrays of one particle set; valid until particles are added.
 struct SoilArrays {
   double *sxx, *syy, *szz, *sxy, *plastic_strain, *plastic_work, *wall_nx, *wall_ny;

@@ -17,12 +17,14 @@
 namespace sph::soil {
 
 enum class WallSlip {
-  no_slip,    // wall ghost velocity = -(Shepard average of neighbouring soil velocity)
-  free_slip,  // wall ghost velocity = soil average mirrored in the wall normal (tangential part kept)
+  no_slip,     // wall ghost velocity = -(Shepard average of neighbouring soil velocity)
+  free_slip,   // wall ghost velocity = soil average mirrored in the wall normal (tangential part kept)
+  frictional,  // free-slip ghosts, and Coulomb friction tan(delta) times the walls' normal push on each soil
+               // particle, against its sliding (Settings::wall_friction_angle_deg; docs/sph.md, "Walls")
 };
 // The conditions' names in scene files (analyses.sph.walls.slip).
-inline constexpr sphslope::NameTable<WallSlip, 2> wall_slip_names{
-    {{"no_slip", WallSlip::no_slip}, {"free_slip", WallSlip::free_slip}}};
+inline constexpr sphslope::NameTable<WallSlip, 3> wall_slip_names{
+    {{"no_slip", WallSlip::no_slip}, {"free_slip", WallSlip::free_slip}, {"frictional", WallSlip::frictional}}};
 
 enum class ArtificialStressMode { off, on, automatic /* on iff some plastic material has cohesion > 0 */ };
 // The modes' names in scene files (analyses.sph.artificial_stress.mode).
@@ -85,6 +87,7 @@ struct Settings : EngineSettings {
   Xsph xsph;
   KernelGradient kernel_gradient = KernelGradient::standard;
   WallSlip wall_slip = WallSlip::no_slip;
+  double wall_friction_angle_deg = 0.0;  // delta of WallSlip::frictional, in [0, 90) [deg]; 0 with the others
   double damping = 0.0;          // optional linear velocity damping [1/s] (a -= damping * v), 0 = none
   // The default is the sub-stepped Verlet step (docs/sph.md, "Time step": the predictor-corrector at its default
   // step runs a granular collapse about 9 % further than at a step eight times smaller).
