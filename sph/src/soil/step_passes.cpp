@@ -94,7 +94,7 @@ void wall_pass(Model& model, SoilStep::Impl& w, const Kernel& kernel) {
       sa.sxx[i] -= hydro * inv;
       sa.syy[i] -= hydro * inv;
       sa.szz[i] = (szz - hydro) * inv;
-  } else {
+    } else {
       sa.sxx[i] = sa.syy[i] = sa.szz[i] = sa.sxy[i] = 0.0;
       p.vx[i] = p.vy[i] = 0.0;
     }
@@ -440,7 +440,7 @@ void evaluate_rates(SoilStep& self, Model& model, SoilStep::Impl& w) {
   const double chi = st.xsph.chi;
   const double gx = w.gravity_x, gy = w.gravity_y, damping = st.damping;
   const LoadTerms loads(model, w.load_factor);
-  const WallFriction friction(model, w, self.max_sound_speed());  // inert without frictional walls
+  const WallFriction friction(model, w, self.max_sound_speed(), kForces && options.frictional);  // else inert
   const auto& mc = self.material_constants();
   const CellList& cells = w.sorted.cells();
 

@@ -33,9 +33,10 @@ struct WallFriction {
   double* raw = nullptr;                          // this evaluation's push a_n of each particle [m/s^2]
   double *nx = nullptr, *ny = nullptr;            // ... and its contact normal (0, 0 without wall neighbours)
 
-  WallFriction(Model& model, SoilStep::Impl& w, double c_max) {
+  // Inert (no work, no scratch) unless `active`: the evaluation computes forces and the walls are frictional.
+  WallFriction(Model& model, SoilStep::Impl& w, double c_max, bool active) {
+    if (!active) return;
     const Settings& st = model.settings;
-    if (st.wall_slip != WallSlip::frictional) return;
     tan_delta = std::tan(st.wall_friction_angle_deg * sphslope::degree);
     dt = w.step_dt;
     const double relaxation_time = kFrictionRelaxation * st.smoothing_length() / c_max;

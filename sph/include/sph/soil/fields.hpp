@@ -20,7 +20,7 @@ struct SoilFields {
 };
 
 // The frictional walls' state (WallSlip::frictional): each soil particle's wall push relaxed in time [m/s^2]
-// (sph/src/soil/step_passes.cpp, WallFriction), checkpointed. SoilStep and read_checkpoint register it when the walls
+// (sph/src/soil/wall_friction.hpp), checkpointed. SoilStep and read_checkpoint register it when the walls
 // are frictional; other models do not carry it. Returns its id (the same on a second call).
 FieldId register_wall_friction_state(ParticleSet& set);
 
