@@ -14,10 +14,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <stdexcept>
 
+#include "same_state.hpp"
 #include "sph/coupled/coupled_step.hpp"
+#include "sph/coupled/model.hpp"
 #include "sph/engine/fill.hpp"
 
 namespace test_coupled {
@@ -231,6 +236,73 @@ TEST_CASE("coupled run: still water over a submerged soil layer stays at rest wi
   CHECK(fluid == fluid0);
   CHECK(std::abs(surface - top0) < 0.1 * kDx);
   CHECK(lowest_water > kSoilTop);
+}
+
+namespace {
+
+// The still layer of the test above as a coupled model run to `end` [s], frames every 0.1 s.
+sph::coupled::Model still_model(double end) {
+  sph::coupled::Model m(soil_layer(), water_over_layer());
+  m.water.settings.end_time = end;
+  m.water.settings.output_interval = 0.1;
+  return m;
+}
+
+std::string file_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+}  // namespace
+
+TEST_CASE("coupled run: the run loop runs both phases, writes frames with a phase array, and a resumed run is "
+          "bitwise the uninterrupted one",
+          "[sph][coupled]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "sphslope_test_coupled_run";
+  fs::remove_all(dir);
+  sph::RunOptions options;
+  options.output_dir = (dir / "whole").string();
+  auto whole = still_model(0.3);
+  int most_substeps = 0;
+  const sph::RunSummary s1 = sph::coupled::run(whole, options, {}, [&](const sph::coupled::CoupledStep& step,
+                                                                        const sph::RunState&) {
+    most_substeps = std::max(most_substeps, step.last_substeps());
+  });
+  CHECK(s1.stopped_because == "end_time");
+  CHECK(whole.water.state.time == Approx(0.3));
+  CHECK(std::abs(whole.soil.state.time - whole.water.state.time) < 1e-9);
+  CHECK(most_substeps > 1);  // the soil sub-cycles inside the water's step
+  CHECK(s1.frames_written == 4);  // t = 0, 0.1, 0.2, 0.3
+  // a frame: every soil and wall particle of the soil's set and every water particle, with their phases
+  const std::string frame = file_text(dir / "whole" / "frames" / "frame_000003.vtu");
+  const std::size_t points = whole.soil.particles.size() + whole.water.particles.count(sph::ParticleKind::material);
+  CHECK(frame.find("NumberOfPoints=\"" + std::to_string(points) + "\"") != std::string::npos);
+  CHECK(frame.find("Name=\"phase\"") != std::string::npos);
+  CHECK(frame.find("Name=\"plastic_strain\"") != std::string::npos);  // the soil's
+  CHECK(frame.find("Name=\"pressure\"") != std::string::npos);
+  // interrupted after 40 steps (its checkpoint written on the stop), then resumed from it in a fresh model
+  options.output_dir = (dir / "split").string();
+  options.max_steps = 40;
+  auto first = still_model(0.3);
+  const sph::RunSummary s2 = sph::coupled::run(first, options);
+  CHECK(s2.stopped_because == "step_limit");
+  REQUIRE(first.water.state.time < 0.3);
+  auto resumed = still_model(0.3);
+  sph::coupled::read_checkpoint((dir / "split" / "checkpoint.bin").string(), resumed);
+  CHECK(resumed.water.state.step == 40);
+  options.max_steps = 0;
+  const sph::RunSummary s3 = sph::coupled::run(resumed, options);
+  CHECK(s3.stopped_because == "end_time");
+  CHECK(s3.total_steps == s1.total_steps);
+  CHECK(same_state::differing_values(resumed.soil.particles, whole.soil.particles) == 0);
+  CHECK(same_state::differing_values(resumed.water.particles, whole.water.particles) == 0);
+  CHECK(file_text(dir / "split" / "energy.csv") == file_text(dir / "whole" / "energy.csv"));
+  // a soil model's checkpoint is not a coupled one
+  auto other = still_model(0.3);
+  CHECK_THROWS_WITH(sph::coupled::read_checkpoint((dir / "whole" / "energy.csv").string(), other),
+                    Catch::Contains("is not the checkpoint of a coupled run"));
+  fs::remove_all(dir);
 }
 
 }  // namespace test_coupled

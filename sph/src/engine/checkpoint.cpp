@@ -62,8 +62,7 @@ struct Reader {
 
 }  // namespace
 
-void write_checkpoint(const std::string& path, const ParticleSet& set, const RunState& s,
-                      const CheckpointFingerprint& fingerprint) {
+std::string checkpoint_bytes(const ParticleSet& set, const RunState& s, const CheckpointFingerprint& fingerprint) {
   Writer w;
   ParticleSet& particles = const_cast<ParticleSet&>(set);  // read only: for_each_* are not const
   w.buf.reserve(set.size() * (static_cast<std::size_t>(particles.double_array_count()) * 8 + 16) + 4096);
@@ -95,14 +94,27 @@ void write_checkpoint(const std::string& path, const ParticleSet& set, const Run
   w.put_vec(set.material);
   w.put_vec(set.kind);
   w.put<std::uint64_t>(fnv1a(w.buf.data(), w.buf.size()));
-  write_file_atomically(path, w.buf);
+  return std::move(w.buf);
+}
+
+void write_checkpoint(const std::string& path, const ParticleSet& set, const RunState& s,
+                      const CheckpointFingerprint& fingerprint) {
+  write_file_atomically(path, checkpoint_bytes(set, s, fingerprint));
+}
+
+std::string read_checkpoint_file(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error("cannot open checkpoint " + path);
+  return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
 }
 
 void read_checkpoint(const std::string& path, ParticleSet& set, RunState& state,
                      const CheckpointFingerprint& expected) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw std::runtime_error("cannot open checkpoint " + path);
-  const std::string buf((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  restore_checkpoint(read_checkpoint_file(path), path, set, state, expected);
+}
+
+void restore_checkpoint(const std::string& buf, const std::string& path, ParticleSet& set, RunState& state,
+                        const CheckpointFingerprint& expected) {
   if (buf.size() < 16 + 8 || std::memcmp(buf.data(), kMagic, 16) != 0)
     throw std::runtime_error(path + " is not an sphslope checkpoint");
   std::uint64_t stored_sum;

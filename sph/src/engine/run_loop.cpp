@@ -186,7 +186,10 @@ class Loop {
     if (!files_) return;
     if (o_.write_frames) {
       const std::string name = frame_name(rs.frames_written);
-      write_vtu(o_.output_dir + "/" + name, t_.particles, rs.time, t_.stepper.derived_outputs());
+      if (t_.write_frame)
+        t_.write_frame(o_.output_dir + "/" + name, rs.time);
+      else
+        write_vtu(o_.output_dir + "/" + name, t_.particles, rs.time, t_.stepper.derived_outputs());
       rs.frame_times.push_back(rs.time);
       pvd_.emplace_back(rs.time, name);
       write_pvd(o_.output_dir + "/frames.pvd", pvd_);

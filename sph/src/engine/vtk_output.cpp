@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -27,12 +28,26 @@ struct Appended {
   }
 };
 
-}  // namespace
+// A frame's point data gathered from one or more particle sets, in the order it is written.
+struct Frame {
+  std::vector<double> x, y, vx, vy, ux, uy, rho;  // position, velocity, displacement [m, m/s], density
+  std::vector<std::pair<std::string, std::vector<double>>> scalars;  // registered fields, then derived ones
+  std::vector<std::int32_t> material, kind, phase;  // phase: empty when the frame has one set
+  std::vector<std::uint32_t> id;
+  std::size_t size() const { return x.size(); }
+};
 
-void write_vtu(const std::string& path, const ParticleSet& p, double time, const std::vector<DerivedField>& derived) {
-  const std::size_t n = p.size();
+std::vector<double>& scalar(Frame& f, const std::string& name) {
+  for (auto& [n, v] : f.scalars)
+    if (n == name) return v;
+  f.scalars.emplace_back(name, std::vector<double>());
+  return f.scalars.back().second;
+}
+
+void write_frame(const std::string& path, const Frame& f, double time) {
+  const std::size_t n = f.size();
   std::vector<double> v3(3 * n);
-  for (std::size_t i = 0; i < n; ++i) { v3[3 * i] = p.x[i]; v3[3 * i + 1] = p.y[i]; v3[3 * i + 2] = 0; }
+  for (std::size_t i = 0; i < n; ++i) { v3[3 * i] = f.x[i]; v3[3 * i + 1] = f.y[i]; v3[3 * i + 2] = 0; }
   std::vector<std::int64_t> conn(n), offs(n);
   for (std::size_t i = 0; i < n; ++i) { conn[i] = static_cast<std::int64_t>(i); offs[i] = static_cast<std::int64_t>(i + 1); }
   std::vector<std::uint8_t> types(n, 1);  // VTK_VERTEX
@@ -47,19 +62,16 @@ void write_vtu(const std::string& path, const ParticleSet& p, double time, const
   all.add("types", "UInt8", 1, types);
   const std::string cells_xml = all.header;
   all.header.clear();
-  for (std::size_t i = 0; i < n; ++i) { v3[3 * i] = p.vx[i]; v3[3 * i + 1] = p.vy[i]; v3[3 * i + 2] = 0; }
+  for (std::size_t i = 0; i < n; ++i) { v3[3 * i] = f.vx[i]; v3[3 * i + 1] = f.vy[i]; v3[3 * i + 2] = 0; }
   all.add("velocity", "Float64", 3, v3);
-  for (std::size_t i = 0; i < n; ++i) { v3[3 * i] = p.x[i] - p.x0[i]; v3[3 * i + 1] = p.y[i] - p.y0[i]; v3[3 * i + 2] = 0; }
+  for (std::size_t i = 0; i < n; ++i) { v3[3 * i] = f.ux[i]; v3[3 * i + 1] = f.uy[i]; v3[3 * i + 2] = 0; }
   all.add("displacement", "Float64", 3, v3);
-  // the physics' own arrays, as registered, then the quantities it derives for output
-  for (FieldId f = 0; f < p.field_count(); ++f)
-    if (p.spec(f).write_vtu) all.add(p.spec(f).name.c_str(), "Float64", 1, p.field(f));
-  for (const DerivedField& d : derived) all.add(d.name.c_str(), "Float64", 1, d.values);
-  all.add("density", "Float64", 1, p.rho);
-  std::vector<std::int32_t> mat(p.material.begin(), p.material.end()), kind(p.kind.begin(), p.kind.end());
-  all.add("material", "Int32", 1, mat);
-  all.add("kind", "Int32", 1, kind);
-  all.add("id", "UInt32", 1, p.id);
+  for (const auto& [name, values] : f.scalars) all.add(name.c_str(), "Float64", 1, values);
+  all.add("density", "Float64", 1, f.rho);
+  all.add("material", "Int32", 1, f.material);
+  all.add("kind", "Int32", 1, f.kind);
+  all.add("id", "UInt32", 1, f.id);
+  if (!f.phase.empty()) all.add("phase", "Int32", 1, f.phase);
   const std::string pd_xml = all.header;
 
   std::ostringstream os;
@@ -79,6 +91,54 @@ void write_vtu(const std::string& path, const ParticleSet& p, double time, const
   out += all.data;
   out += "\n  </AppendedData>\n</VTKFile>\n";
   write_file_atomically(path, out);
+}
+
+// Appends the particles of `part` its phase keeps (all of them when it has none) to the frame. A scalar the part
+// lacks is NaN for its particles; one the frame has not seen yet is NaN for the particles before.
+void gather(const FramePart& part, Frame& f) {
+  const ParticleSet& p = *part.particles;
+  const std::size_t before = f.size();
+  std::vector<std::size_t> keep;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (part.phase.empty() || part.phase[i] >= 0) keep.push_back(i);
+  for (const std::size_t i : keep) {
+    f.x.push_back(p.x[i]);
+    f.y.push_back(p.y[i]);
+    f.vx.push_back(p.vx[i]);
+    f.vy.push_back(p.vy[i]);
+    f.ux.push_back(p.x[i] - p.x0[i]);
+    f.uy.push_back(p.y[i] - p.y0[i]);
+    f.rho.push_back(p.rho[i]);
+    f.material.push_back(p.material[i]);
+    f.kind.push_back(p.kind[i]);
+    f.id.push_back(p.id[i]);
+    if (!part.phase.empty()) f.phase.push_back(part.phase[i]);
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto append = [&](const std::string& name, const std::vector<double>& values) {
+    std::vector<double>& column = scalar(f, name);
+    column.resize(before, nan);
+    for (const std::size_t i : keep) column.push_back(values[i]);
+  };
+  for (FieldId k = 0; k < p.field_count(); ++k)
+    if (p.spec(k).write_vtu) append(p.spec(k).name, p.field(k));
+  for (const DerivedField& d : part.derived) append(d.name, d.values);
+  for (auto& [name, column] : f.scalars) column.resize(f.size(), nan);
+}
+
+}  // namespace
+
+void write_vtu(const std::string& path, const ParticleSet& p, double time, const std::vector<DerivedField>& derived) {
+  Frame f;
+  gather({&p, derived, {}}, f);
+  write_frame(path, f, time);
+}
+
+void write_vtu(const std::string& path, const std::vector<FramePart>& parts, double time) {
+  Frame f;
+  for (const FramePart& part : parts) gather(part, f);
+  if (f.phase.size() != f.size()) throw std::invalid_argument("write_vtu: every part of a frame needs its phases");
+  write_frame(path, f, time);
 }
 
 void write_pvd(const std::string& path, const std::vector<std::pair<double, std::string>>& frames) {

@@ -30,4 +30,12 @@ void read_checkpoint(const std::string& path, Model& model) {
   sph::read_checkpoint(path, model.particles, model.state, fingerprint(model));
 }
 
+std::string checkpoint_bytes(const Model& model) {
+  return sph::checkpoint_bytes(model.particles, model.state, fingerprint(model));
+}
+
+void restore_checkpoint(const std::string& bytes, const std::string& path, Model& model) {
+  sph::restore_checkpoint(bytes, path, model.particles, model.state, fingerprint(model));
+}
+
 }  // namespace sph::fluid

@@ -14,8 +14,16 @@ void write_checkpoint(const std::string& path, const Model& model) {
 }
 
 void read_checkpoint(const std::string& path, Model& model) {
+  restore_checkpoint(sph::read_checkpoint_file(path), path, model);
+}
+
+std::string checkpoint_bytes(const Model& model) {
+  return sph::checkpoint_bytes(model.particles, model.state, fingerprint(model));
+}
+
+void restore_checkpoint(const std::string& bytes, const std::string& path, Model& model) {
   if (model.settings.wall_slip == WallSlip::frictional) register_wall_friction_state(model.particles);
-  sph::read_checkpoint(path, model.particles, model.state, fingerprint(model));
+  sph::restore_checkpoint(bytes, path, model.particles, model.state, fingerprint(model));
 }
 
 }  // namespace sph::soil

@@ -35,6 +35,8 @@ class CoupledStep : public Stepper {
   double last_soil_time_step() const { return soil_dt_; }  // [s]
   const fluid::StepDiagnostics& water_diagnostics() const { return water_step_.diagnostics(); }
   const SoilBoundary& boundary() const { return boundary_; }
+  // The soil's quantities derived for frames (its pressure -I1/3 [Pa]).
+  std::vector<DerivedField> soil_outputs() const { return soil_step_.derived_outputs(); }
 
  private:
   void share_water_table();

@@ -39,4 +39,13 @@ void write_checkpoint(const std::string& path, const ParticleSet& particles, con
 void read_checkpoint(const std::string& path, ParticleSet& particles, RunState& state,
                      const CheckpointFingerprint& expected);
 
+// The same in memory, for a file that holds more than one particle set (sph/coupled/model.hpp): the bytes
+// write_checkpoint writes, and the restore read_checkpoint makes from them (`path` names the file in messages).
+std::string checkpoint_bytes(const ParticleSet& particles, const RunState& state,
+                             const CheckpointFingerprint& fingerprint);
+void restore_checkpoint(const std::string& bytes, const std::string& path, ParticleSet& particles, RunState& state,
+                        const CheckpointFingerprint& expected);
+// A checkpoint file's bytes. Throws std::runtime_error when it cannot be opened.
+std::string read_checkpoint_file(const std::string& path);
+
 }  // namespace sph

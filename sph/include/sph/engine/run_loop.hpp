@@ -88,6 +88,8 @@ struct RunTarget {
   double blow_up_energy_factor = 10;      // stop if KE > factor * (released potential energy + energy_floor)
   double energy_floor = 0;                // [J/m]
   std::function<void(const std::string& path)> write_checkpoint;
+  // Writes a frame (path, time); when empty the loop writes `particles` with the stepper's derived outputs.
+  std::function<void(const std::string& path, double time)> write_frame;
 };
 
 RunSummary run_loop(RunTarget& target, const RunOptions& options, const RunCallbacks& callbacks = {});

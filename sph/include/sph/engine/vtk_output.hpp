@@ -20,6 +20,16 @@ struct DerivedField {
 void write_vtu(const std::string& path, const ParticleSet& particles, double time,
                const std::vector<DerivedField>& derived = {});
 
+// One particle set's share of a frame that shows several (a coupled run's soil and water): phase[i] is particle i's
+// value in the frame's "phase" array, or -1 to leave it out. A registered or derived field one set lacks is NaN for
+// its particles.
+struct FramePart {
+  const ParticleSet* particles = nullptr;
+  std::vector<DerivedField> derived;
+  std::vector<int> phase;  // one per particle of the set
+};
+void write_vtu(const std::string& path, const std::vector<FramePart>& parts, double time);
+
 // frames: (time, file name relative to the .pvd's folder)
 void write_pvd(const std::string& path, const std::vector<std::pair<double, std::string>>& frames);
 

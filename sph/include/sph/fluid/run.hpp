@@ -18,5 +18,8 @@ RunSummary run(Model& model, const RunOptions& options, const RunCallbacks& call
 void write_checkpoint(const std::string& path, const Model& model);
 // Throws std::runtime_error when the checkpoint belongs to another model.
 void read_checkpoint(const std::string& path, Model& model);
+// The same in memory (a coupled run's checkpoint holds the soil and the water, sph/coupled/model.hpp).
+std::string checkpoint_bytes(const Model& model);
+void restore_checkpoint(const std::string& bytes, const std::string& path, Model& model);
 
 }  // namespace sph::fluid

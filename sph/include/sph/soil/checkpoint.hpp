@@ -15,4 +15,8 @@ void write_checkpoint(const std::string& path, const Model& model);
 // file is truncated/corrupt.
 void read_checkpoint(const std::string& path, Model& model);
 
+// The same in memory (a coupled run's checkpoint holds the soil and the water, sph/coupled/model.hpp).
+std::string checkpoint_bytes(const Model& model);
+void restore_checkpoint(const std::string& bytes, const std::string& path, Model& model);
+
 }  // namespace sph::soil
