@@ -47,12 +47,17 @@ struct Block {
   double delta_deg = 0.0;
   double dx = 0.02;               // [m]
   double youngs_modulus = 10e6;   // [Pa]
+  // the plane as a polygon of wall particles (add_polygon_walls) at 45 deg under vertical gravity, the block's
+  // particles on a lattice turned with it; false: the box floor with gravity turned by 45 deg
+  bool polygon_plane = false;
 };
 
-// The block (0.3 m x 0.16 m) on the floor of a 2.2 m box (floor only), gravity turned by alpha: c = 50 kPa (its
-// weight's stresses are about 3 kPa: it does not yield at E = 10 MPa), phi = 30 deg.
-sph::soil::Model block_on_plane(const Block& b) {
-  sph::soil::Model m;
+// The unit vector down the plane (the direction of travel).
+struct Along {
+  double x = 1, y = 0;
+};
+
+sph::soil::Material stiff_block(const Block& b) {
   sph::soil::Material mat;
   mat.name = "stiff block";
   mat.density = kDensity;
@@ -60,15 +65,41 @@ sph::soil::Model block_on_plane(const Block& b) {
   mat.poisson_ratio = 0.3;
   mat.cohesion = 50e3;
   mat.friction_angle_deg = 30.0;
-  m.materials.push_back(mat);
+  return mat;
+}
+
+// The plane as a solid polygon: its face from (0, 2) down to (2, 0) at 45 deg, 0.3 m deep under the face's ends;
+// the block 0.3 m x 0.16 m on it, its particles on the lattice of the face's frame, from 0.1 m below the face's top.
+void polygon_plane(const Block& b, sph::soil::Model& m) {
+  const double a = radians(kAlphaDeg), tx = std::cos(a), ty = -std::sin(a), nx = -ty, ny = tx;
+  std::vector<sph::Point> block;
+  for (double s = 0.5 * b.dx; s < kLength; s += b.dx)
+    for (double n = 0.5 * b.dx; n < kHeight; n += b.dx)
+      block.push_back({(0.1 + s) * tx + n * nx, 2.0 + (0.1 + s) * ty + n * ny});
+  sph::add_soil(m.particles, block, b.dx, 0, kDensity);
+  const std::vector<sph::Point> solid{{0.0, 2.0}, {2.0, 0.0}, {2.0, -0.3}, {0.0, -0.3}};
+  sph::add_polygon_walls(m.particles, solid, b.dx, m.settings.smoothing_length(), 0, 0, kDensity);
+}
+
+// The block (0.3 m x 0.16 m) on the floor of a 2.2 m box (floor only), gravity turned by alpha, or on the polygon
+// plane: c = 50 kPa (its weight's stresses are about 3 kPa: it does not yield at E = 10 MPa), phi = 30 deg.
+sph::soil::Model block_on_plane(const Block& b) {
+  sph::soil::Model m;
+  m.materials.push_back(stiff_block(b));
   auto& s = m.settings;
   s.particle_spacing = b.dx;
   s.wall_slip = b.slip;
   s.wall_friction_angle_deg = b.delta_deg;
+  s.output_interval = 0;
+  if (b.polygon_plane) {
+    s.gravity_x = 0.0;
+    s.gravity_y = -sphslope::standard_gravity;
+    polygon_plane(b, m);
+    return m;
+  }
   const double a = radians(kAlphaDeg);
   s.gravity_x = sphslope::standard_gravity * std::sin(a);
   s.gravity_y = -sphslope::standard_gravity * std::cos(a);
-  s.output_interval = 0;
   sph::add_soil(m.particles,
                 sph::lattice_points_in_region(kStart, 0, kStart + kLength, kHeight, b.dx,
                                               [](double, double) { return true; }),
@@ -83,18 +114,25 @@ sph::soil::Model block_on_plane(const Block& b) {
   return m;
 }
 
+Along along(const Block& b) {
+  if (!b.polygon_plane) return {};
+  const double a = radians(kAlphaDeg);
+  return {std::cos(a), -std::sin(a)};
+}
+
 struct Centroid {
   double x = 0, vx = 0;
 };
 
-Centroid centroid(const sph::ParticleSet& p) {
+// The centroid's position and velocity along `t` (default: x).
+Centroid centroid(const sph::ParticleSet& p, Along t = {}) {
   Centroid c;
   double mass = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.kind[i] != kMaterial) continue;
     mass += p.mass[i];
-    c.x += p.mass[i] * p.x[i];
-    c.vx += p.mass[i] * p.vx[i];
+    c.x += p.mass[i] * (p.x[i] * t.x + p.y[i] * t.y);
+    c.vx += p.mass[i] * (p.vx[i] * t.x + p.vy[i] * t.y);
   }
   c.x /= mass;
   c.vx /= mass;
@@ -103,9 +141,16 @@ Centroid centroid(const sph::ParticleSet& p) {
 
 struct Slide {
   double speed = -1.0;       // the centroid's speed along the plane after the drop [m/s]; -1: not reached
-  double lowest = INFINITY;  // the lowest soil particle centre seen [m]
+  double lowest = INFINITY;  // the lowest soil particle centre seen, above the plane [m]
   long steps = 0;
 };
+
+// The height of (x, y) above the plane, along its normal [m].
+double above_plane(const Block& b, double x, double y) {
+  if (!b.polygon_plane) return y;
+  const double a = radians(kAlphaDeg);
+  return x * std::sin(a) + (y - 2.0) * std::cos(a);
+}
 
 // Steps until the centroid has dropped 1 m (travelled 1/sin(alpha) down the plane; its speed linear between the two
 // steps around it), or to `end_time` seconds.
@@ -114,14 +159,16 @@ Slide slide(const Block& b, double end_time) {
   const double travel = 1.0 / std::sin(radians(kAlphaDeg));
   sph::soil::SoilStep step(m);
   step.initialise();
-  const double x0 = centroid(m.particles).x;
-  Centroid before = centroid(m.particles);
+  const Along t = along(b);
+  const double x0 = centroid(m.particles, t).x;
+  Centroid before = centroid(m.particles, t);
   Slide out;
   while (m.state.time < end_time) {
     step.advance(step.stable_time_step());
-    const Centroid now = centroid(m.particles);
+    const Centroid now = centroid(m.particles, t);
     for (std::size_t i = 0; i < m.particles.size(); ++i)
-      if (m.particles.kind[i] == kMaterial) out.lowest = std::min(out.lowest, m.particles.y[i]);
+      if (m.particles.kind[i] == kMaterial)
+        out.lowest = std::min(out.lowest, above_plane(b, m.particles.x[i], m.particles.y[i]));
     if (now.x - x0 >= travel) {
       const double f = (x0 + travel - before.x) / (now.x - before.x);
       out.speed = before.vx + f * (now.vx - before.vx);
@@ -143,9 +190,10 @@ double slide_error(const Block& b) {
   const Slide s = slide(b, 2.0);
   const double expected = energy_line_speed(b.delta_deg);
   const double error = s.speed / expected - 1.0;
-  std::printf("wall friction: %s, delta %.0f deg, dx %g m, E %g MPa: %.4f m/s after a drop of 1 m (energy line %.4f, "
-              "%+.2f %%), lowest centre %.4f m, %ld steps\n",
-              std::string(sphslope::name_of(sph::soil::wall_slip_names, b.slip)).c_str(), b.delta_deg, b.dx,
+  std::printf("wall friction: %s%s, delta %.0f deg, dx %g m, E %g MPa: %.4f m/s after a drop of 1 m (energy line "
+              "%.4f, %+.2f %%), lowest centre %.4f m above the plane, %ld steps\n",
+              std::string(sphslope::name_of(sph::soil::wall_slip_names, b.slip)).c_str(),
+              b.polygon_plane ? " (polygon plane)" : "", b.delta_deg, b.dx,
               b.youngs_modulus / 1e6, s.speed, expected, 100.0 * error, s.lowest, s.steps);
   CHECK(s.lowest > 0.25 * b.dx);  // the block stays on the plane (its bottom centres rest dx/2 above the face)
   return error;
@@ -181,6 +229,23 @@ TEST_CASE("wall friction: a stiff block slides down a 45 deg plane at the energy
   CHECK(std::fabs(slide_error({WallSlip::frictional, 0.0})) <= 0.05);
   CHECK(std::fabs(slide_error({WallSlip::frictional, 20.0})) <= 0.10);
   CHECK(std::fabs(slide_error({WallSlip::frictional, 30.0})) <= 0.10);
+}
+
+// The same with the plane a polygon of wall particles (sph::add_polygon_walls, rows parallel to the face, normals
+// from the face) and gravity vertical: the block of a scene on a slope. Same references and tolerances.
+TEST_CASE("wall friction: a stiff block slides down a 45 deg polygon plane under vertical gravity at the energy "
+          "line's speed",
+          "[sph][walls]") {
+  using sph::soil::WallSlip;
+  Block b{WallSlip::free_slip, 0.0};
+  b.polygon_plane = true;
+  CHECK(std::fabs(slide_error(b)) <= 0.05);
+  b.slip = WallSlip::frictional;
+  CHECK(std::fabs(slide_error(b)) <= 0.05);
+  b.delta_deg = 20.0;
+  CHECK(std::fabs(slide_error(b)) <= 0.10);
+  b.delta_deg = 30.0;
+  CHECK(std::fabs(slide_error(b)) <= 0.10);
 }
 
 TEST_CASE("wall friction: the no-slip wall holds the block's base and fails the energy line", "[sph][walls]") {

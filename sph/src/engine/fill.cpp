@@ -194,4 +194,49 @@ std::size_t add_box_walls(ParticleSet& particles, const BoxWalls& box, double dx
   return count;
 }
 
+namespace {
+
+// The point of the polygon's edges nearest to (x, y).
+Point nearest_on_edges(const std::vector<Point>& poly, double x, double y) {
+  double best = std::numeric_limits<double>::infinity();
+  Point at{x, y};
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const double ex = poly[i].x - poly[j].x, ey = poly[i].y - poly[j].y, len2 = ex * ex + ey * ey;
+    const double t = std::clamp(len2 > 0 ? ((x - poly[j].x) * ex + (y - poly[j].y) * ey) / len2 : 0.0, 0.0, 1.0);
+    const Point q{poly[j].x + t * ex, poly[j].y + t * ey};
+    const double d = std::hypot(x - q.x, y - q.y);
+    if (d < best) {
+      best = d;
+      at = q;
+    }
+  }
+  return at;
+}
+
+}  // namespace
+
+std::size_t add_polygon_walls(ParticleSet& particles, const std::vector<Point>& polygon, double dx, double h,
+                              int layers, std::uint16_t material, double density) {
+  if (!(dx > 0) || !(h > 0) || !(density > 0))
+    throw std::invalid_argument("add_polygon_walls: dx, h, density must be > 0");
+  const int needed = wall_layers_for(dx, h);
+  if (layers < 0 || (layers > 0 && layers < needed))
+    throw std::invalid_argument("add_polygon_walls: " + std::to_string(layers) +
+                                " wall layers do not cover the kernel support 2h = " + std::to_string(2.0 * h) +
+                                " m; at least " + std::to_string(needed) + " are needed");
+  const std::vector<Point> points = boundary_layer_points(polygon, dx, layers > 0 ? layers : needed);
+  const FieldId normal_x = particles.add_field({"wall_normal_x", true, false});
+  const FieldId normal_y = particles.add_field({"wall_normal_y", true, false});
+  const double m = density * dx * dx;
+  particles.reserve(particles.size() + points.size());
+  for (const Point& q : points) {
+    const Point b = nearest_on_edges(polygon, q.x, q.y);
+    const double d = std::hypot(b.x - q.x, b.y - q.y);  // at least dx/2: the rows lie inside
+    const std::size_t i = particles.add(q.x, q.y, m, density, material, ParticleKind::wall);
+    particles.field(normal_x)[i] = (b.x - q.x) / d;
+    particles.field(normal_y)[i] = (b.y - q.y) / d;
+  }
+  return points.size();
+}
+
 }  // namespace sph

@@ -56,6 +56,14 @@ struct BoxWalls {
 std::size_t add_box_walls(ParticleSet& particles, const BoxWalls& box, double dx, double h, std::uint16_t material,
                           double density);
 
+// Fixed wall particles filling a solid polygon (a slope, a plane, an obstacle) in rows parallel to its faces
+// (boundary_layer_points: `layers` rows, 0 = ceil(2h/dx), the kernel support), kind wall, mass density dx^2, each
+// with the unit normal pointing out of the solid from its nearest point on the polygon's edges (on a flat face, the
+// face's outward normal). Fewer layers than the kernel support needs are refused (std::invalid_argument). Returns the
+// count.
+std::size_t add_polygon_walls(ParticleSet& particles, const std::vector<Point>& polygon, double dx, double h,
+                              int layers, std::uint16_t material, double density);
+
 // Wall layer count that covers the kernel support 2h.
 int wall_layers_for(double dx, double h);
 
