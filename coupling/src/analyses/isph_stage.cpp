@@ -23,12 +23,11 @@
 
 namespace coupling {
 
-namespace {
-
-sph::fluid::Model build_isph_model(const IsphAnalysis& a) {
+sph::fluid::Model build_isph_model(const IsphAnalysis& a, const std::vector<std::vector<sph::Point>>& displacing) {
   sph::fluid::Model model(a.settings);
   for (const IsphSolid& solid : a.solids) sph::fluid::add_solid_wall(model, solid.polygon);
   for (const IsphBody& body : a.bodies) sph::fluid::add_rigid_body(model, body.polygon, body.body);
+  for (const auto& polygon : displacing) model.solids.push_back(polygon);
   double top = -std::numeric_limits<double>::infinity();  // the water fills around the solids and bodies
   for (const TankRectangle& w : a.water) {
     sph::fluid::add_fluid_block(model, w.x_min, w.y_min, w.x_max, w.y_max);
@@ -39,6 +38,8 @@ sph::fluid::Model build_isph_model(const IsphAnalysis& a) {
   sph::fluid::set_hydrostatic_pressure(model, top - 0.5 * a.settings.particle_spacing);
   return model;
 }
+
+namespace {
 
 double fluid_mass(const sph::ParticleSet& p) { return p.total_mass(sph::ParticleKind::material); }  // kind 0: fluid
 

@@ -43,6 +43,18 @@ MonitorTable parse_monitors_csv(const std::string& csv) {
   return table;
 }
 
+bool restore_rows(MonitorTable& table, const std::string& csv, double time) {
+  MonitorTable restored = parse_monitors_csv(csv);
+  if (restored.columns != table.columns) return false;
+  std::size_t kept = 0;
+  while (kept < restored.times.size() && restored.times[kept] <= time + 1e-12) ++kept;
+  if (kept == 0) return false;
+  restored.times.resize(kept);
+  restored.rows.resize(kept);
+  table = std::move(restored);
+  return true;
+}
+
 std::vector<std::pair<double, double>> monitor_column(const MonitorTable& table, const std::string& column) {
   std::vector<std::pair<double, double>> out;
   for (std::size_t c = 0; c < table.columns.size(); ++c)

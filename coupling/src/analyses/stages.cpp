@@ -6,10 +6,16 @@ namespace coupling {
 namespace {
 
 bool lem_requested(const Scene&, const StageContext& context) { return context.lem.has_value(); }
-bool sph_requested(const Scene& scene, const StageContext&) { return scene.analyses.sph.has_value(); }
+// A coupled scene runs its sph and isph blocks in the coupled stage, not in their own.
+bool sph_requested(const Scene& scene, const StageContext&) {
+  return scene.analyses.sph.has_value() && !scene.analyses.coupled;
+}
 bool compare_requested(const Scene& scene, const StageContext&) { return scene.analyses.compare.has_value(); }
 bool srm_requested(const Scene& scene, const StageContext&) { return scene.analyses.srm.has_value(); }
-bool isph_requested(const Scene& scene, const StageContext&) { return scene.analyses.isph.has_value(); }
+bool isph_requested(const Scene& scene, const StageContext&) {
+  return scene.analyses.isph.has_value() && !scene.analyses.coupled;
+}
+bool coupled_requested(const Scene& scene, const StageContext&) { return scene.analyses.coupled.has_value(); }
 bool mps_requested(const Scene& scene, const StageContext&) { return scene.analyses.mps.has_value(); }
 
 constexpr Stage stages[] = {
@@ -19,6 +25,7 @@ constexpr Stage stages[] = {
     {"srm", srm_requested, run_srm_stage},
     {"isph", isph_requested, run_isph_stage},
     {"mps", mps_requested, run_mps_stage},
+    {"coupled", coupled_requested, run_coupled_stage},
 };
 
 }  // namespace

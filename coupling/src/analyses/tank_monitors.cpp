@@ -56,14 +56,7 @@ std::string TankMonitorObserver::after_step(const sph::ParticleSet& p, const sph
 }
 
 void TankMonitorObserver::restore(const std::string& csv, double time) {
-  MonitorTable restored = parse_monitors_csv(csv);
-  if (restored.columns != table_.columns) return;
-  std::size_t kept = 0;
-  while (kept < restored.times.size() && restored.times[kept] <= time + 1e-12) ++kept;
-  if (kept == 0) return;
-  restored.times.resize(kept);
-  restored.rows.resize(kept);
-  table_ = std::move(restored);
+  if (!restore_rows(table_, csv, time)) return;
   next_ = (std::floor(table_.times.back() / monitors_.interval + 1e-9) + 1.0) * monitors_.interval;
 }
 

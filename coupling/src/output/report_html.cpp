@@ -218,6 +218,16 @@ std::string sph_lines(const RunResults& results) {
         << fixed(mps->wall_height_end, 3) << " m, largest speed at the end " << fixed(mps->max_speed_end, 4)
         << " m/s. Monitors: monitors.csv.</p>\n";
   }
+  if (const CoupledStageResult* c = result_of(results.coupled)) {
+    out << "<p>Soil and water in one run: spacing " << fixed(c->particle_spacing, 4) << " m, " << c->soil_particles
+        << " soil and " << c->water_particles << " water particles, " << fixed(c->summary.simulated_time, 3)
+        << " s simulated in " << c->summary.total_steps << " water steps (" << fixed(c->mean_substeps, 1)
+        << " soil sub-steps each on average, " << fixed(c->mean_solver_iterations, 1)
+        << " pressure-solver iterations); water volume " << fixed(c->water_volume_start, 4) << " &rarr; "
+        << fixed(c->water_volume_end, 4) << " m&sup2;/m, " << c->water_inside_soil
+        << " water particles inside the soil at the end; the soil's largest displacement "
+        << fixed(c->soil_max_displacement, 4) << " m. Monitors: monitors.csv.</p>\n";
+  }
   if (const SrmResult* srm = result_of(results.srm)) {
     const BisectionResult& b = srm->bisection;
     out << "<p>SPH strength reduction: FS = <b>"

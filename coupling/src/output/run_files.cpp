@@ -13,6 +13,7 @@
 #include "coupling/analyses/stage.hpp"
 #include "coupling/output/comparison_report.hpp"
 #include "coupling/output/isph_figures.hpp"
+#include "coupling/output/coupled_report.hpp"
 #include "coupling/output/isph_report.hpp"
 #include "coupling/scene/json_text.hpp"
 #include "coupling/output/mps_report.hpp"
@@ -77,6 +78,24 @@ void write_tank_files(const Scene& scene, const std::filesystem::path& dir, RunR
       results.isph->error = std::string("isph: ") + error.what();
       results.isph->result.reset();
       results.failures.push_back(results.isph->error);
+    }
+  }
+  if (results.coupled && results.coupled->result) {
+    CoupledStageResult& coupled = *results.coupled->result;
+    try {
+      sph::write_file_atomically(dir / "monitors.csv", monitors_csv(coupled.monitors));
+      sph::write_file_atomically(dir / "slide.csv", monitors_csv(coupled.slide));
+      const IsphAnalysis& a = *scene.analyses.isph;
+      if (!a.monitors.gauges.empty()) {
+        std::filesystem::create_directories(dir / "figures");
+        sph::write_file_atomically(dir / "figures" / "coupled_gauges.svg",
+                                   isph_gauges_svg(coupled.monitors, a.monitors.gauges, a.monitors.still_water, scene.name));
+        coupled.figures.push_back("figures/coupled_gauges.svg");
+      }
+    } catch (const std::exception& error) {
+      results.coupled->error = std::string("coupled: ") + error.what();
+      results.coupled->result.reset();
+      results.failures.push_back(results.coupled->error);
     }
   }
   if (results.mps && results.mps->result) {
@@ -213,6 +232,7 @@ json run_report(const Scene& scene, const RunResults& results, const std::vector
   add_block(report, "srm", results.srm, srm_report, srm_error_report);
   add_block(report, "isph", results.isph, isph_report, isph_error_report);
   add_block(report, "mps", results.mps, mps_report, mps_error_report);
+  add_block(report, "coupled", results.coupled, coupled_report, coupled_error_report);
   if (figures) report["figures"] = *figures;
   report["errors"] = results.failures;
   return report;

@@ -279,6 +279,12 @@ void read_analyses(JsonReader& top, Scene& scene, bool has_section, SphBlocks& b
     check_isph_outputs(outputs, *scene.analyses.isph, isph->path(), diagnostics);
     scene.analyses.isph->outputs = std::move(outputs);
   }
+  if (const nlohmann::json* coupled = analyses->raw("coupled", Need::optional)) {
+    if (!coupled->is_object())
+      diagnostics.error(analyses->path_of("coupled"), "expected an object, got " + json_type_name(*coupled));
+    else
+      blocks.coupled = coupled;
+  }
   if (auto mps = analyses->object("mps", Need::optional, "an object (docs/scene-format.md, analyses.mps)")) {
     scene.analyses.mps = read_mps_analysis(*mps);
     if (analyses->has("isph"))
@@ -377,6 +383,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::filesystem::pat
   if (blocks.compare)
     scene.analyses.compare = read_comparison_options(*blocks.compare, lem_method_keys(scene), diagnostics);
   read_srm_scene(blocks, scene, diagnostics);
+  if (blocks.coupled) read_coupled_scene(*blocks.coupled, blocks.sph, blocks.walls, scene, diagnostics);
 
   if (!diagnostics.empty()) throw SceneError(diagnostics.messages());
   return scene;
@@ -560,6 +567,7 @@ std::string summarize(const Scene& scene) {
   if (scene.analyses.srm) analyses.emplace_back("srm");
   if (scene.analyses.isph) analyses.emplace_back("isph");
   if (scene.analyses.mps) analyses.emplace_back("mps");
+  if (scene.analyses.coupled) analyses.emplace_back("coupled (sph and isph in one run)");
   out << "; analyses: " << join(analyses);
   return out.str();
 }

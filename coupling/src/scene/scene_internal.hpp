@@ -92,6 +92,7 @@ struct SphBlocks {
   const nlohmann::json* srm = nullptr;      // analyses.srm, when it is an object
   const nlohmann::json* bodies = nullptr;   // "bodies", when it is an array
   const nlohmann::json* walls = nullptr;    // "walls", whatever it is
+  const nlohmann::json* coupled = nullptr;  // analyses.coupled, when it is an object
 };
 
 // Reads analyses.sph, and with it "bodies" and "walls", into the scene, and validates what SPH needs from the rest

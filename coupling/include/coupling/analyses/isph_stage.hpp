@@ -11,7 +11,9 @@
 #include "coupling/analyses/isph_measures.hpp"
 #include "coupling/analyses/isph_waves.hpp"
 #include "coupling/analyses/monitor_table.hpp"
+#include "coupling/scene/isph_analysis.hpp"
 #include "sph/engine/run_loop.hpp"
+#include "sph/fluid/model.hpp"
 
 namespace coupling {
 
@@ -42,5 +44,10 @@ struct IsphStageResult {
   std::vector<BodyRecord> bodies;  // the rigid bodies (none: no "bodies" block)
   double fluid_energy_start = 0, fluid_energy_end = 0;  // [J/m] kinetic + potential of the fluid
 };
+
+// The fluid model of analyses.isph: its solids and bodies, the water at rest in its rectangles with a hydrostatic
+// pressure (zero at the top row's centres, docs/isph.md D6), and the tank. The water leaves empty the solids, the
+// bodies and the `displacing` polygons (a coupled run's soil bodies), and dx/2 around their faces.
+sph::fluid::Model build_isph_model(const IsphAnalysis& a, const std::vector<std::vector<sph::Point>>& displacing = {});
 
 }  // namespace coupling

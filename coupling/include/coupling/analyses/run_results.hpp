@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/analyses/coupled_stage.hpp"
 #include "coupling/analyses/isph_stage.hpp"
 #include "coupling/analyses/mps_stage.hpp"
 #include "coupling/analyses/sph_stage.hpp"
@@ -110,6 +111,7 @@ struct RunResults {
   std::optional<StageRecord<SrmResult>> srm;
   std::optional<StageRecord<IsphStageResult>> isph;
   std::optional<StageRecord<MpsStageResult>> mps;
+  std::optional<StageRecord<CoupledStageResult>> coupled;
   // Wall-clock seconds: each stage by its key, "lem_noncircular", and "load" and "total" for the whole run.
   std::map<std::string, double> seconds;
   std::optional<ParticleSnapshot> sph_final_state;  // the soil particles at the end (none after a blow-up)

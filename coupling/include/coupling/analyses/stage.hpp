@@ -57,6 +57,7 @@ StageOutcome run_compare_stage(const Scene& scene, StageContext& context);
 StageOutcome run_srm_stage(const Scene& scene, StageContext& context);
 StageOutcome run_isph_stage(const Scene& scene, StageContext& context);  // isph_stage.cpp
 StageOutcome run_mps_stage(const Scene& scene, StageContext& context);  // mps_stage.cpp
+StageOutcome run_coupled_stage(const Scene& scene, StageContext& context);  // coupled_stage.cpp
 
 // Wall-clock seconds for the report's timing_s block.
 using StageClock = sphslope::WallClock;

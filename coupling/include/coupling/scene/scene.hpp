@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "coupling/scene/analysis_options.hpp"
+#include "coupling/scene/coupled_analysis.hpp"
 #include "coupling/scene/isph_analysis.hpp"
 #include "coupling/scene/mps_analysis.hpp"
 #include "coupling/scene/probabilistic_analysis.hpp"
@@ -94,7 +95,9 @@ struct Analyses {
   std::optional<SrmOptions> srm;
   std::optional<IsphAnalysis> isph;  // the ISPH fluid (docs/isph.md), independent of the others
   std::optional<MpsAnalysis> mps;  // the WC-MPS granular or water flow (docs/mps.md), independent of the others
-  bool empty() const { return !lem && !sph && !compare && !srm && !isph && !mps; }
+  // sph and isph as one coupled run (docs/coupled.md): the "coupled" stage runs them, not their own stages
+  std::optional<CoupledAnalysis> coupled;
+  bool empty() const { return !lem && !sph && !compare && !srm && !isph && !mps && !coupled; }
 };
 
 struct Scene {
