@@ -6,12 +6,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/analyses/isph_waves.hpp"
 #include "coupling/analyses/monitor_table.hpp"
 #include "coupling/scene/scene.hpp"
 #include "sphslope/units.hpp"
@@ -225,6 +227,115 @@ TEST_CASE("sphslope run: a soil block slides down a solid 45 deg slope of a coup
     CHECK(std::fabs(speed / expected - 1.0) <= (delta == 0.0 ? 0.05 : 0.10));
     const nlohmann::json report = read_json(out / "report.json")["coupled"];
     CHECK(report["water_inside_soil_end"] == 0);
+  }
+}
+
+namespace {
+
+// Heinrich's landed submarine slide (cases/isph_heinrich_submarine.json) at dx, to 5 s: the rigid block (`soil`
+// false: the case as it is), or a soil body of its shape and density (2000 kg/m^3; E = 10 MPa and c = 200 kPa, so
+// that it stays elastic; the walls free-slip, as the rigid block ran without friction) stopped at the slope's foot by
+// a stopper (a solid 0.1 m wide, 0.2 m high, its face at x = 1 m, where the rigid block's offshore face stops).
+nlohmann::json heinrich(double dx, bool soil) {
+  nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases" / "isph_heinrich_submarine.json");
+  nlohmann::json& isph = scene["analyses"]["isph"];
+  isph["particle_spacing_m"] = dx;
+  isph.erase("snapshots_s");
+  isph["output_interval_s"] = 0.25;
+  if (!soil) return scene;
+  isph["solids"].push_back({{"name", "stopper"}, {"polygon_m", {{1.0, 0}, {1.1, 0}, {1.1, 0.2}, {1.0, 0.2}}}});
+  const nlohmann::json block = isph["bodies"][0];
+  isph.erase("bodies");
+  // HEINRICH_SCALE (a study's experiment, default 1): the block's legs times this, its hypotenuse on the slope and
+  // its top 1 cm below the water, as the rigid block's
+  const double scale = std::getenv("HEINRICH_SCALE") ? std::atof(std::getenv("HEINRICH_SCALE")) : 1.0;
+  const double leg = 0.5 * scale;
+  const nlohmann::json polygon = scale == 1.0 ? block["polygon_m"]
+                                              : nlohmann::json{{0.01, 0.99}, {0.01 + leg, 0.99}, {0.01 + leg, 0.99 - leg}};
+  scene["bodies"] = {{{"name", "block"},
+                      {"polygon_m", polygon},
+                      {"material",
+                       {{"name", "stiff block"}, {"unit_weight_kN_m3", 2000 * 9.81 / 1000}, {"cohesion_kPa", 200},
+                        {"friction_angle_deg", 30}, {"youngs_modulus_MPa", 10}, {"poisson_ratio", 0.3}}}}};
+  scene["analyses"]["sph"] = {{"particle_spacing_m", dx}, {"end_time_s", isph["end_time_s"]},
+                              {"walls", {{"slip", "free_slip"}}}};
+  scene["analyses"]["coupled"] = nlohmann::json::object();
+  return scene;
+}
+
+// Each gauge's leading crest (coupling::gauge_waves, as the isph report's waves block), for the scene's gauges.
+coupling::GaugeWaves waves_of(const coupling::MonitorTable& table) {
+  coupling::TankMonitors setup;
+  for (const double x : {4.0, 8.0, 12.0}) setup.gauges.push_back({"x" + std::to_string(static_cast<int>(x)), x});
+  setup.still_water = 1.0;
+  coupling::Tank tank;
+  tank.x_min = -1.5;
+  tank.x_max = 14.0;
+  tank.height = 2.0;
+  return coupling::gauge_waves(table, setup, tank, 9.81);
+}
+
+// The RMS difference of two gauge series on the same times over the RMS of the first (the rigid block's) [-].
+double normalised_rms_difference(const coupling::MonitorTable& a, const coupling::MonitorTable& b,
+                                 const std::string& column) {
+  const auto x = coupling::monitor_column(a, column), y = coupling::monitor_column(b, column);
+  double diff = 0, ref = 0;
+  const std::size_t n = std::min(x.size(), y.size());
+  for (std::size_t k = 0; k < n; ++k) {
+    diff += (x[k].second - y[k].second) * (x[k].second - y[k].second);
+    ref += (x[k].second - x[0].second) * (x[k].second - x[0].second);
+  }
+  return ref > 0 ? std::sqrt(diff / ref) : 0.0;
+}
+
+}  // namespace
+
+// Issue 43, item 3: a stiff soil body with the shape and density of Heinrich's block gives the same gauge records as
+// the rigid block within 10 %: each gauge's largest crest, and the RMS difference of the records over 5 s against
+// the rigid block's crest; also the time the block reaches the slope's foot (the rigid block's stop). A study
+// (about a minute at 0.04 m): `build/tests/test_coupling "[coupled_heinrich_study]"`.
+TEST_CASE("study: Heinrich's submarine block as stiff soil makes the rigid block's waves", "[.][coupled_heinrich_study]") {
+  TemporaryFolder folder("coupled_heinrich");
+  const double dx = std::getenv("HEINRICH_DX") ? std::atof(std::getenv("HEINRICH_DX")) : 0.04;
+  coupling::MonitorTable records[2];
+  double foot_time[2] = {0, 0};
+  for (const bool soil : {false, true}) {
+    const fs::path file = write_scene(folder.path, soil ? "soil.json" : "rigid.json", heinrich(dx, soil));
+    const fs::path out = folder.path / (soil ? "soil" : "rigid");
+    const ProgramRun run = run_sphslope("run " + quoted(file) + " -o " + quoted(out));
+    INFO(run.output);
+    REQUIRE(run.status == 0);
+    records[soil] = coupling::parse_monitors_csv(read_text(out / "monitors.csv"));
+    const nlohmann::json report = read_json(out / "report.json");
+    if (!soil) {
+      foot_time[0] = report["isph"]["bodies"][0]["stopped_at_s"].get<double>();
+      continue;
+    }
+    // the soil block's centroid travel down the slope (direction -45 deg) from slide.csv, to the rigid block's 0.693 m
+    const coupling::MonitorTable slide = coupling::parse_monitors_csv(read_text(out / "slide.csv"));
+    const auto x = coupling::monitor_column(slide, "centroid_x_m"), y = coupling::monitor_column(slide, "centroid_y_m");
+    for (std::size_t k = 0; k < x.size() && foot_time[1] == 0; ++k)
+      if (((x[k].second - x[0].second) - (y[k].second - y[0].second)) / std::sqrt(2.0) >= 0.692965 - 2 * dx)
+        foot_time[1] = x[k].first;
+    std::printf("heinrich soil block: %d particles, %.1f kg/m (the rigid block 250 kg/m); %s\n",
+                report["coupled"]["particles"]["soil"].get<int>(),
+                report["coupled"]["soil_mass_kg_per_m"]["start"].get<double>(),
+                report["coupled"]["since_start"].dump().c_str());
+  }
+  std::printf("heinrich at dx %.3f m: the block at the foot at %.3f s (rigid) and within 2 dx of it at %.3f s (soil)\n",
+              dx, foot_time[0], foot_time[1]);
+  const coupling::GaugeWaves rigid = waves_of(records[0]), soil = waves_of(records[1]);
+  for (std::size_t k = 0; k < rigid.gauges.size(); ++k) {
+    const coupling::GaugeWave &r = rigid.gauges[k], &w = soil.gauges[k];
+    REQUIRE(r.crest);
+    REQUIRE(w.crest);
+    const double nrms = normalised_rms_difference(records[0], records[1], r.name + "_m");
+    std::printf("heinrich %s: leading crest %.4f m at %.2f s (rigid), %.4f m at %.2f s (soil), %+.1f %%; the "
+                "records' RMS difference over 5 s %.1f %% of the rigid record's RMS\n",
+                r.name.c_str(), *r.crest, *r.crest_at, *w.crest, *w.crest_at, 100 * (*w.crest / *r.crest - 1),
+                100 * nrms);
+    CHECK(std::fabs(*w.crest / *r.crest - 1) <= 0.10);
+    CHECK(nrms <= 0.10);
   }
 }
 

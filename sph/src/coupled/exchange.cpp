@@ -1,5 +1,6 @@
 #include "sph/coupled/exchange.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -31,6 +32,9 @@ SoilBoundary::SoilBoundary(fluid::Model& water, const soil::Model& soil) {
   ParticleSet& p = water.particles;
   const bool present = p.find_field(id_field).has_value();
   soil_id_ = p.add_field({id_field, true, false});
+  // the soil's accelerations, set with its positions (step workspace: the soil's rates are in its checkpoint)
+  acceleration_x_ = p.add_field({fluid::coupled_wall_acceleration_x, false, false});
+  acceleration_y_ = p.add_field({fluid::coupled_wall_acceleration_y, false, false});
   if (present) {
     for (std::size_t i = 0; i < p.size(); ++i) count_ += p.material[i] == fluid::coupled_wall_material ? 1 : 0;
     return;
@@ -46,26 +50,57 @@ SoilBoundary::SoilBoundary(fluid::Model& water, const soil::Model& soil) {
   update(water, soil);
 }
 
-void SoilBoundary::update(fluid::Model& water, const soil::Model& soil) const {
-  const ParticleSet& s = soil.particles;
+namespace {
+
+// Calls visit(k, i) for every twin k in the water's set and its soil particle i.
+template <class Visit>
+void for_each_twin(const ParticleSet& water, FieldId soil_id, const ParticleSet& s, Visit&& visit) {
   std::vector<std::size_t> index_of;  // soil index by soil id
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s.id[i] >= index_of.size()) index_of.resize(s.id[i] + 1, s.size());
     index_of[s.id[i]] = i;
   }
-  ParticleSet& p = water.particles;
-  const double* id = p.field(soil_id_).data();
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    if (p.material[k] != fluid::coupled_wall_material || p.kind[k] == kMaterial) continue;
+  const double* id = water.field(soil_id).data();
+  for (std::size_t k = 0; k < water.size(); ++k) {
+    if (water.material[k] != fluid::coupled_wall_material || water.kind[k] == kMaterial) continue;
     const auto sid = static_cast<std::size_t>(id[k]);
     if (sid >= index_of.size() || index_of[sid] == s.size())
       throw std::logic_error("coupled run: a soil twin in the water refers to no soil particle");
-    const std::size_t i = index_of[sid];
+    visit(k, index_of[sid]);
+  }
+}
+
+}  // namespace
+
+void SoilBoundary::take_forces(const fluid::Model& water, const std::vector<double>& fx,
+                               const std::vector<double>& fy, soil::Model& soil, FieldId force_x,
+                               FieldId force_y) const {
+  std::vector<double>& sx = soil.particles.field(force_x);
+  std::vector<double>& sy = soil.particles.field(force_y);
+  std::fill(sx.begin(), sx.end(), 0.0);
+  std::fill(sy.begin(), sy.end(), 0.0);
+  if (fx.empty()) return;
+  for_each_twin(water.particles, soil_id_, soil.particles, [&](std::size_t k, std::size_t i) {
+    sx[i] = fx[k];
+    sy[i] = fy[k];
+  });
+}
+
+void SoilBoundary::update(fluid::Model& water, const soil::Model& soil) const {
+  const ParticleSet& s = soil.particles;
+  ParticleSet& p = water.particles;
+  const std::vector<double>& soil_ax = s.field(soil.fields.ax);  // dv/dt of its last evaluation
+  const std::vector<double>& soil_ay = s.field(soil.fields.ay);
+  double* ax = p.field(acceleration_x_).data();
+  double* ay = p.field(acceleration_y_).data();
+  for_each_twin(p, soil_id_, s, [&](std::size_t k, std::size_t i) {
     p.x[k] = s.x[i];
     p.y[k] = s.y[i];
     p.vx[k] = s.vx[i];
     p.vy[k] = s.vy[i];
-  }
+    ax[k] = soil_ax[i];
+    ay[k] = soil_ay[i];
+  });
 }
 
 std::optional<soil::PiezometricLine> water_table(const fluid::Model& water) {

@@ -226,6 +226,10 @@ void Step::extrapolate_wall_pressure() {
   const Index n = static_cast<Index>(p.size());
   const double gx = gravity_x(), gy = gravity_y();
   const double* acceleration = p.field(model_.fields.body_acceleration).data();
+  const auto coupled_ax = p.find_field(coupled_wall_acceleration_x);
+  const auto coupled_ay = p.find_field(coupled_wall_acceleration_y);
+  const double* cax = coupled_ax ? p.field(*coupled_ax).data() : nullptr;
+  const double* cay = coupled_ay ? p.field(*coupled_ay).data() : nullptr;
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
@@ -235,6 +239,9 @@ void Step::extrapolate_wall_pressure() {
       const RigidBody& b = model_.bodies[p.material[i] - 1u];
       ax = acceleration[i] * b.direction_x;
       ay = acceleration[i] * b.direction_y;
+    } else if (cax && cay && p.material[i] == coupled_wall_material) {  // another physics' (a coupled run's soil)
+      ax = cax[i];
+      ay = cay[i];
     }
     double num = 0, den = 0;
     for (std::uint32_t q = pl.start[i]; q < pl.start[i + 1]; ++q) {
@@ -443,6 +450,7 @@ void Step::advance(double dt) {
   solve_pressure_equation(dt);
   correct(dt);
   body_forces();
+  coupled_wall_forces();
   finish_positions(dt);
   move_bodies(dt);
   keep_off_walls();

@@ -54,6 +54,42 @@ void Step::body_forces() {
     }
 }
 
+// The fluid's pressure force on each coupled wall particle in excess of the reference pressure's: the pair forces of
+// body_forces() with P - p_ref at both particles (p_ref at their positions r*), summed per wall particle.
+void Step::coupled_wall_forces() {
+  diag_.coupled_force_x.clear();
+  diag_.coupled_force_y.clear();
+  if (!reference_) return;
+  const ParticleSet& p = model_.particles;
+  bool any = false;
+  for (std::size_t i = 0; i < p.size() && !any; ++i) any = p.material[i] == coupled_wall_material && p.kind[i] != kFluid;
+  if (!any) return;
+  const ConstArrays a(model_.particles, model_.fields);
+  const PairList& pl = impl_->pairs;
+  const Index n = static_cast<Index>(p.size());
+  diag_.coupled_force_x.assign(p.size(), 0.0);
+  diag_.coupled_force_y.assign(p.size(), 0.0);
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto jw = static_cast<std::size_t>(k);
+    if (p.material[jw] != coupled_wall_material || p.kind[jw] == kFluid) continue;
+    const double pw = a.pressure[jw] - reference_(p.x[jw], p.y[jw]);
+    double fx = 0, fy = 0;
+    for (std::uint32_t q = pl.start[jw]; q < pl.start[jw + 1]; ++q) {
+      const std::uint32_t i = pl.j[q];
+      if (p.kind[i] != kFluid) continue;
+      const double pi = a.pressure[i] - reference_(p.x[i], p.y[i]);
+      // as in body_forces(): pl.dx = x_j - x_i, the force on j is -m_j m_i (...) grad_j W_ji
+      const double f = -p.mass[jw] * terms::pressure_gradient_factor(p.mass[i], pw, a.provisional_density[jw], pi,
+                                                                       a.provisional_density[i], pl.F[q]);
+      fx += f * pl.dx[q];
+      fy += f * pl.dy[q];
+    }
+    diag_.coupled_force_x[jw] = fx;
+    diag_.coupled_force_y[jw] = fy;
+  }
+}
+
 // The rigid bodies to t + dt: the prescribed law, or gravity and the fluid's force along the direction (free,
 // frictionless, trapezoidal travel as the fluid's positions); held at stop_travel once reached (D19). Their
 // particles are placed at x0 + s e with the velocity v e.

@@ -2,9 +2,11 @@
 // One time step of a coupled run: the elasto-plastic soil (sph/soil) and the ISPH water (sph/fluid) in one domain,
 // each with its own particle set, stepper and time-step bound, and the exchange between them (exchange.hpp).
 // A step of the water's size dt (docs/coupled.md):
-//   1  the soil's twins in the water take the soil's positions and velocities at t;
+//   1  the soil's twins in the water take the soil's positions, velocities and accelerations at t;
 //   2  the water advances from t to t + dt (the soil's surface a moving wall);
-//   3  the water table is read from the water at t + dt and becomes the soil's pore-pressure line;
+//   3  the water table is read from the water at t + dt and becomes the soil's pore-pressure line, and the water's
+//      pressure force on each twin beyond the table's hydrostatic pressure becomes a surface force on its soil
+//      particle (an impact, a wave: what the table does not carry);
 //   4  the soil advances from t to t + dt in n = ceil(dt / dt_soil) equal sub-steps, dt_soil its own stable step.
 // A staggered (Gauss-Seidel) explicit scheme: each physics keeps its own stability bound, the water's being the
 // step's and the soil's the sub-steps'. The water's run state is the run's clock.
@@ -20,7 +22,8 @@ namespace sph::coupled {
 class CoupledStep : public Stepper {
  public:
   // Adds the soil's twins to the water when it has none. Throws std::invalid_argument when the two models'
-  // gravities or particle spacings differ.
+  // gravities or particle spacings differ, or when the soil carries surface forces of its own (strip and line loads:
+  // not yet in a coupled run).
   CoupledStep(soil::Model& soil, fluid::Model& water);
 
   // The water table on the soil, then each physics' own start (the soil's geostatic stress with its pore pressure).
@@ -40,12 +43,14 @@ class CoupledStep : public Stepper {
 
  private:
   void share_water_table();
+  void share_water_forces();
 
   soil::Model& soil_;
   fluid::Model& water_;
   soil::SoilStep soil_step_;
   SoilBoundary boundary_;
   fluid::Step water_step_;
+  FieldId force_x_ = 0, force_y_ = 0;  // the soil's surface-force fields: the water's force beyond the table's
   int substeps_ = 0;
   double soil_dt_ = 0;
 };

@@ -9,9 +9,12 @@
 //    (sph/soil/loads.hpp), with the table at the height of the water's free-surface particles (where the fluid's
 //    pressure is 0, decision D6 of docs/isph.md) over each column. The soil's stress is then effective, its momentum
 //    balance carries -grad u, and submerged soil at rest carries its buoyant weight; the water's pressure on the
-//    soil's surface is the same u there.
+//    soil's surface is the same u there. What the water's pressure does beyond the table's hydrostatic one reaches
+//    the soil as a surface force on each particle next to the water (SoilBoundary::take_forces, computed by the
+//    fluid's step against the table as its reference pressure).
 // Neither physics includes the other; this is the only code that reads both.
 #include <optional>
+#include <vector>
 
 #include "sph/engine/particle_set.hpp"
 #include "sph/fluid/model.hpp"
@@ -29,13 +32,19 @@ class SoilBoundary {
   // Throws std::invalid_argument when the two particle spacings differ (the twins must have the fluid's spacing).
   SoilBoundary(fluid::Model& water, const soil::Model& soil);
 
-  // Sets every twin's position and velocity to its soil particle's (by id; either set may have been reordered).
+  // Sets every twin's position, velocity and acceleration (the soil's last rate, for the water's wall pressure) to
+  // its soil particle's (by id; either set may have been reordered).
   void update(fluid::Model& water, const soil::Model& soil) const;
+
+  // Sets every soil particle's (force_x, force_y) fields to its twin's entry of (fx, fy) (indexed as the water's
+  // particles); zero when fx is empty.
+  void take_forces(const fluid::Model& water, const std::vector<double>& fx, const std::vector<double>& fy,
+                   soil::Model& soil, FieldId force_x, FieldId force_y) const;
 
   std::size_t size() const { return count_; }
 
  private:
-  FieldId soil_id_;
+  FieldId soil_id_, acceleration_x_ = 0, acceleration_y_ = 0;
   std::size_t count_ = 0;
 };
 

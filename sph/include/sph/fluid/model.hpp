@@ -47,6 +47,10 @@ inline constexpr sphslope::NameTable<RigidBody::Motion, 3> motion_law_names{{{"f
 // material. The fluid treats them as walls whose positions and velocities the coupling sets before each step; it
 // keeps those through the step (its fixed walls it sets at rest, its bodies' particles it moves itself).
 inline constexpr std::uint16_t coupled_wall_material = 0xffff;
+// Their acceleration [m/s^2], which the coupling sets with their positions and velocities (fields of the fluid's
+// set; absent: at rest): the wall pressure's Neumann condition dP/dn = rho (g - a).n, as a rigid body's (D18).
+inline constexpr const char* coupled_wall_acceleration_x = "coupled_wall_ax";
+inline constexpr const char* coupled_wall_acceleration_y = "coupled_wall_ay";
 
 struct Model {
   explicit Model(const Settings& s);

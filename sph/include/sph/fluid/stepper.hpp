@@ -13,6 +13,7 @@
 // sums and the viscous term (no-slip); their pressure is extrapolated from the fluid with the hydrostatic difference
 // (and the body's acceleration) and enters the fluid's pressure equation and gradient as a given value.
 // docs/isph.md gives the decisions.
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -36,6 +37,10 @@ struct StepDiagnostics {
   std::size_t tension_clamped = 0;  // unknowns whose negative pressure was set to 0 in the last solve (D21)
   std::size_t wall_contacts = 0;  // fluid particles the last step put back at the wall clearance (D23)
   std::vector<double> body_force_x, body_force_y;  // the fluid's pressure force on each rigid body [N/m]
+  // The fluid's pressure force on each coupled wall particle (coupled_wall_material) in excess of the force the
+  // reference pressure (Step::set_reference_pressure) gives, by particle index [N/m]; 0 at other particles; empty
+  // when the model has no coupled walls or no reference is set.
+  std::vector<double> coupled_force_x, coupled_force_y;
 };
 
 class Step : public Stepper {
@@ -54,6 +59,12 @@ class Step : public Stepper {
   Health check_health() const override;
 
   const StepDiagnostics& diagnostics() const { return diag_; }
+
+  // A coupled run's reference pressure field p_ref(x, y) [Pa] (the water table's hydrostatic pressure, which the
+  // other physics carries itself): each step then gives, in diagnostics().coupled_force_x/y, the reaction of the
+  // pressure-gradient pair forces on each coupled wall particle with P - p_ref in place of P (at r*, as the bodies'
+  // force, D19). Empty: none.
+  void set_reference_pressure(std::function<double(double x, double y)> reference) { reference_ = std::move(reference); }
 
   struct Impl;
 
@@ -76,6 +87,7 @@ class Step : public Stepper {
   void correct(double dt);
   void finish_positions(double dt);
   void body_forces();
+  void coupled_wall_forces();
   void move_bodies(double dt);
   void keep_off_walls();
   void remove_escaped();
@@ -83,6 +95,7 @@ class Step : public Stepper {
 
   Model& model_;
   StepDiagnostics diag_;
+  std::function<double(double, double)> reference_;  // set_reference_pressure
   std::unique_ptr<Impl> impl_;
 };
 
