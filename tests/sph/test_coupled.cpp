@@ -1,7 +1,7 @@
 // The soil and the water in one run (sph/coupled, docs/coupled.md): the exchange's two halves on their own, and
 // still water over a submerged soil layer at rest against hydrostatics and the buoyant weight (issue 43, item 3):
 //  - the layer's effective vertical stress: sigma'_yy = -(rho_sat - rho_w) g d at depth d below its top, the means
-//    of pairs of rows within 3 % of the layer's buoyant weight (rho_sat - rho_w) g H (measured 0.5 %). Pairs: single
+//    of pairs of rows within 3 % of the layer's buoyant weight (rho_sat - rho_w) g H (measured 0.4 %). Pairs: single
 //    rows alternate by about +-7 % of it (the SPH operators' odd-even mode, as under a loaded column top in
 //    test_loads.cpp), which this test does not bound;
 //  - the water's pressure: rho_w g (y_s - y), y_s the height of its top row (where the ISPH's pressure is 0), every
