@@ -152,8 +152,11 @@ std::vector<std::string> coupled_warnings(const CoupledStageResult& r) {
 struct StepTally {
   double steps = 0, substeps = 0, iterations = 0;
   int most_substeps = 0, most_iterations = 0;
+  double water_seconds = 0, soil_seconds = 0;  // each physics' steps' wall time
   void add(const sph::coupled::CoupledStep& step) {
     steps += 1;
+    water_seconds = step.water_seconds();
+    soil_seconds = step.soil_seconds();
     substeps += step.last_substeps();
     iterations += step.water_diagnostics().solve_iterations;
     most_substeps = std::max(most_substeps, step.last_substeps());
@@ -170,9 +173,12 @@ void finish_result(const sph::coupled::Model& m, const StepTally& tally, Coupled
   r.most_solver_iterations = tally.most_iterations;
   r.mean_solver_iterations = tally.steps > 0 ? tally.iterations / tally.steps : 0;
   r.soil_steps = tally.substeps;
-  const double wall = r.summary.wall_seconds;
-  r.soil_particle_steps_per_second = wall > 0 ? static_cast<double>(r.soil_particles) * tally.substeps / wall : 0;
-  r.water_particle_steps_per_second = wall > 0 ? static_cast<double>(r.water_particles) * tally.steps / wall : 0;
+  r.soil_seconds = tally.soil_seconds;
+  r.water_seconds = tally.water_seconds;
+  r.soil_particle_steps_per_second =
+      tally.soil_seconds > 0 ? static_cast<double>(r.soil_particles) * tally.substeps / tally.soil_seconds : 0;
+  r.water_particle_steps_per_second =
+      tally.water_seconds > 0 ? static_cast<double>(r.water_particles) * tally.steps / tally.water_seconds : 0;
   r.water_inside_soil = water_inside_soil(m.soil.particles, m.water.particles, r.particle_spacing);
   r.water_max_speed = largest_speed(m.water.particles);
   soil_measures(m.soil, r);

@@ -17,6 +17,7 @@ nlohmann::json coupled_report(const CoupledStageResult& r) {
                       {"soil_substeps_per_water_step", {{"mean", r.mean_substeps}, {"most", r.most_substeps}}},
                       {"solver_iterations_per_water_step",
                        {{"mean", r.mean_solver_iterations}, {"most", r.most_solver_iterations}}},
+                      {"wall_s", {{"soil", r.soil_seconds}, {"water", r.water_seconds}}},
                       {"particle_steps_per_s",
                        {{"soil", r.soil_particle_steps_per_second}, {"water", r.water_particle_steps_per_second}}}};
   j["soil_mass_kg_per_m"] = {{"start", r.soil_mass_start}, {"end", r.soil_mass_end}};

@@ -1,5 +1,8 @@
 #include "sph/coupled/coupled_step.hpp"
 
+#include "sphslope/wall_clock.hpp"
+
+#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -56,15 +59,19 @@ void CoupledStep::initialise() {
 double CoupledStep::stable_time_step() const { return water_step_.stable_time_step(); }
 
 void CoupledStep::advance(double dt) {
+  const sphslope::WallClock::time_point start = sphslope::WallClock::now();
   boundary_.update(water_, soil_);
   water_step_.advance(dt);
   share_water_forces();  // beyond the table the step started from (the water's reference in the step)
   share_water_table();
+  const sphslope::WallClock::time_point soil_start = sphslope::WallClock::now();
+  water_seconds_ += std::chrono::duration<double>(soil_start - start).count();
   const double bound = soil_step_.stable_time_step();
   substeps_ = bound > 0 && std::isfinite(bound) ? static_cast<int>(std::ceil(dt / bound)) : 1;
   if (substeps_ < 1) substeps_ = 1;
   soil_dt_ = dt / substeps_;
   for (int k = 0; k < substeps_; ++k) soil_step_.advance(soil_dt_);
+  soil_seconds_ += sphslope::seconds_since(soil_start);
 }
 
 Energies CoupledStep::energies() const {

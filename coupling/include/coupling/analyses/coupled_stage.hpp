@@ -30,6 +30,8 @@ struct CoupledStageResult {
   // displacement [m] and plastic strain, the water's largest speed [m/s]
   std::size_t water_inside_soil = 0;
   double soil_max_displacement = 0, soil_max_plastic_strain = 0, water_max_speed = 0;
+  double soil_seconds = 0, water_seconds = 0;  // wall time in each physics' steps (the water's with the exchange)
+  // each phase's particles x its steps over its own wall time
   double soil_particle_steps_per_second = 0, water_particle_steps_per_second = 0;
   MonitorTable monitors;  // the water's gauges (monitors.csv)
   MonitorTable slide;  // the soil's centroid and its speed (slide.csv), on the monitors' times

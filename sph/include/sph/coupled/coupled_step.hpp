@@ -35,6 +35,10 @@ class CoupledStep : public Stepper {
   Health check_health() const override;  // the soil's, then the water's
 
   int last_substeps() const { return substeps_; }  // soil sub-steps of the last step
+  // Wall-clock seconds spent in each physics' steps since construction (the water's step with the exchange's force,
+  // the soil's sub-steps): each phase's particle-steps per second (docs/performance.md).
+  double water_seconds() const { return water_seconds_; }
+  double soil_seconds() const { return soil_seconds_; }
   double last_soil_time_step() const { return soil_dt_; }  // [s]
   const fluid::StepDiagnostics& water_diagnostics() const { return water_step_.diagnostics(); }
   const SoilBoundary& boundary() const { return boundary_; }
@@ -53,6 +57,7 @@ class CoupledStep : public Stepper {
   FieldId force_x_ = 0, force_y_ = 0;  // the soil's surface-force fields: the water's force beyond the table's
   int substeps_ = 0;
   double soil_dt_ = 0;
+  double water_seconds_ = 0, soil_seconds_ = 0;
 };
 
 }  // namespace sph::coupled
