@@ -79,13 +79,6 @@ std::size_t water_inside_soil(const sph::ParticleSet& soil, const sph::ParticleS
   return inside;
 }
 
-double largest_speed(const sph::ParticleSet& p) {
-  double v = 0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == kMaterial) v = std::max(v, std::hypot(p.vx[i], p.vy[i]));
-  return v;
-}
-
 void soil_measures(const sph::soil::Model& soil, CoupledStageResult& r) {
   const auto sa = soil.soil();
   const sph::ParticleSet& p = soil.particles;
@@ -180,7 +173,7 @@ void finish_result(const sph::coupled::Model& m, const StepTally& tally, Coupled
   r.water_particle_steps_per_second =
       tally.water_seconds > 0 ? static_cast<double>(r.water_particles) * tally.steps / tally.water_seconds : 0;
   r.water_inside_soil = water_inside_soil(m.soil.particles, m.water.particles, r.particle_spacing);
-  r.water_max_speed = largest_speed(m.water.particles);
+  r.water_max_speed = sph::moving_energies(m.water.particles, m.water.settings).max_speed;
   soil_measures(m.soil, r);
   r.warnings = coupled_warnings(r);
 }

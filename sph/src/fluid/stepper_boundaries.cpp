@@ -2,6 +2,7 @@
 // the wall clearance (decision D23) and the removal of particles that leave the domain (D11).
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "stepper_impl.hpp"
 #include "terms.hpp"
@@ -69,16 +70,22 @@ void Step::coupled_wall_forces() {
   const Index n = static_cast<Index>(p.size());
   diag_.coupled_force_x.assign(p.size(), 0.0);
   diag_.coupled_force_y.assign(p.size(), 0.0);
+  std::vector<double> excess(p.size());  // P - p_ref, once per particle (not per pair)
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    excess[i] = a.pressure[i] - reference_(p.x[i], p.y[i]);
+  }
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     const auto jw = static_cast<std::size_t>(k);
     if (p.material[jw] != coupled_wall_material || p.kind[jw] == kFluid) continue;
-    const double pw = a.pressure[jw] - reference_(p.x[jw], p.y[jw]);
+    const double pw = excess[jw];
     double fx = 0, fy = 0;
     for (std::uint32_t q = pl.start[jw]; q < pl.start[jw + 1]; ++q) {
       const std::uint32_t i = pl.j[q];
       if (p.kind[i] != kFluid) continue;
-      const double pi = a.pressure[i] - reference_(p.x[i], p.y[i]);
+      const double pi = excess[i];
       // as in body_forces(): pl.dx = x_j - x_i, the force on j is -m_j m_i (...) grad_j W_ji
       const double f = -p.mass[jw] * terms::pressure_gradient_factor(p.mass[i], pw, a.provisional_density[jw], pi,
                                                                        a.provisional_density[i], pl.F[q]);
