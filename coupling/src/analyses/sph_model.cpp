@@ -2,14 +2,6 @@
 // particles, and the size checks that refuse a case before any particle is allocated.
 #include "coupling/analyses/sph_model.hpp"
 
-// g++ 12 reports a false "may be used uninitialized" inside CGAL's polygon algorithms when they are inlined
-// here; the warning is silenced for this file only.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_2.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -241,23 +233,10 @@ void build_section_particles(const SceneSection& scene_section, const SphAnalysi
     counted.wall_particles = sph::add_box_walls(model.particles, box, dx, h, 0, model.materials.front().density);
 }
 
-// The soil of one body: the lattice points strictly inside its polygon.
+// The soil of one body: its fill points (the lattice points strictly inside its polygon, or its rows).
 std::size_t add_body(const ParticleBody& body, const sph::Point& anchor, sph::soil::Model& model) {
   const double dx = model.settings.particle_spacing;
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  CGAL::Polygon_2<Kernel> polygon;
-  double x_lo = std::numeric_limits<double>::infinity(), y_lo = x_lo, x_hi = -x_lo, y_hi = -x_lo;
-  for (const auto& p : body.polygon) {
-    polygon.push_back({p.x, p.y});
-    x_lo = std::min(x_lo, p.x);
-    y_lo = std::min(y_lo, p.y);
-    x_hi = std::max(x_hi, p.x);
-    y_hi = std::max(y_hi, p.y);
-  }
-  const auto points = sph::lattice_points_in_region(
-      x_lo, y_lo, x_hi, y_hi, dx,
-      [&](double x, double y) { return polygon.bounded_side(Kernel::Point_2(x, y)) == CGAL::ON_BOUNDED_SIDE; },
-      anchor);
+  const auto points = body_fill_points(body, dx, anchor);
   model.materials.push_back(to_sph_material(body.material));
   return sph::add_soil(model.particles, points, dx, static_cast<std::uint16_t>(model.materials.size() - 1),
                        body.material.density());

@@ -3,6 +3,7 @@
 #include "coupling/scene/coupled_analysis.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 #include "coupling/scene/scene.hpp"
@@ -70,10 +71,11 @@ void check_bodies_inside_tank(const std::vector<ParticleBody>& bodies, const Tan
 void check_bodies_clear_of_solids(const std::vector<ParticleBody>& bodies, const IsphAnalysis& water,
                                   Diagnostics& diagnostics) {
   const double dx = water.settings.particle_spacing;
+  // the bodies' lattice is anchored at the first body's lower-left corner (a coupled scene has no wall box)
+  sph::Point anchor{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  for (const auto& p : bodies.front().polygon) anchor = {std::min(anchor.x, p.x), std::min(anchor.y, p.y)};
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    std::vector<sph::Point> polygon;
-    for (const auto& p : bodies[i].polygon) polygon.push_back({p.x, p.y});
-    const auto points = sph::lattice_points_in_polygon(polygon, dx);
+    const auto points = body_fill_points(bodies[i], dx, anchor);
     for (std::size_t k = 0; k < water.solids.size(); ++k) {
       const auto& solid = water.solids[k].polygon;
       const bool inside = std::any_of(points.begin(), points.end(), [&](const sph::Point& q) {

@@ -301,6 +301,12 @@ std::optional<std::vector<ParticleBody>> read_particle_bodies(const nlohmann::js
     body.name = b.string("name", Need::optional).value_or("body " + std::to_string(i));
     if (auto polygon = read_simple_polygon(b, "polygon_m", "a body"))
       for (const auto& [x, y] : *polygon) body.polygon.push_back({x, y});
+    read_named(b, "fill", body_fill_names, body.fill);
+    if (body.fill == BodyFill::rows && body.polygon.size() > max_rows_fill_vertices)
+      diagnostics.error(b.path_of("fill"), "\"rows\" fills a polygon of at most " +
+                                               std::to_string(max_rows_fill_vertices) + " vertices (this one has " +
+                                               std::to_string(body.polygon.size()) +
+                                               "): each row is tested against every edge; use \"lattice\"");
     if (auto m = b.object("material", Need::required)) {
       if (auto material = read_material(*m, MaterialOf::body)) {
         body.material = *material;
@@ -422,6 +428,34 @@ void apply_sph_spacing(const Scene& scene, SphAnalysis& analysis, double spacing
   analysis.settings.particle_spacing = spacing;
   if (scene.bodies) check_particles_across_bodies(*scene.bodies, spacing, diagnostics);
   if (scene.section) check_particles_across_section(scene.section->section, spacing, diagnostics);
+}
+
+std::vector<sph::Point> body_fill_points(const ParticleBody& body, double dx, sph::Point anchor) {
+  if (body.fill == BodyFill::rows) {
+    std::vector<sph::Point> polygon;
+    double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo;
+    for (const auto& p : body.polygon) {
+      polygon.push_back({p.x, p.y});
+      x_lo = std::min(x_lo, p.x), x_hi = std::max(x_hi, p.x), y_lo = std::min(y_lo, p.y), y_hi = std::max(y_hi, p.y);
+    }
+    // enough rows to reach the middle from every face (the fill stops once a row adds nothing)
+    const double extent = std::max(x_hi - x_lo, y_hi - y_lo);
+    return sph::boundary_layer_points(polygon, dx, static_cast<int>(std::ceil(extent / dx)) + 1);
+  }
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  CGAL::Polygon_2<Kernel> polygon;
+  double x_lo = std::numeric_limits<double>::infinity(), y_lo = x_lo, x_hi = -x_lo, y_hi = -x_lo;
+  for (const auto& p : body.polygon) {
+    polygon.push_back({p.x, p.y});
+    x_lo = std::min(x_lo, p.x);
+    y_lo = std::min(y_lo, p.y);
+    x_hi = std::max(x_hi, p.x);
+    y_hi = std::max(y_hi, p.y);
+  }
+  return sph::lattice_points_in_region(
+      x_lo, y_lo, x_hi, y_hi, dx,
+      [&](double x, double y) { return polygon.bounded_side(Kernel::Point_2(x, y)) == CGAL::ON_BOUNDED_SIDE; },
+      anchor);
 }
 
 }  // namespace coupling

@@ -13,6 +13,7 @@
 #include "coupling/scene/json_reader.hpp"
 #include "coupling/scene/soil_material.hpp"
 #include "slope/section.hpp"
+#include "sph/engine/fill.hpp"
 #include "sph/soil/model.hpp"
 
 namespace coupling {
@@ -35,12 +36,28 @@ inline constexpr sphslope::NameTable<SectionLoadKind, 4> section_load_names{
      {"line_loads", SectionLoadKind::line_loads},
      {"seismic", SectionLoadKind::seismic}}};
 
+// How a body's polygon is filled with particles: on the lattice of the wall box (faces that are not along the
+// lattice become staircases, and particles closer than dx/2 to a solid's face are cleared), or in rows parallel to
+// its faces (sph::boundary_layer_points: every face smooth, its first row dx/2 inside it).
+enum class BodyFill { lattice, rows };
+// The fills' names in scene files (bodies[i].fill).
+inline constexpr sphslope::NameTable<BodyFill, 2> body_fill_names{
+    {{"lattice", BodyFill::lattice}, {"rows", BodyFill::rows}}};
+
+// The most vertices a body filled in rows may have: every row point is tested against every edge.
+inline constexpr std::size_t max_rows_fill_vertices = 1000;
+
 // A body of a particle scene: a polygon of one material.
 struct ParticleBody {
   std::string name;
   std::vector<slope::Point> polygon;  // m
   SoilMaterial material;
+  BodyFill fill = BodyFill::lattice;
 };
+
+// The points a body's soil particles take at spacing dx: the lattice points strictly inside its polygon (the
+// lattice anchored at `anchor`), or its rows (sph::boundary_layer_points, until the rows meet).
+std::vector<sph::Point> body_fill_points(const ParticleBody& body, double dx, sph::Point anchor);
 
 // A particle scene's wall box: the inner box [x_min, x_max] x [bottom_y, bottom_y + height], walls on `sides`.
 struct WallBox {
