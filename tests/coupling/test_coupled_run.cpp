@@ -353,3 +353,69 @@ TEST_CASE("study: Heinrich's submarine block as stiff soil makes the rigid block
 }
 
 }  // namespace test_coupled_run
+
+namespace test_coupled_run {
+
+// analyses.coupled.impact (docs/coupled.md, "Impact parameters"): cases/coupled_heller_hager_channel.json to 0.8 s
+// (its centroid reaches the still water at about 0.64 s). Known answers: the slide's thickness normal to the ramp at
+// t = 0 is the rectangle's 0.2 m (within dx/2); the impact is where slide.csv's centroid crosses the still water;
+// F, S and M are the measured speed, thickness and mass over sqrt(g h), h and rho_w h^2; the prediction is Heller &
+// Hager's from them.
+TEST_CASE("sphslope run: a slide into a channel reports its impact parameters", "[cli][coupled][impulse]") {
+  TemporaryFolder folder("coupled_impact");
+  nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases" / "coupled_heller_hager_channel.json");
+  scene["analyses"]["sph"]["end_time_s"] = 0.8;
+  scene["analyses"]["isph"]["end_time_s"] = 0.8;
+  const fs::path file = write_scene(folder.path, "channel.json", scene), out = folder.path / "out";
+  const ProgramRun run = run_sphslope("run " + quoted(file) + " -o " + quoted(out));
+  INFO(run.output);
+  REQUIRE(run.status == 0);
+  const coupling::MonitorTable slide = coupling::parse_monitors_csv(read_text(out / "slide.csv"));
+  const auto thickness = coupling::monitor_column(slide, "thickness_normal_to_ramp_m");
+  const auto y = coupling::monitor_column(slide, "centroid_y_m"), v = coupling::monitor_column(slide, "centroid_speed_m_s");
+  REQUIRE(thickness.size() == y.size());
+  CHECK(std::fabs(thickness[0].second - 0.2) <= 0.01);
+  const nlohmann::json impact = read_json(out / "report.json")["coupled"]["impact"];
+  INFO(impact.dump(1));
+  REQUIRE(impact["status"] == "ok");
+  // the crossing of the still water (0.3 m) by slide.csv's centroid, between two rows
+  const double t = impact["time_s"].get<double>();
+  std::size_t k = 1;
+  while (k < y.size() && y[k].second > 0.3) ++k;
+  REQUIRE(k < y.size());
+  CHECK(t >= y[k - 1].first);
+  CHECK(t <= y[k].first);
+  const nlohmann::json& s = impact["slide"];
+  const double speed = s["centroid_speed_m_s"].get<double>(), h = 0.3, g = 9.81;
+  CHECK(speed >= std::min(v[k - 1].second, v[k].second) - 1e-12);
+  CHECK(speed <= std::max(v[k - 1].second, v[k].second) + 1e-12);
+  const nlohmann::json& p = impact["parameters"];
+  CHECK(p["F"].get<double>() == Approx(speed / std::sqrt(g * h)));
+  CHECK(p["S"].get<double>() == Approx(s["thickness_m"].get<double>() / h));
+  CHECK(p["M"].get<double>() == Approx(s["mass_kg_per_m"].get<double>() / (1000 * h * h)));
+  const double P = p["F"].get<double>() * std::sqrt(p["S"].get<double>()) * std::pow(p["M"].get<double>(), 0.25) *
+                   std::sqrt(std::cos(6.0 / 7.0 * 45 * sphslope::degree));
+  CHECK(p["P"].get<double>() == Approx(P));
+  CHECK(impact["heller_hager_2010"]["crest_amplitude_m"].get<double>() == Approx(4.0 / 9.0 * std::pow(P, 0.8) * h));
+  // the slide's mass is its particles': 1620 kg/m3 over 0.06 m2, less what the rows leave out where they meet
+  CHECK(s["mass_kg_per_m"].get<double>() <= 1620 * 0.06);
+  CHECK(s["mass_kg_per_m"].get<double>() >= 0.9 * 1620 * 0.06);
+  std::printf("channel impact at %.3f s: v_s %.3f m/s, s %.3f m, F %.3f, S %.3f, M %.3f, P %.3f, a_M %.4f m\n", t, speed,
+              s["thickness_m"].get<double>(), p["F"].get<double>(), p["S"].get<double>(), p["M"].get<double>(),
+              p["P"].get<double>(), impact["heller_hager_2010"]["crest_amplitude_m"].get<double>());
+}
+
+TEST_CASE("scene: an impact block needs a ramp angle in (0, 90] and two gauges", "[scene][coupled][impulse]") {
+  nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases" / "coupled_heller_hager_channel.json");
+  CHECK_NOTHROW(coupling::parse_scene(scene.dump()));
+  scene["analyses"]["coupled"]["impact"]["ramp_angle_deg"] = 0;
+  CHECK_THROWS_WITH(coupling::parse_scene(scene.dump()), Catch::Contains("analyses.coupled.impact.ramp_angle_deg"));
+  scene["analyses"]["coupled"]["impact"]["ramp_angle_deg"] = 45;
+  scene["analyses"]["isph"]["monitors"]["gauges"] = {{{"name", "x1"}, {"x_m", 1.0}}};
+  CHECK_THROWS_WITH(coupling::parse_scene(scene.dump()),
+                    Catch::Contains("analyses.coupled.impact: needs at least two gauges"));
+  scene["analyses"]["coupled"]["impact"].erase("shoreline_x_m");
+  CHECK_THROWS_WITH(coupling::parse_scene(scene.dump()), Catch::Contains("analyses.coupled.impact.shoreline_x_m"));
+}
+
+}  // namespace test_coupled_run

@@ -12,6 +12,7 @@
 #include <ostream>
 #include <unordered_map>
 
+#include "coupling/analyses/coupled_impact.hpp"
 #include "coupling/analyses/isph_stage.hpp"
 #include "coupling/analyses/sph_model.hpp"
 #include "coupling/analyses/sph_stage.hpp"
@@ -20,6 +21,7 @@
 #include "coupling/analyses/tank_run.hpp"
 #include "sph/coupled/model.hpp"
 #include "sph/engine/fill.hpp"
+#include "sphslope/units.hpp"
 
 namespace coupling {
 
@@ -94,8 +96,11 @@ void soil_measures(const sph::soil::Model& soil, CoupledStageResult& r) {
 // t = 0, at the first step at or after each multiple and at the end: slide.csv.
 class SlideObserver : public sph::Observer {
  public:
-  SlideObserver(const sph::soil::Model& soil, double interval) : soil_(soil), interval_(interval) {
+  // With a ramp angle (analyses.coupled.impact), also the slide's largest thickness normal to the ramp.
+  SlideObserver(const sph::soil::Model& soil, double interval, std::optional<double> ramp_angle_deg)
+      : soil_(soil), interval_(interval), ramp_angle_(ramp_angle_deg) {
     table_.columns = {"centroid_x_m", "centroid_y_m", "centroid_speed_m_s"};
+    if (ramp_angle_) table_.columns.push_back(slide_thickness_column);
   }
   std::string after_step(const sph::ParticleSet&, const sph::RunState& state, const sph::Energies&) override {
     if (state.time + 1e-12 >= next_) sample(state.time);
@@ -114,6 +119,7 @@ class SlideObserver : public sph::Observer {
     }
     table_.times.push_back(time);
     table_.rows.push_back({x / mass, y / mass, std::hypot(vx, vy) / mass});
+    if (ramp_angle_) table_.rows.back().push_back(thickness_normal_to_ramp());
     next_ = (std::floor(time / interval_ + 1e-9) + 1.0) * interval_;
   }
   void restore(const std::string& csv, double time) {
@@ -122,8 +128,27 @@ class SlideObserver : public sph::Observer {
   MonitorTable& table() { return table_; }
 
  private:
+  // The soil in strips 2 dx wide along the ramp (direction (cos a, -sin a)): the largest extent of a strip normal to
+  // the ramp, plus dx (a particle's own width) [m].
+  double thickness_normal_to_ramp() const {
+    const sph::ParticleSet& p = soil_.particles;
+    const double a = *ramp_angle_ * sphslope::degree, dx = soil_.settings.particle_spacing;
+    std::unordered_map<long, std::pair<double, double>> strips;  // strip -> lowest, highest normal coordinate
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.kind[i] != kMaterial) continue;
+      const double along = p.x[i] * std::cos(a) - p.y[i] * std::sin(a), normal = p.x[i] * std::sin(a) + p.y[i] * std::cos(a);
+      const auto key = static_cast<long>(std::floor(along / (2 * dx)));
+      auto [it, fresh] = strips.try_emplace(key, normal, normal);
+      if (!fresh) it->second = {std::min(it->second.first, normal), std::max(it->second.second, normal)};
+    }
+    double thickest = 0;
+    for (const auto& [key, range] : strips) thickest = std::max(thickest, range.second - range.first + dx);
+    return thickest;
+  }
+
   const sph::soil::Model& soil_;
   double interval_;
+  std::optional<double> ramp_angle_;
   MonitorTable table_;
   double next_ = 0;
 };
@@ -190,7 +215,9 @@ CoupledStageResult run_coupled(const Scene& scene, const WorkflowOptions& option
   result.water_volume_start = model.water.fluid_mass_built / model.water.settings.rest_density;
   TankMonitorObserver monitors(a.monitors, a.tank, a.settings.particle_spacing);
   monitors.sample(model.water.particles, 0.0);
-  SlideObserver slide(model.soil, a.monitors.interval);
+  const auto& impact = scene.analyses.coupled->impact;
+  SlideObserver slide(model.soil, a.monitors.interval,
+                      impact ? std::optional<double>(impact->ramp_angle_deg) : std::nullopt);
   slide.sample(0.0);
   if (options.resume) {
     resume_tank_run(
@@ -216,6 +243,9 @@ CoupledStageResult run_coupled(const Scene& scene, const WorkflowOptions& option
   if (slide.table().times.back() < model.water.state.time) slide.sample(model.water.state.time);
   result.slide = std::move(slide.table());
   finish_result(model, tally, result);
+  if (impact)
+    result.impact = coupled_impact(result.slide, result.monitors, *impact, a.monitors, a.tank, result.soil_mass_start,
+                                   std::hypot(a.settings.gravity_x, a.settings.gravity_y), a.settings.rest_density);
   return result;
 }
 

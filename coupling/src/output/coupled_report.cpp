@@ -3,6 +3,12 @@
 
 namespace coupling {
 
+namespace {
+
+nlohmann::json coupled_impact_report(const CoupledImpact& c);
+
+}  // namespace
+
 nlohmann::json coupled_report(const CoupledStageResult& r) {
   nlohmann::json j;
   j["status"] = r.summary.stopped_because == "end_time" ? "ok" : "failed";
@@ -47,8 +53,41 @@ nlohmann::json coupled_report(const CoupledStageResult& r) {
     }
   j["slide"]["fastest_centroid_speed_m_s"] = fastest;
   j["slide"]["fastest_at_s"] = fastest_at;
+  if (r.impact) j["impact"] = coupled_impact_report(*r.impact);
   return j;
 }
+
+namespace {
+
+nlohmann::json coupled_impact_report(const CoupledImpact& c) {
+  if (!c.missing.empty()) return {{"status", "no impact"}, {"reason", c.missing}};
+  nlohmann::json ranges = nlohmann::json::object();
+  for (const ImpactGroup& g : c.predicted.groups)
+    ranges[g.name] = {{"value", g.value}, {"range", {g.low, g.high}}, {"inside", g.inside()}};
+  const ImpulseWave& w = c.predicted;
+  nlohmann::json celerity = nlohmann::json::array();
+  for (const CelerityCheck& k : c.celerity)
+    celerity.push_back({{"from", k.from}, {"to", k.to}, {"speed_m_s", k.speed}, {"expected_m_s", k.expected},
+                        {"ratio", k.speed / k.expected}});
+  return {{"status", "ok"},
+          {"time_s", c.time},
+          {"slide",
+           {{"centroid_speed_m_s", c.slide.speed}, {"thickness_m", c.slide.thickness},
+            {"mass_kg_per_m", c.slide.mass_per_width}, {"ramp_angle_deg", c.slide.angle_deg},
+            {"still_water_depth_m", c.slide.depth}}},
+          {"parameters", {{"F", w.F}, {"S", w.S}, {"M", w.M}, {"alpha_deg", c.slide.angle_deg}, {"P", w.P}}},
+          {"ranges", ranges},
+          {"inside_ranges", w.inside_ranges()},
+          {"heller_hager_2010",
+           {{"crest_amplitude_m", w.crest_amplitude}, {"wave_height_m", w.wave_height},
+            {"crest_distance_m", w.crest_position}, {"period_s", w.period}, {"celerity_m_s", w.celerity}}},
+          {"gauges",
+           {{"largest_crest_m", c.largest_crest}, {"largest_crest_gauge", c.largest_crest_gauge},
+            {"largest_crest_at_s", c.largest_crest_at}, {"largest_crest_distance_m", c.largest_crest_distance},
+            {"crest_ratio", c.largest_crest / w.crest_amplitude}, {"leading_crest_celerity", celerity}}}};
+}
+
+}  // namespace
 
 nlohmann::json coupled_error_report(const std::string& error) { return {{"status", "failed"}, {"error", error}}; }
 

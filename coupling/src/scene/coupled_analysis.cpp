@@ -119,8 +119,19 @@ void check_water_outside_soil(const std::vector<ParticleBody>& bodies, const Isp
 void read_coupled_scene(const nlohmann::json& block, const nlohmann::json* sph, const nlohmann::json* walls,
                         Scene& scene, Diagnostics& diagnostics) {
   JsonReader reader(block, kPath, diagnostics);
+  CoupledAnalysis coupled;
+  if (auto impact = reader.object("impact", Need::optional)) {
+    SlideImpactSetup setup;
+    setup.ramp_angle_deg = impact->number("ramp_angle_deg", Need::required, Bounds{0.0, false, 90.0, true}).value_or(0);
+    setup.shoreline_x = impact->number("shoreline_x_m", Need::required).value_or(0);
+    impact->finish();
+    coupled.impact = setup;
+    if (scene.analyses.isph && scene.analyses.isph->monitors.gauges.size() < 2)
+      diagnostics.error(join_path(kPath, "impact"), "needs at least two gauges in analyses.isph.monitors.gauges (the "
+                                                    "largest crest and the leading crest's celerity are read from them)");
+  }
   reader.finish();
-  scene.analyses.coupled = CoupledAnalysis{};
+  scene.analyses.coupled = coupled;
   if (!sph) diagnostics.error(kPath, "needs analyses.sph, the soil's settings (the soil is the top-level \"bodies\")");
   if (!scene.analyses.isph) diagnostics.error(kPath, "needs analyses.isph, the water and its tank");
   if (scene.section)

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/analyses/coupled_impact.hpp"
 #include "coupling/analyses/monitor_table.hpp"
 #include "sph/engine/run_loop.hpp"
 
@@ -35,6 +36,7 @@ struct CoupledStageResult {
   double soil_particle_steps_per_second = 0, water_particle_steps_per_second = 0;
   MonitorTable monitors;  // the water's gauges (monitors.csv)
   MonitorTable slide;  // the soil's centroid and its speed (slide.csv), on the monitors' times
+  std::optional<CoupledImpact> impact;  // with analyses.coupled.impact
   std::vector<std::string> warnings;  // each naming its scene key
   std::vector<std::string> figures;  // relative to the run folder
 };
