@@ -405,7 +405,8 @@ TEST_CASE("sphslope run: a slide into a channel reports its impact parameters", 
               p["P"].get<double>(), impact["heller_hager_2010"]["crest_amplitude_m"].get<double>());
 }
 
-TEST_CASE("scene: an impact block needs a ramp angle in (0, 90] and two gauges", "[scene][coupled][impulse]") {
+TEST_CASE("scene: an impact block needs a ramp angle above 0 and at most 90 deg, and two gauges",
+          "[scene][coupled][impulse]") {
   nlohmann::json scene = read_json(fs::path(test_paths::source_dir()) / "cases" / "coupled_heller_hager_channel.json");
   CHECK_NOTHROW(coupling::parse_scene(scene.dump()));
   scene["analyses"]["coupled"]["impact"]["ramp_angle_deg"] = 0;
