@@ -360,7 +360,9 @@ TEST_CASE("study: the scene at another spacing is the scene file read with that 
   // overlaps the column once it is ceil(r_e/dx) spacings thick, too many time steps.
   const std::vector<std::pair<std::string, double>> refused = {
       {"thesis_slope2.json", 4.0}, {"mps_dry_collapse_gate.json", 0.06}, {"mps_dry_collapse_gate.json", 1e-6}};
-  for (const auto& [file, dx] : refused) {
+  for (const auto& entry : refused) {
+    const std::string& file = entry.first;  // named copies, not structured bindings: clang 14 cannot capture those
+    const double dx = entry.second;
     INFO(file << " at " << dx << " m");
     const coupling::Scene scene = coupling::load_scene(fs::path(test_paths::source_dir()) / "cases" / file);
     const auto typed = refusal([&] { return coupling::scene_with_spacing(scene, dx); });
